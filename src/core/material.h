@@ -1,0 +1,44 @@
+/* material.h: isotropic elastic materials, built in and derived constants.
+ *
+ * A material is E, nu, rho (SI) plus an optional yield stress.  The
+ * built-in table holds copper and steel exactly as Table 1 of the paper, and
+ * further engineering materials, each with its source. */
+#ifndef ANVIL_MATERIAL_H
+#define ANVIL_MATERIAL_H
+
+#include "status.h"
+
+#define ANVIL_NAME_MAX 32
+
+struct anvil_material {
+	char name[ANVIL_NAME_MAX];
+	double E;      /* Young's modulus, Pa */
+	double nu;     /* Poisson's ratio */
+	double rho;    /* density, kg/m^3 */
+	double yield;  /* yield stress, Pa; 0 when unknown */
+	const char *source; /* where the numbers come from (static string) or NULL */
+};
+
+/* The built-in table: index 0 .. count-1.  at() returns NULL out of range. */
+int anvil_material_count(void);
+const struct anvil_material *anvil_material_at(int i);
+/* Case-insensitive lookup by name; NULL when there is none. */
+const struct anvil_material *anvil_material_find(const char *name);
+
+/* Derived constants (SI). */
+double anvil_material_lambda(const struct anvil_material *m); /* Lame lambda, Pa */
+double anvil_material_mu(const struct anvil_material *m);     /* shear modulus, Pa */
+double anvil_material_c1(const struct anvil_material *m);     /* P-wave speed, m/s */
+double anvil_material_c2(const struct anvil_material *m);     /* S-wave speed, m/s */
+double anvil_material_cr(const struct anvil_material *m);     /* Rayleigh speed, m/s */
+
+/* Back from wave speeds: sets E and nu of m from c1 > c2*sqrt(2) > 0 and rho.
+ * ANVIL_EINVAL (message in err) when the speeds are not physical. */
+int anvil_material_from_speeds(struct anvil_material *m, double c1, double c2,
+			       double rho, struct anvil_err *err);
+
+/* E > 0, rho > 0, -1 < nu < 0.5, yield >= 0; else ANVIL_EINVAL naming the
+ * material and the field. */
+int anvil_material_check(const struct anvil_material *m, struct anvil_err *err);
+
+#endif

@@ -1,0 +1,38 @@
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "result.h"
+
+void anvil_result_init(struct anvil_result *r, enum anvil_model model)
+{
+	memset(r, 0, sizeof *r);
+	r->model = model;
+	r->ts_err = r->tmax_err = r->Pmax_err = NAN;
+	r->Vs_err = r->Rf_err = r->Ea_err = NAN;
+}
+
+int anvil_history_alloc(struct anvil_history *h, size_t n)
+{
+	/* One block for the six arrays: one owner, one free. */
+	double *block = calloc(6 * (n ? n : 1), sizeof *block);
+	if (!block)
+		return ANVIL_ENOMEM;
+	free(h->t);
+	h->n = n;
+	h->t = block;
+	h->P = block + n;
+	h->v = block + 2 * n;
+	h->W = block + 3 * n;
+	h->w = block + 4 * n;
+	h->alpha = block + 5 * n;
+	return ANVIL_OK;
+}
+
+void anvil_result_free(struct anvil_result *r)
+{
+	if (!r)
+		return;
+	free(r->hist.t);
+	memset(&r->hist, 0, sizeof r->hist);
+}

@@ -1,0 +1,44 @@
+/* result.h: what one model computes for one impact.
+ *
+ * Sign conventions: P >= 0 is the contact force; v is the impactor velocity,
+ * positive towards the layer (v(0) = V0 > 0, negative on rebound); W, w and
+ * alpha_H are positive into the layer.  V_s is the rebound speed -v(t_s) > 0,
+ * R_f = V_s / V0, E_a = m1 (V0^2 - V_s^2) / 2. */
+#ifndef ANVIL_RESULT_H
+#define ANVIL_RESULT_H
+
+#include <stddef.h>
+
+#include "scene.h"
+
+struct anvil_history {
+	size_t n;      /* number of samples, 0 when none */
+	double *t;     /* s */
+	double *P;     /* contact force, N */
+	double *v;     /* impactor velocity, m/s */
+	double *W;     /* impactor displacement, m */
+	double *w;     /* layer deflection under the impactor, m */
+	double *alpha; /* Hertz compression alpha_H = W - w, m */
+};
+
+struct anvil_result {
+	enum anvil_model model;
+	double ts, tmax;     /* contact time, time of peak force, s */
+	double Pmax;         /* peak force, N */
+	double Vs, Rf, Ea;   /* rebound speed m/s, restitution, absorbed energy J */
+	/* Estimated absolute errors of the above; NaN when not estimated. */
+	double ts_err, tmax_err, Pmax_err, Vs_err, Rf_err, Ea_err;
+	double lambda_star, Rf_star; /* Zener's parameter for this scene */
+	double seconds;      /* wall time spent on this model */
+	char note[160];      /* what the model left out, or "" */
+	struct anvil_history hist; /* owned; free with anvil_result_free */
+};
+
+/* Zero r, set every error estimate to NaN and the model. */
+void anvil_result_init(struct anvil_result *r, enum anvil_model model);
+/* Allocate n samples for the history (all six arrays); ANVIL_ENOMEM. */
+int anvil_history_alloc(struct anvil_history *h, size_t n);
+/* Free the history; the result itself is the caller's. NULL is a no-op. */
+void anvil_result_free(struct anvil_result *r);
+
+#endif

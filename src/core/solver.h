@@ -1,0 +1,38 @@
+/* solver.h: the one entry point the front ends use to run a model.
+ *
+ * A solver owns what is expensive and reusable: the layer responses
+ * ("plans", keyed by h/r0, nu and accuracy, in dimensionless form), so a
+ * change of velocity, mass or impactor material re-runs in milliseconds.
+ * One solver is used from one thread at a time; make one per thread. */
+#ifndef ANVIL_SOLVER_H
+#define ANVIL_SOLVER_H
+
+#include <stddef.h>
+
+#include "result.h"
+#include "scene.h"
+#include "status.h"
+
+/* Progress report: fraction in [0,1] of the current job, what is a short
+ * phrase ("layer response h = 2 r0").  Return non-zero to cancel: the
+ * running call then returns ANVIL_ECANCEL. */
+typedef int (*anvil_progress_fn)(void *ctx, double fraction, const char *what);
+
+struct anvil_solver;
+
+struct anvil_solver *anvil_solver_alloc(void);
+void anvil_solver_free(struct anvil_solver *s); /* NULL is a no-op */
+void anvil_solver_set_progress(struct anvil_solver *s, anvil_progress_fn fn,
+			       void *ctx);
+
+/* Run model m for scene sc into r (which this initialises; free it with
+ * anvil_result_free).  With nhist > 0 the histories over [0, t_s] are kept,
+ * with about nhist samples.  Returns ANVIL_OK; ANVIL_EINVAL for a scene the
+ * model cannot take; ANVIL_ETOL when the scene's accuracy could not be
+ * reached (r then holds the best values with their error estimates);
+ * ANVIL_ECANCEL; ANVIL_ENOMEM; ANVIL_ENUM. */
+int anvil_solver_run(struct anvil_solver *s, const struct anvil_scene *sc,
+		     enum anvil_model m, size_t nhist, struct anvil_result *r,
+		     struct anvil_err *err);
+
+#endif

@@ -1,0 +1,38 @@
+/* zener.h: Zener's impact on a thin infinite plate, eqs (48)-(54).
+ *
+ *   alpha'' + alpha^(3/2) + (3/2) lambda* alpha^(1/2) alpha' = 0,
+ *   alpha(0) = 0, alpha'(0) = 1   (tau = t/T, alpha = alpha_H/(T V0))
+ *
+ * solved with GSL odeiv2 (adaptive, error-controlled); the end of contact
+ * (alpha back to 0) is located by root finding on the dense output, not by
+ * the nearest step. */
+#ifndef ANVIL_ZENER_H
+#define ANVIL_ZENER_H
+
+#include "params.h"
+#include "result.h"
+
+/* Dimensionless solution for one lambda*. */
+struct anvil_zener_sol {
+	double tau_s;      /* contact time / T */
+	double tau_max;    /* time of peak force / T */
+	double alpha_max;  /* peak compression / (T V0); P_max = K (T V0 alpha_max)^(3/2) */
+	double rf;         /* rebound speed / V0 = -v(tau_s)/V0 */
+	double err;        /* estimated absolute error of the values above */
+};
+
+/* Solve the ODE to relative tolerance tol (1e-10 is cheap).  lambda* >= 0.
+ * ANVIL_EINVAL for a bad argument, ANVIL_ENUM if the integrator fails. */
+int anvil_zener_solve(double lambda_star, double tol,
+		      struct anvil_zener_sol *sol, struct anvil_err *err);
+
+/* exp(-1.7191 lambda*), Zener's fit (54). */
+double anvil_zener_rf_fit(double lambda_star);
+
+/* The model `zener` for the scene's parameters: t_s, t_max, P_max, V_s, R_f,
+ * E_a and, with nhist > 0, the histories (w is the plate deflection w*,
+ * eq (8)).  A half-space (alpha* = 0) gives the Hertz values. */
+int anvil_zener_run(const struct anvil_params *p, size_t nhist,
+		    struct anvil_result *r, struct anvil_err *err);
+
+#endif
