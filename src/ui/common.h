@@ -1,0 +1,69 @@
+/* common.h: what every front end of anvil shares.
+ *
+ * Exit codes, error printing, the scene given on a command line
+ * ([SCENE] plus -s KEY=VALUE...), output files written atomically
+ * (a temporary file renamed into place, so a failure never leaves half a
+ * file), and progress on stderr when stderr is a terminal. */
+#ifndef ANVIL_UI_COMMON_H
+#define ANVIL_UI_COMMON_H
+
+#include <stdio.h>
+
+#include "core/scene.h"
+#include "core/solver.h"
+
+enum { EXIT_OK = 0, EXIT_FAIL = 1, EXIT_USAGE = 2 };
+
+/* Turn GSL's abort-on-error off, fix the numeric locale.  Call first. */
+void cli_init(void);
+
+/* "anvil: MESSAGE" on stderr (one line). */
+void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Map a core status to an exit code: input errors -> 2, others -> 1. */
+int cli_exit_code(int status);
+
+/* The scene of a command line: start from the embedded default, load path
+ * (NULL: none), then apply each "KEY=VALUE" of sets in order.  On error
+ * prints the one-line message and returns the core status. */
+int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
+	      int nsets);
+
+/* Collects -s KEY=VALUE arguments while a command parses its options. */
+struct cli_sets {
+	int n, cap;
+	char **v; /* borrowed pointers into argv */
+};
+int cli_sets_add(struct cli_sets *s, char *kv); /* ANVIL_ENOMEM */
+void cli_sets_free(struct cli_sets *s);
+
+/* An output file written atomically.  path "-" or NULL is stdout. */
+struct cli_out {
+	FILE *f;
+	char *path;  /* final name, NULL for stdout */
+	char *tmp;   /* temporary name beside it */
+};
+/* Open; on failure prints "anvil: PATH: reason" and returns ANVIL_EIO. */
+int cli_out_open(struct cli_out *o, const char *path);
+/* Flush, close and rename into place; ANVIL_EIO (message printed) on a
+ * write error, in which case the temporary file is removed. */
+int cli_out_commit(struct cli_out *o);
+/* Close and remove the temporary file (no-op after commit). */
+void cli_out_abort(struct cli_out *o);
+
+/* A progress callback for anvil_solver_set_progress: draws
+ * "what: NN%" on stderr when stderr is a terminal and the job has run for
+ * more than a second; silent otherwise (pipes, CI).  ctx must point to a
+ * struct cli_progress, zeroed before the job. */
+struct cli_progress {
+	double start;  /* set by the first call */
+	int shown;     /* a line is on screen */
+};
+int cli_progress_cb(void *ctx, double fraction, const char *what);
+/* Erase the progress line if one is shown. */
+void cli_progress_done(struct cli_progress *p);
+
+/* Monotonic wall clock, seconds. */
+double cli_now(void);
+
+#endif
