@@ -1,0 +1,366 @@
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fft_complex.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_interp.h>
+
+#include "green.h"
+
+typedef double complex cplx;
+
+struct anvil_green {
+	enum anvil_green_mode mode;
+	double hh, nu, kap2, tau_end;
+	double dtau;          /* output grid step */
+	size_t n;             /* samples at tau_j = j dtau, j < n */
+	double *tau, *ramp;   /* one block, owned */
+	gsl_interp *interp;   /* cubic spline through the ramp samples */
+	double abserr;
+	size_t evals;
+};
+
+/* Settings per accuracy level.  The figures were chosen by convergence
+ * studies (scripts/bench, tests/test_green.c): each level's ramp response
+ * differs from the next finer one by less than the level's target. */
+void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs)
+{
+	static const struct anvil_green_settings table[ANVIL_ACC_COUNT] = {
+		/* c0T  omega_max panel gl_n ktail */
+		{ 9.0, 12.0, 2.0, 8, 1e-8 },   /* draft */
+		{ 10.0, 24.0, 1.5, 10, 1e-10 }, /* normal */
+		{ 11.0, 48.0, 1.0, 12, 1e-12 }, /* fine */
+		{ 12.0, 96.0, 0.7, 16, 1e-14 }, /* reference */
+	};
+	*gs = table[acc < ANVIL_ACC_COUNT ? acc : ANVIL_ACC_NORMAL];
+}
+
+/* Hankel transform of the Hertz patch with r0 = 1 (eq 32).  Its closed form
+ * cancels catastrophically for small k: use the Taylor series there. */
+static double zhat(double k)
+{
+	if (k < 0.1) {
+		double a = k * k;
+		return (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 +
+			a * a * a * a / 1330560.0) / (2.0 * M_PI);
+	}
+	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
+}
+
+/* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
+static cplx cexpm1_(cplx z)
+{
+	double x = creal(z), y = cimag(z), s = sin(0.5 * y);
+	return (expm1(x) * cos(y) - 2.0 * s * s) + I * (exp(x) * sin(y));
+}
+
+/* The kernels, units mu = c2 = rho = 1 (see the derivation in
+ * doc/derivation.md and green.h).  With a = k^2, b = s^2:
+ *   alpha_j = sqrt(a + kappa_j^2 b), gamma = 2a + b, X = 4 a alpha1 alpha2,
+ *   R = gamma^2 - X = b Q / (gamma^2 + X)           (rationalised: the k^8
+ *   terms cancel exactly, so Q is expanded by hand and loses no digits),
+ *   W_hs = alpha1 b / R = alpha1 (gamma^2 + X) / Q.
+ * The free layer, split into parts symmetric and antisymmetric about its
+ * mid-plane (half-thickness H), with t_j = tanh(alpha_j H):
+ *   W = (alpha1 b / 2) [ t1 t2 / (gamma^2 t2 - X t1) + 1 / (gamma^2 t1 - X t2) ]
+ * which agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2)
+ * to rounding (checked in tests/test_green.c).  Its difference from W_hs,
+ * written with u1 = 1 - t1 and d = t2 - t1 (both O(exp(-2 alpha H)), so the
+ * difference is formed without cancellation):
+ *   W - W_hs = (W_hs/2) [ (R u1 + X d)/(t1 R - X d) - (t2 R u1 + X d)/(t2 R + X d) ].
+ * Every exponential is exp(-2 alpha H) with Re alpha >= 0: nothing overflows. */
+struct kern {
+	double kap2, H;
+	cplx s, b;
+};
+
+static cplx w_halfspace(const struct kern *p, double k, cplx *al1_out, cplx *al2_out,
+			cplx *R_out, cplx *X_out)
+{
+	double a = k * k, kap2 = p->kap2;
+	cplx b = p->b;
+	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b);
+	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
+	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
+		 8.0 * a * b * b + b * b * b;
+	cplx g2X = gam * gam + X;
+	*al1_out = al1;
+	*al2_out = al2;
+	*R_out = b * Q / g2X;
+	*X_out = X;
+	return al1 * g2X / Q;
+}
+
+static cplx kern_layer_corr(const struct kern *p, double k)
+{
+	cplx al1, al2, R, X;
+	cplx whs = w_halfspace(p, k, &al1, &al2, &R, &X);
+	double H = p->H;
+	cplx m1 = -cexpm1_(-2.0 * H * al1), m2 = -cexpm1_(-2.0 * H * al2);
+	cplx t1 = m1 / (2.0 - m1), t2 = m2 / (2.0 - m2);
+	cplx E1 = 1.0 - m1;
+	cplx u1 = 2.0 * E1 / (2.0 - m1);
+	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
+	cplx dal = (1.0 - p->kap2) * p->b / (al1 + al2);
+	cplx d = 2.0 * E1 * (-cexpm1_(-2.0 * H * dal)) / ((2.0 - m1) * (2.0 - m2));
+	cplx Xd = X * d;
+	return 0.5 * whs * ((R * u1 + Xd) / (t1 * R - Xd) - (t2 * R * u1 + Xd) / (t2 * R + Xd));
+}
+
+
+struct quad {
+	enum anvil_green_mode mode;
+	struct kern kp;
+	const gsl_integration_glfixed_table *gl;
+	size_t evals;
+};
+
+static cplx integrand(struct quad *q, double k)
+{
+	q->evals++;
+	if (q->mode == ANVIL_GREEN_HALFSPACE) {
+		cplx al1, al2, R, X;
+		cplx whs = w_halfspace(&q->kp, k, &al1, &al2, &R, &X);
+		return (k * whs - 0.5 / (1.0 - q->kp.kap2)) * zhat(k);
+	}
+	return kern_layer_corr(&q->kp, k) * zhat(k) * k;
+}
+
+static cplx panel(struct quad *q, double a, double b)
+{
+	cplx sum = 0;
+	for (size_t i = 0; i < q->gl->n; i++) {
+		double x, w;
+		gsl_integration_glfixed_point(a, b, i, &x, &w, q->gl);
+		sum += w * integrand(q, x);
+	}
+	return sum;
+}
+
+/* Dimensionless Rayleigh speed c_R/c2: root of the Rayleigh function
+ * (2 - x)^2 = 4 sqrt(1 - kappa^2 x) sqrt(1 - x), x = (c_R/c2)^2, by
+ * bisection (a few lines; monotone on (0, 1), no bracketing subtleties). */
+static double rayleigh_speed(double kap2)
+{
+	double lo = 1e-6, hi = 1.0 - 1e-15;
+	for (int i = 0; i < 200; i++) {
+		double x = 0.5 * (lo + hi);
+		double f = (2 - x) * (2 - x) - 4 * sqrt(1 - kap2 * x) * sqrt(1 - x);
+		if (f > 0)
+			hi = x;
+		else
+			lo = x;
+	}
+	return sqrt(0.5 * (lo + hi));
+}
+
+/* The k-integral at one s = c0 + i omega.  Poles of the Lamb modes lie
+ * within about c0 kappa of the real axis for k up to ~omega/c_A0, where the
+ * slowest mode (A0) has phase speed below both c_R and the thin-plate
+ * flexural speed: panels of width panel*c0*kappa there.  Beyond, the
+ * integrand is smooth (evanescent fields): wider panels resolving exp(-2kH)
+ * and the period 2 pi of zhat. */
+static cplx k_integral(struct quad *q, double c0, double omega, double hh,
+		       double cr, const struct anvil_green_settings *gs)
+{
+	double kap = sqrt(q->kp.kap2), nu_ = (1 - 2 * q->kp.kap2) / (2 * (1 - q->kp.kap2));
+	double wfine = gs->panel * c0 * kap;
+	double kflex = q->mode == ANVIL_GREEN_HALFSPACE ? 0 :
+		pow(6.0 * (1.0 - nu_) * (omega * omega + c0 * c0) / (hh * hh), 0.25);
+	double kband = 1.6 * fmax(omega / cr, kflex) + 3.0;
+	double L = -log(gs->ktail), kend;
+	if (q->mode == ANVIL_GREEN_HALFSPACE)
+		kend = fmax(kband, pow((omega * omega + c0 * c0) / gs->ktail, 0.25));
+	else
+		kend = fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
+	double wtail = q->mode == ANVIL_GREEN_HALFSPACE ? 1.0 : fmin(1.0, 0.5 * hh + 0.05);
+	cplx sum = 0;
+	double a = 0;
+	size_t nf = (size_t)ceil(fmin(kband, kend) / wfine);
+	for (size_t i = 0; i < nf; i++) {
+		double b = fmin(kband, kend) * (double)(i + 1) / (double)nf;
+		sum += panel(q, a, b);
+		a = b;
+	}
+	while (a < kend) {
+		double b = fmin(kend, a + fmax(wtail, wfine));
+		sum += panel(q, a, b);
+		a = b;
+	}
+	return sum;
+}
+
+static size_t pow2_at_least(size_t n)
+{
+	size_t p = 1;
+	while (p < n)
+		p <<= 1;
+	return p;
+}
+
+/* Fill spec[0..M] with the transform of the ramp response at
+ * s_n = c0 + i n pi/T', and return an estimate of the quadrature error
+ * (the largest change when the panels are halved, checked on a sample of
+ * frequencies). */
+static int sample_spectrum(struct quad *q, double hh, double c0, double Tp, size_t M,
+			   const struct anvil_green_settings *gs, cplx *spec,
+			   double *qerr, anvil_progress_fn progress, void *ctx)
+{
+	double cr = rayleigh_speed(q->kp.kap2);
+	struct anvil_green_settings fine = *gs;
+	fine.panel *= 0.5;
+	*qerr = 0;
+	for (size_t n = 0; n <= M; n++) {
+		double omega = (double)n * M_PI / Tp;
+		q->kp.s = c0 + I * omega;
+		q->kp.b = q->kp.s * q->kp.s;
+		cplx I0 = k_integral(q, c0, omega, hh, cr, gs);
+		if (n % 16 == 5) {
+			cplx I1 = k_integral(q, c0, omega, hh, cr, &fine);
+			*qerr = fmax(*qerr, cabs(I1 - I0) / cabs(q->kp.b));
+		}
+		spec[n] = I0 / q->kp.b;
+		if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
+			return ANVIL_ENUM;
+		if (progress && n % 8 == 0 && progress(ctx, (double)n / (double)M, "layer response"))
+			return ANVIL_ECANCEL;
+	}
+	return ANVIL_OK;
+}
+
+/* Durbin's Fourier series f(t) = (e^{c0 t}/T') [F_0/2 + Re sum F_n e^{i n pi t/T'}]
+ * evaluated on t_j = j 2T'/N by one complex FFT (GSL). */
+static int invert(const cplx *spec, size_t M, size_t N, double c0, double Tp,
+		  double *out, size_t nout)
+{
+	double *z = calloc(2 * N, sizeof *z);
+	if (!z)
+		return ANVIL_ENOMEM;
+	for (size_t n = 0; n <= M && n < N; n++) {
+		double f = n == 0 ? 0.5 : 1.0;
+		z[2 * n] = f * creal(spec[n]);
+		z[2 * n + 1] = f * cimag(spec[n]);
+	}
+	int st = gsl_fft_complex_radix2_backward(z, 1, N);
+	for (size_t j = 0; !st && j < nout; j++) {
+		double t = (double)j * 2.0 * Tp / (double)N;
+		out[j] = exp(c0 * t) / Tp * z[2 * j];
+	}
+	free(z);
+	return st ? ANVIL_ENUM : ANVIL_OK;
+}
+
+void anvil_green_free(struct anvil_green *g)
+{
+	if (!g)
+		return;
+	gsl_interp_free(g->interp);
+	free(g->tau);
+	free(g);
+}
+
+static int green_compute(struct anvil_green *g, const struct anvil_green_settings *gs,
+			 anvil_progress_fn progress, void *ctx)
+{
+	double Tp = 2.0 * g->tau_end, c0 = gs->c0T / Tp;
+	size_t M = (size_t)ceil(gs->omega_max * Tp / M_PI);
+	size_t N = pow2_at_least(4 * (M + 1));
+	if (N < 8192)
+		N = 8192;
+	g->dtau = 2.0 * Tp / (double)N;
+	g->n = (size_t)floor(g->tau_end / g->dtau) + 2;
+	g->tau = malloc(2 * g->n * sizeof *g->tau);
+	cplx *spec = malloc((M + 1) * sizeof *spec);
+	struct quad q = { .mode = g->mode, .kp = { .kap2 = g->kap2, .H = 0.5 * g->hh } };
+	q.gl = gsl_integration_glfixed_table_alloc((size_t)gs->gl_n);
+	int st = (!g->tau || !spec || !q.gl) ? ANVIL_ENOMEM : ANVIL_OK;
+	double qerr = 0;
+	if (!st)
+		st = sample_spectrum(&q, g->hh, c0, Tp, M, gs, spec, &qerr, progress, ctx);
+	if (!st) {
+		g->ramp = g->tau + g->n;
+		st = invert(spec, M, N, c0, Tp, g->ramp, g->n);
+	}
+	if (!st) {
+		double tail = cabs(spec[M]) * (double)M * 0.5;
+		g->abserr = exp(c0 * g->tau_end) / Tp * ((double)M * qerr + tail);
+		for (size_t j = 0; j < g->n; j++) {
+			g->tau[j] = (double)j * g->dtau;
+			/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
+			if (g->mode == ANVIL_GREEN_HALFSPACE)
+				g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * g->tau[j];
+		}
+		g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
+		g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
+		st = g->interp ? ANVIL_OK : ANVIL_ENOMEM;
+		if (!st && gsl_interp_init(g->interp, g->tau, g->ramp, g->n))
+			st = ANVIL_ENUM;
+	}
+	g->evals = q.evals;
+	gsl_integration_glfixed_table_free((gsl_integration_glfixed_table *)q.gl);
+	free(spec);
+	return st;
+}
+
+struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
+				      double nu, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_err *err)
+{
+	if (!(nu > -1 && nu < 0.5) || !(tau_end > 0) || !isfinite(tau_end) ||
+	    (mode == ANVIL_GREEN_LAYER_CORRECTION && !(hh > 0 && isfinite(hh)))) {
+		anvil_err_set(err, ANVIL_EINVAL, "layer response: bad parameters (h/r0 = %g, nu = %g, window %g)",
+			      hh, nu, tau_end);
+		return NULL;
+	}
+	struct anvil_green *g = calloc(1, sizeof *g);
+	if (!g) {
+		anvil_err_set(err, ANVIL_ENOMEM, "layer response: out of memory");
+		return NULL;
+	}
+	g->mode = mode;
+	g->hh = hh;
+	g->nu = nu;
+	g->kap2 = (1 - 2 * nu) / (2 * (1 - nu));
+	g->tau_end = tau_end;
+	int st = green_compute(g, gs, progress, ctx);
+	if (st) {
+		anvil_err_set(err, st, st == ANVIL_ECANCEL ? "layer response: cancelled" :
+			      "layer response (h/r0 = %g, nu = %g): %s", hh, nu, anvil_strerror(st));
+		anvil_green_free(g);
+		return NULL;
+	}
+	return g;
+}
+
+int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
+{
+	if (tau <= 0) {
+		*val = 0;
+		return ANVIL_OK;
+	}
+	if (tau > g->tau_end)
+		return ANVIL_EINVAL;
+	*val = gsl_interp_eval(g->interp, g->tau, g->ramp, tau, NULL);
+	return ANVIL_OK;
+}
+
+int anvil_green_step(const struct anvil_green *g, double tau, double *val)
+{
+	if (tau <= 0) {
+		*val = 0;
+		return ANVIL_OK;
+	}
+	if (tau > g->tau_end)
+		return ANVIL_EINVAL;
+	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, NULL);
+	return ANVIL_OK;
+}
+
+double anvil_green_tau_end(const struct anvil_green *g) { return g->tau_end; }
+double anvil_green_abserr(const struct anvil_green *g) { return g->abserr; }
+size_t anvil_green_evals(const struct anvil_green *g) { return g->evals; }

@@ -1,0 +1,73 @@
+/* green.h: the layer's centre response, by Laplace-Hankel transforms.
+ *
+ * Dimensionless throughout: lengths in r0, time tau = t c2/r0, displacement
+ * per newton in 1/(mu r0).  The free layer of thickness h (both faces
+ * traction-free) under the Hertz-shaped patch Z(r) (eq 7) is written as
+ *
+ *     layer = half-space + (layer - half-space),
+ *
+ * and this module computes the second part, the "layer correction", whose
+ * k-integrand decays like exp(-k h) and which is exactly zero until the
+ * first reflection returns at tau = 2 h c2/c1 (causality).  The half-space
+ * part comes from halfspace.h (an exact route) or, for cross-checks, from
+ * this module's mode ANVIL_GREEN_HALFSPACE (the same transform route).
+ *
+ * Method: Fourier-series inversion of the Laplace transform on the Bromwich
+ * line s = c0 + i n pi/T' (Durbin), summed by FFT; the k-integral at each s
+ * by fixed Gauss-Legendre panels no wider than the distance of the Lamb-mode
+ * poles from the real k axis (about c0 c2/c1) over the band that holds them.
+ * The ramp response (load P = t) is produced: it is the smoothest of the
+ * step/ramp/impulse family and the one the impact solver's product
+ * integration needs.  See ../shared/design/solver.md. */
+#ifndef ANVIL_GREEN_H
+#define ANVIL_GREEN_H
+
+#include <stddef.h>
+
+#include "scene.h"
+#include "solver.h"
+#include "status.h"
+
+enum anvil_green_mode {
+	ANVIL_GREEN_LAYER_CORRECTION, /* W_layer - W_halfspace */
+	ANVIL_GREEN_HALFSPACE         /* W_halfspace - static, plus the static part */
+};
+
+/* Numerical settings of one inversion; anvil_green_settings() gives the ones
+ * an accuracy level uses. */
+struct anvil_green_settings {
+	double c0T;     /* c0 times the half period T' */
+	double omega_max; /* highest frequency summed (dimensionless) */
+	double panel;   /* k-panel width in units of c0 c2/c1 */
+	int gl_n;       /* Gauss-Legendre points per panel */
+	double ktail;   /* integrand cut-off: exp(-2 Re(alpha1) H) below this */
+};
+
+void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);
+
+struct anvil_green;
+
+/* Compute the ramp response on [0, tau_end] for a layer of thickness hh = h/r0
+ * (ignored for ANVIL_GREEN_HALFSPACE) and Poisson ratio nu.  progress may be
+ * NULL; a non-zero return from it cancels (NULL returned, err ANVIL_ECANCEL).
+ * The caller owns the result; free with anvil_green_free. */
+struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
+				      double nu, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_err *err);
+void anvil_green_free(struct anvil_green *g);
+
+/* Ramp response at tau in [0, tau_end] (cubic interpolation of the FFT grid;
+ * 0 for tau <= 0).  ANVIL_EINVAL beyond tau_end. */
+int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
+/* Step response (derivative of the ramp). */
+int anvil_green_step(const struct anvil_green *g, double tau, double *val);
+
+double anvil_green_tau_end(const struct anvil_green *g);
+/* Estimated absolute error of the ramp response over [0, tau_end]. */
+double anvil_green_abserr(const struct anvil_green *g);
+/* Number of kernel evaluations spent (for benchmarks). */
+size_t anvil_green_evals(const struct anvil_green *g);
+
+#endif

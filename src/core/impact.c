@@ -1,0 +1,322 @@
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "impact.h"
+#include "zener.h"
+
+/* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
+struct pass {
+	double dt;
+	size_t n, cap;
+	double *P, *W, *w, *v; /* one block, owned */
+	double ts, tmax, Pmax, Vs;
+};
+
+struct ctx {
+	const struct anvil_params *p;
+	anvil_ramp_fn ramp;
+	void *rctx;
+	double tau_avail;
+	double *g;      /* convolution weights g_j, j < ng */
+	size_t ng;
+};
+
+static void pass_free(struct pass *s)
+{
+	free(s->P);
+	memset(s, 0, sizeof *s);
+}
+
+static int pass_alloc(struct pass *s, size_t cap, double dt)
+{
+	memset(s, 0, sizeof *s);
+	s->P = calloc(4 * cap, sizeof *s->P);
+	if (!s->P)
+		return ANVIL_ENOMEM;
+	s->W = s->P + cap;
+	s->w = s->P + 2 * cap;
+	s->v = s->P + 3 * cap;
+	s->cap = cap;
+	s->dt = dt;
+	return ANVIL_OK;
+}
+
+/* Dimensional ramp response Rr(t) (m s/N): the anvil's response to P = t. */
+static int ramp_at(const struct ctx *c, double t, double *val)
+{
+	const struct anvil_params *p = c->p;
+	if (t <= 0) {
+		*val = 0;
+		return ANVIL_OK;
+	}
+	double v;
+	int st = c->ramp(c->rctx, t * p->c2 / p->r0, &v);
+	*val = v / (p->mu * p->c2);
+	return st;
+}
+
+/* Weights of the product integration: the deflection at t_n caused by the
+ * hat function of unit height centred at t_m is g_{n-m}, the second
+ * difference of the ramp response divided by dt. */
+static int weights(struct ctx *c, double dt, size_t cap)
+{
+	double *R = malloc((cap + 2) * sizeof *R);
+	c->g = malloc(cap * sizeof *c->g);
+	if (!R || !c->g) {
+		free(R);
+		return ANVIL_ENOMEM;
+	}
+	int st = ANVIL_OK;
+	for (size_t j = 0; j < cap + 1 && !st; j++)
+		st = ramp_at(c, (double)j * dt, &R[j]);
+	for (size_t j = 0; j < cap && !st; j++)
+		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
+	c->ng = cap;
+	free(R);
+	return st;
+}
+
+/* The one positive root of k0 x^2 + B x^3 = A (x = P^(1/3)), A > 0.
+ * Newton from the upper bound sqrt(A/k0) decreases monotonically (the
+ * left side is increasing and convex for x > 0), so it cannot overshoot;
+ * GSL's cubic solver loses digits here when B x << k0. */
+static double hertz_root(double k0, double B, double A)
+{
+	double x = sqrt(A / k0);
+	for (int i = 0; i < 60; i++) {
+		double f = k0 * x * x + B * x * x * x - A;
+		double dx = f / (2.0 * k0 * x + 3.0 * B * x * x);
+		x -= dx;
+		if (fabs(dx) <= 1e-15 * x)
+			break;
+	}
+	return x * x * x;
+}
+
+/* Root in (t1, t2) of the parabola through (t0,a0), (t1,a1), (t2,a2),
+ * a1 > 0 >= a2: where alpha_H returns to zero. */
+static double zero_crossing(double t0, double a0, double t1, double a1, double t2, double a2)
+{
+	double lo = t1, hi = t2;
+	for (int i = 0; i < 100; i++) {
+		double t = 0.5 * (lo + hi);
+		double q = a0 * (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2)) +
+			   a1 * (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2)) +
+			   a2 * (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
+		if (q > 0)
+			lo = t;
+		else
+			hi = t;
+	}
+	return 0.5 * (lo + hi);
+}
+
+/* Peak of the force by a parabola through the largest sample and its
+ * neighbours. */
+static void peak(struct pass *s)
+{
+	size_t k = 0;
+	for (size_t i = 1; i < s->n; i++)
+		if (s->P[i] > s->P[k])
+			k = i;
+	s->tmax = (double)k * s->dt;
+	s->Pmax = s->P[k];
+	if (k == 0 || k + 1 >= s->n)
+		return;
+	double a = s->P[k - 1], b = s->P[k], c = s->P[k + 1];
+	double den = a - 2.0 * b + c;
+	if (den < 0) {
+		double x = 0.5 * (a - c) / den;
+		s->tmax = ((double)k + x) * s->dt;
+		s->Pmax = b - 0.25 * (a - c) * x;
+	}
+}
+
+/* The end of contact between steps n-1 and n, where alpha would be a_n <= 0;
+ * V_s from the impulse, the last partial interval with P ~ (t_s - t)^(3/2)
+ * since alpha_H falls linearly to zero. */
+static void finish(struct pass *s, const struct anvil_params *p, double a_n, double impulse)
+{
+	size_t n = s->n;
+	double dt = s->dt, t1 = (double)(n - 1) * dt;
+	double a1 = p->k0 * pow(s->P[n - 1], 2.0 / 3.0);
+	double a0 = n >= 2 ? p->k0 * pow(s->P[n - 2], 2.0 / 3.0) : 0.0;
+	s->ts = n >= 2 ? zero_crossing(t1 - dt, a0, t1, a1, t1 + dt, a_n)
+		       : t1 + dt * a1 / (a1 - a_n);
+	impulse += 0.4 * s->P[n - 1] * (s->ts - t1);
+	s->Vs = -(p->V0 - impulse / p->m1);
+	peak(s);
+}
+
+/* The implicit, second-order pass (see impact.h).  With P piecewise linear
+ * through the P_m, the impactor's displacement at t_n is exactly
+ *   W_n = V0 t_n - (dt/m1) sum_{m<n} P_m (t_n - t_m) - P_n dt^2/(6 m1)
+ * and the anvil's w_n = sum_{m<=n} P_m g_{n-m}. */
+static int pass_implicit(const struct ctx *c, struct pass *s)
+{
+	const struct anvil_params *p = c->p;
+	double dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1);
+	double S0 = 0, S1 = 0, impulse = 0; /* sum P_m, sum P_m t_m, int P dt */
+	s->v[0] = p->V0;
+	s->n = 1;
+	for (size_t n = 1; n < s->cap; n++) {
+		double tn = (double)n * dt, conv = 0;
+		for (size_t m = 1; m < n; m++)
+			conv += s->P[m] * c->g[n - m];
+		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv;
+		if (A <= 0) {
+			finish(s, p, A, impulse);
+			return ANVIL_OK;
+		}
+		double P = hertz_root(p->k0, B, A);
+		s->P[n] = P;
+		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
+		s->w[n] = conv + P * c->g[0];
+		impulse += 0.5 * dt * (s->P[n - 1] + P);
+		s->v[n] = p->V0 - impulse / p->m1;
+		S0 += P;
+		S1 += P * tn;
+		s->n = n + 1;
+	}
+	return ANVIL_ETOL; /* the contact outlasts the response window */
+}
+
+/* The paper's explicit scheme, eqs (42)-(46): the deflection lags one step
+ * (w_n from forces up to t_{n-1}) and uses the impulse response w_delta,
+ * here the second difference of the ramp response (w_delta(0) from eq 34). */
+static int pass_paper(const struct ctx *c, struct pass *s)
+{
+	const struct anvil_params *p = c->p;
+	double dt = s->dt, a_prev = 0, impulse = 0;
+	double wd0 = 3.0 / (2.0 * M_PI * p->r0 * p->r0) / (p->rho * p->c1);
+	s->v[0] = p->V0;
+	s->n = 1;
+	for (size_t n = 1; n < s->cap; n++) {
+		double W = n == 1 ? p->V0 * dt : s->W[n - 1] + s->v[n - 1] * dt + 0.5 * a_prev * dt * dt;
+		double w = n >= 2 ? 0.5 * dt * wd0 * s->P[n - 1] : 0.0;
+		for (size_t m = 1; m + 2 <= n; m++) /* w_delta(t_{n-1} - t_m) = g'/dt */
+			w += dt * s->P[m] * c->g[n - 1 - m] / dt;
+		double v = n == 1 ? p->V0 : s->v[n - 1] + a_prev * dt;
+		if (W - w <= 0) {
+			finish(s, p, W - w, impulse);
+			/* the paper's own velocity update, eq (46), to the contact end */
+			s->Vs = -(s->v[n - 1] + a_prev * (s->ts - (double)(n - 1) * dt));
+			return ANVIL_OK;
+		}
+		s->P[n] = p->K * pow(W - w, 1.5);
+		s->W[n] = W;
+		s->w[n] = w;
+		s->v[n] = v;
+		impulse += 0.5 * dt * (s->P[n - 1] + s->P[n]);
+		a_prev = -s->P[n] / p->m1;
+		s->n = n + 1;
+	}
+	return ANVIL_ETOL;
+}
+
+static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct pass *s)
+{
+	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
+	size_t cap = (size_t)floor(t_avail / dt) - 1;
+	if (cap < 8)
+		return ANVIL_ETOL;
+	int st = pass_alloc(s, cap, dt);
+	free(c->g);
+	c->g = NULL;
+	if (!st)
+		st = weights(c, dt, cap);
+	if (!st)
+		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s) : pass_implicit(c, s);
+	return st;
+}
+
+/* Linear resampling of a pass onto nhist points over [0, t_s]. */
+static int resample(const struct pass *s, const struct anvil_params *p, size_t nhist,
+		    struct anvil_history *h)
+{
+	int st = anvil_history_alloc(h, nhist);
+	for (size_t i = 0; !st && i < nhist; i++) {
+		double t = s->ts * (double)i / (double)(nhist - 1);
+		double x = t / s->dt;
+		size_t k = (size_t)floor(x);
+		if (k + 1 >= s->n)
+			k = s->n - 2;
+		double f = x - (double)k;
+		h->t[i] = t;
+		h->P[i] = fmax(0.0, (1 - f) * s->P[k] + f * s->P[k + 1]);
+		h->W[i] = (1 - f) * s->W[k] + f * s->W[k + 1];
+		h->w[i] = (1 - f) * s->w[k] + f * s->w[k + 1];
+		h->v[i] = (1 - f) * s->v[k] + f * s->v[k + 1];
+		h->alpha[i] = h->W[i] - h->w[i];
+	}
+	if (!st && nhist) { /* the exact end state */
+		h->P[nhist - 1] = 0;
+		h->v[nhist - 1] = -s->Vs;
+		h->alpha[nhist - 1] = 0;
+		h->W[nhist - 1] = h->w[nhist - 1];
+	}
+	(void)p;
+	return st;
+}
+
+/* Richardson extrapolation for a second-order scheme (fine = dt/2). */
+static double extrap(double coarse, double fine, double *err)
+{
+	*err = fabs(fine - coarse) / 3.0;
+	return fine + (fine - coarse) / 3.0;
+}
+
+static void fill(struct anvil_result *r, const struct anvil_params *p,
+		 const struct pass *a, const struct pass *b, enum anvil_scheme scheme)
+{
+	if (scheme == ANVIL_SCHEME_PAPER) { /* first order: report the step asked for */
+		r->ts = a->ts, r->ts_err = fabs(b->ts - a->ts);
+		r->tmax = a->tmax, r->tmax_err = fabs(b->tmax - a->tmax);
+		r->Pmax = a->Pmax, r->Pmax_err = fabs(b->Pmax - a->Pmax);
+		r->Vs = a->Vs, r->Vs_err = fabs(b->Vs - a->Vs);
+	} else {
+		r->ts = extrap(a->ts, b->ts, &r->ts_err);
+		r->tmax = extrap(a->tmax, b->tmax, &r->tmax_err);
+		r->Pmax = extrap(a->Pmax, b->Pmax, &r->Pmax_err);
+		r->Vs = extrap(a->Vs, b->Vs, &r->Vs_err);
+	}
+	r->Rf = r->Vs / p->V0;
+	r->Rf_err = r->Vs_err / p->V0;
+	r->Ea = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs * r->Vs);
+	r->Ea_err = p->m1 * fabs(r->Vs) * r->Vs_err;
+	r->lambda_star = p->lambda_star;
+	r->Rf_star = p->Rf_star;
+}
+
+int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rctx,
+		     double tau_avail, const struct anvil_impact_opts *o,
+		     struct anvil_result *r, struct anvil_err *err)
+{
+	struct anvil_zener_sol zs;
+	int st = anvil_zener_solve(p->lambda_star, 1e-8, &zs, err);
+	if (st)
+		return st;
+	double dt = o->dt > 0 ? o->dt : zs.tau_s * p->T / (double)(o->nsteps ? o->nsteps : 400);
+	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail };
+	struct pass a = {0}, b = {0};
+	st = run_pass(&c, o->scheme, dt, &a);
+	if (!st)
+		st = run_pass(&c, o->scheme, 0.5 * dt, &b);
+	if (!st) {
+		fill(r, p, &a, &b, o->scheme);
+		if (o->nhist > 1)
+			st = resample(o->scheme == ANVIL_SCHEME_PAPER ? &a : &b, p, o->nhist, &r->hist);
+	}
+	if (st == ANVIL_ETOL) {
+		r->ts = NAN;
+		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",
+			      tau_avail * p->r0 / p->c2 * 1e6);
+	} else if (st) {
+		anvil_err_set(err, st, "impact: %s", anvil_strerror(st));
+	}
+	free(c.g);
+	pass_free(&a);
+	pass_free(&b);
+	return st;
+}

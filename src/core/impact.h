@@ -1,0 +1,43 @@
+/* impact.h: the impactor coupled to the anvil through Hertz contact.
+ *
+ * Solves eq (40), V0 t - (1/m1) int (t-t') P dt' = k0 P^(2/3) + w(t), with
+ * w the Duhamel convolution of P with the anvil's centre response, given as
+ * its ramp response (response to P = t).  Two schemes:
+ *
+ * implicit (default): P piecewise linear in time; then the impactor's
+ *   displacement and the layer's deflection at t_n are exact sums over past
+ *   forces (the layer's through second differences of the ramp response,
+ *   i.e. product integration), and eq (40) at each step is one scalar
+ *   equation k0 P^(2/3) + B P = A_n with one positive root (a cubic in
+ *   P^(1/3), solved by gsl_poly_solve_cubic).  Second order in dt; run at
+ *   dt and dt/2 and Richardson-extrapolated, which also gives the error.
+ * paper: the explicit, lagged scheme of eqs (42)-(46), first order, kept to
+ *   show how the paper's printed numbers depend on its step. */
+#ifndef ANVIL_IMPACT_H
+#define ANVIL_IMPACT_H
+
+#include <stddef.h>
+
+#include "params.h"
+#include "result.h"
+#include "scene.h"
+
+/* The anvil's dimensionless centre ramp response mu c2 Rr(t) at
+ * tau = t c2/r0.  Returns ANVIL_EINVAL beyond the response's window. */
+typedef int (*anvil_ramp_fn)(void *ctx, double tau, double *val);
+
+struct anvil_impact_opts {
+	enum anvil_scheme scheme;
+	double dt;        /* s; 0: t_s estimate / nsteps */
+	size_t nsteps;    /* steps over the contact when dt = 0 */
+	size_t nhist;     /* history samples wanted (0: none) */
+};
+
+/* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
+ * contact outlasts it, ANVIL_ETOL is returned with r->ts = NaN so that the
+ * caller can extend the response and retry.  r must be initialised. */
+int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *ctx,
+		     double tau_avail, const struct anvil_impact_opts *o,
+		     struct anvil_result *r, struct anvil_err *err);
+
+#endif
