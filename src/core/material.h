@@ -32,8 +32,9 @@ double anvil_material_c1(const struct anvil_material *m);     /* P-wave speed, m
 double anvil_material_c2(const struct anvil_material *m);     /* S-wave speed, m/s */
 double anvil_material_cr(const struct anvil_material *m);     /* Rayleigh speed, m/s */
 
-/* Back from wave speeds: sets E and nu of m from c1 > c2*sqrt(2) > 0 and rho.
- * ANVIL_EINVAL (message in err) when the speeds are not physical. */
+/* Back from wave speeds: sets E, nu and rho of m from c1, c2 and rho; the
+ * speeds must give -1 < nu < 0.5, i.e. c2 > 0 and c1 > c2 sqrt(4/3).
+ * ANVIL_EINVAL (message in err) when they do not. */
 int anvil_material_from_speeds(struct anvil_material *m, double c1, double c2,
 			       double rho, struct anvil_err *err);
 

@@ -1,0 +1,172 @@
+/* material.c: the built-in materials and the constants derived from E, nu, rho. */
+#include <math.h>
+#include <string.h>
+#include <strings.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include "material.h"
+
+#define PAPER "Pyr'yev et al. 2024, Table 1"
+
+/* Copper and steel exactly as the paper's Table 1 (the other rows of that
+ * table, c1, c2, lambda and mu, follow from these and are tested).  The rest
+ * are typical room-temperature values; yield 0 means none or unknown. */
+static const struct anvil_material table[] = {
+	{"copper", 123e9, 0.34, 8960, 57e6, PAPER},
+	{"steel", 209e9, 0.3, 7830, 1000e6, PAPER},
+	{"aluminium", 68.9e9, 0.33, 2700, 276e6,
+	 "ASM Handbook Vol. 2 (1990) / MatWeb: aluminium alloy 6061-T6"},
+	{"titanium", 113.8e9, 0.342, 4430, 880e6,
+	 "ASM Aerospace Specification Metals / MatWeb: Ti-6Al-4V (grade 5), annealed"},
+	{"tungsten-carbide", 600e9, 0.22, 14950, 0,
+	 "cemented carbide WC-6Co, typical grade datasheet values (ASM Handbook "
+	 "Vol. 2); brittle: yield 0, compressive strength about 5 GPa"},
+	{"glass", 72e9, 0.22, 2500, 0,
+	 "soda-lime float glass, typical (MatWeb; Shelby, Introduction to Glass "
+	 "Science and Technology); brittle: yield 0"},
+	{"pmma", 3.0e9, 0.37, 1180, 70e6,
+	 "MatWeb: PMMA (acrylic, Plexiglas/Perspex), typical; yield = tensile strength"},
+};
+#define NTABLE ((int)(sizeof table / sizeof table[0]))
+
+/* Other spellings people type. */
+static const struct {
+	const char *alias, *name;
+} aliases[] = {
+	{"aluminum", "aluminium"},
+	{"wc", "tungsten-carbide"},
+	{"soda-lime-glass", "glass"},
+	{"acrylic", "pmma"},
+};
+
+int anvil_material_count(void) { return NTABLE; }
+
+const struct anvil_material *anvil_material_at(int i)
+{
+	return i >= 0 && i < NTABLE ? &table[i] : NULL;
+}
+
+const struct anvil_material *anvil_material_find(const char *name)
+{
+	if (!name)
+		return NULL;
+	for (int i = 0; i < NTABLE; ++i)
+		if (strcasecmp(name, table[i].name) == 0)
+			return &table[i];
+	for (size_t i = 0; i < sizeof aliases / sizeof aliases[0]; ++i)
+		if (strcasecmp(name, aliases[i].alias) == 0)
+			return anvil_material_find(aliases[i].name);
+	return NULL;
+}
+
+double anvil_material_lambda(const struct anvil_material *m)
+{
+	return m->E * m->nu / ((1 + m->nu) * (1 - 2 * m->nu));
+}
+
+double anvil_material_mu(const struct anvil_material *m)
+{
+	return m->E / (2 * (1 + m->nu));
+}
+
+double anvil_material_c1(const struct anvil_material *m)
+{
+	return sqrt((anvil_material_lambda(m) + 2 * anvil_material_mu(m)) / m->rho);
+}
+
+double anvil_material_c2(const struct anvil_material *m)
+{
+	return sqrt(anvil_material_mu(m) / m->rho);
+}
+
+/* The Rayleigh function in x = (cR/c2)^2, k2 = (c2/c1)^2, divided by x to
+ * remove its trivial root x = 0: negative (2 k2 - 2) as x -> 0+, +1 at x = 1. */
+static double rayleigh(double x, void *params)
+{
+	double k2 = *(const double *)params;
+	return ((2 - x) * (2 - x) - 4 * sqrt(1 - x * k2) * sqrt(1 - x)) / x;
+}
+
+#define RAYLEIGH_XLO 1e-3 /* below the root for every -1 < nu < 0.5 (x > 0.47) */
+#define RAYLEIGH_EPSREL 1e-15
+#define RAYLEIGH_MAXITER 200
+
+/* Why Brent: the one root in (0, 1) is bracketed, and Brent's method cannot
+ * leave a bracket, where Newton could step past x = 1 into imaginary square
+ * roots; it converges superlinearly without derivatives.  The rationalised
+ * cubic would need its spurious roots sorted out instead. */
+double anvil_material_cr(const struct anvil_material *m)
+{
+	if (anvil_material_check(m, NULL) != ANVIL_OK)
+		return NAN;
+	double c1 = anvil_material_c1(m), c2 = anvil_material_c2(m);
+	double k2 = (c2 / c1) * (c2 / c1);
+	gsl_function f = {rayleigh, &k2};
+	double lo = RAYLEIGH_XLO, hi = 1.0, x = NAN;
+	/* Checked here so that gsl_root_fsolver_set never calls the GSL error
+	 * handler, whatever handler the front end installed. */
+	if (!(rayleigh(lo, &k2) < 0 && rayleigh(hi, &k2) > 0))
+		return NAN;
+	gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+	if (!s)
+		return NAN;
+	int status = gsl_root_fsolver_set(s, &f, lo, hi);
+	for (int i = 0; status == GSL_SUCCESS && i < RAYLEIGH_MAXITER; ++i) {
+		status = gsl_root_fsolver_iterate(s);
+		if (status != GSL_SUCCESS)
+			break;
+		lo = gsl_root_fsolver_x_lower(s);
+		hi = gsl_root_fsolver_x_upper(s);
+		status = gsl_root_test_interval(lo, hi, 0, RAYLEIGH_EPSREL);
+		if (status == GSL_SUCCESS) {
+			x = gsl_root_fsolver_root(s);
+			break;
+		}
+		status = GSL_SUCCESS;
+	}
+	gsl_root_fsolver_free(s);
+	return c2 * sqrt(x);
+}
+
+/* nu = (c1^2 - 2 c2^2) / (2 (c1^2 - c2^2)).  With c1 > c2 > 0, nu < 1/2
+ * always holds, and nu > -1 is 3 c1^2 > 4 c2^2: so the physical speeds are
+ * exactly c2 > 0 and c1 > c2 sqrt(4/3) (c1 > c2 sqrt(2) is nu > 0). */
+int anvil_material_from_speeds(struct anvil_material *m, double c1, double c2,
+			       double rho, struct anvil_err *err)
+{
+	const char *name = m->name[0] ? m->name : "(unnamed)";
+	if (!(isfinite(c1) && isfinite(c2) && c2 > 0 && 3 * c1 * c1 > 4 * c2 * c2))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': wave speeds c1 = %g m/s, c2 = %g m/s "
+				     "need c2 > 0 and c1 > c2 sqrt(4/3) (-1 < nu < 0.5)",
+				     name, c1, c2);
+	if (!(isfinite(rho) && rho > 0))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': rho = %g kg/m^3 is not > 0", name, rho);
+	double a = c1 * c1, b = c2 * c2;
+	double nu = (a - 2 * b) / (2 * (a - b));
+	m->nu = nu;
+	m->rho = rho;
+	m->E = 2 * rho * b * (1 + nu);
+	return ANVIL_OK;
+}
+
+int anvil_material_check(const struct anvil_material *m, struct anvil_err *err)
+{
+	const char *name = m->name[0] ? m->name : "(unnamed)";
+	if (!(isfinite(m->E) && m->E > 0))
+		return anvil_err_set(err, ANVIL_EINVAL, "material '%s': E = %g Pa is not > 0",
+				     name, m->E);
+	if (!(isfinite(m->nu) && m->nu > -1 && m->nu < 0.5))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': nu = %g is not in (-1, 0.5)", name, m->nu);
+	if (!(isfinite(m->rho) && m->rho > 0))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': rho = %g kg/m^3 is not > 0", name, m->rho);
+	if (!(isfinite(m->yield) && m->yield >= 0))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': yield = %g Pa is not >= 0", name, m->yield);
+	return ANVIL_OK;
+}

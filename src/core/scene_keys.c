@@ -1,0 +1,682 @@
+/* scene_keys.c: the scene's keys, one table row each, and material names.
+ *
+ * A row says where a key lives (section, field), how its text is read and
+ * checked, and how it is printed back; parsing, anvil_scene_set and
+ * anvil_scene_write all go through the same rows, so they cannot drift. */
+#include <ctype.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "scene_keys.h"
+#include "units.h"
+
+#define VALUE_MAX 256 /* longest value text; titles are shorter still */
+#define CUSTOM_SOURCE "defined in the scene"
+#define OVERRIDE_SOURCE "overridden in the scene"
+
+static const char *const section_names[ANVIL_SEC_COUNT] = {
+	"scene", "impactor", "layer", "impact", "solver", "material"};
+
+const char *anvil_scene_section_name(int sec)
+{
+	return sec >= 0 && sec < ANVIL_SEC_COUNT ? section_names[sec] : "?";
+}
+
+/* ---- suggestions ---- */
+
+/* Levenshtein distance, case-insensitive, on the first 63 bytes. */
+static int edit_distance(const char *a, const char *b)
+{
+	int row[64];
+	size_t n = strlen(b);
+	if (n > 63)
+		n = 63;
+	for (size_t j = 0; j <= n; ++j)
+		row[j] = (int)j;
+	for (size_t i = 1; a[i - 1] && i < 64; ++i) {
+		int diag = row[0];
+		row[0] = (int)i;
+		for (size_t j = 1; j <= n; ++j) {
+			int up = row[j];
+			int cost = tolower((unsigned char)a[i - 1]) !=
+				   tolower((unsigned char)b[j - 1]);
+			int best = diag + cost;
+			if (row[j] + 1 < best)
+				best = row[j] + 1;
+			if (row[j - 1] + 1 < best)
+				best = row[j - 1] + 1;
+			row[j] = best;
+			diag = up;
+		}
+	}
+	return row[n];
+}
+
+#define SUGGEST_MAX_DIST 2
+#define SUGGEST_PREFIX_DIST (SUGGEST_MAX_DIST + 1) /* ranks below any typo */
+
+void anvil_suggest_init(struct anvil_suggest *s, const char *word)
+{
+	s->word = word;
+	s->best[0] = '\0';
+	s->dist = SUGGEST_PREFIX_DIST + 1;
+}
+
+/* Shown as candidate; compared on the text after its last '.', so that
+ * "impactor.mas" and "mas" both find "impactor.mass". */
+void anvil_suggest_try(struct anvil_suggest *s, const char *candidate)
+{
+	const char *dot = strrchr(candidate, '.');
+	const char *cmp = dot ? dot + 1 : candidate;
+	size_t wn = strlen(s->word);
+	int d = edit_distance(s->word, cmp);
+	/* Short words need a closer match: "x" is not "E", nor "foo" "rho". */
+	if (d > SUGGEST_MAX_DIST || 2 * d > (int)wn)
+		d = wn >= 2 && strncasecmp(cmp, s->word, wn) == 0 ? SUGGEST_PREFIX_DIST
+								  : SUGGEST_PREFIX_DIST + 1;
+	if (d < s->dist) {
+		s->dist = d;
+		snprintf(s->best, sizeof s->best, "%s", candidate);
+	}
+}
+
+int anvil_scene_section_find(const char *name, struct anvil_err *err)
+{
+	struct anvil_suggest s;
+	anvil_suggest_init(&s, name);
+	for (int i = 0; i < ANVIL_SEC_COUNT; ++i) {
+		if (strcasecmp(name, section_names[i]) == 0)
+			return i;
+		anvil_suggest_try(&s, section_names[i]);
+	}
+	if (s.best[0])
+		anvil_err_set(err, ANVIL_EPARSE, "unknown section '%s'; did you mean '%s'?",
+			      name, s.best);
+	else
+		anvil_err_set(err, ANVIL_EPARSE,
+			      "unknown section '%s' (sections: scene, impactor, layer, "
+			      "impact, solver, material NAME)", name);
+	return -1;
+}
+
+/* ---- material names ---- */
+
+static int name_ok(const char *name)
+{
+	size_t n = strlen(name);
+	if (n == 0 || n >= ANVIL_NAME_MAX || !isalpha((unsigned char)name[0]))
+		return 0;
+	for (; *name; ++name)
+		if (!isalnum((unsigned char)*name) && *name != '-' && *name != '_')
+			return 0;
+	return 1;
+}
+
+static int name_error(const char *name, struct anvil_err *err)
+{
+	return anvil_err_set(err, ANVIL_EPARSE,
+			     "expected a material name such as 'steel' (a letter, then "
+			     "letters, digits, '-' or '_'; at most %d), got '%s'",
+			     ANVIL_NAME_MAX - 1, name);
+}
+
+static struct anvil_material *custom_find(const struct anvil_scene *sc, const char *name)
+{
+	for (int i = 0; i < sc->ncustom && i < ANVIL_MAX_CUSTOM; ++i)
+		if (strcasecmp(name, sc->custom[i].name) == 0)
+			return (struct anvil_material *)&sc->custom[i];
+	return NULL;
+}
+
+static int material_unknown(const struct anvil_scene *sc, const char *name,
+			    struct anvil_err *err)
+{
+	struct anvil_suggest s;
+	char known[320] = "";
+	size_t len = 0;
+	anvil_suggest_init(&s, name);
+	for (int i = 0; i < anvil_material_count() + sc->ncustom; ++i) {
+		const char *cand = i < anvil_material_count()
+					   ? anvil_material_at(i)->name
+					   : sc->custom[i - anvil_material_count()].name;
+		anvil_suggest_try(&s, cand);
+		if (len < sizeof known)
+			len += (size_t)snprintf(known + len, sizeof known - len, "%s%s",
+						len ? ", " : "", cand);
+	}
+	if (s.best[0])
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "unknown material '%s'; did you mean '%s'?", name, s.best);
+	return anvil_err_set(err, ANVIL_EPARSE,
+			     "unknown material '%s' (known: %s; or define [material %s])",
+			     name, known, name);
+}
+
+int anvil_scene_custom_define(struct anvil_scene *sc, const char *name,
+			      struct anvil_material **m, struct anvil_err *err)
+{
+	if (!name_ok(name))
+		return name_error(name, err);
+	if (anvil_material_find(name))
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "'%s' is a built-in material; give yours another name",
+				     name);
+	*m = custom_find(sc, name);
+	if (*m)
+		return ANVIL_OK;
+	if (sc->ncustom >= ANVIL_MAX_CUSTOM)
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "too many materials (at most %d)", ANVIL_MAX_CUSTOM);
+	*m = &sc->custom[sc->ncustom++];
+	memset(*m, 0, sizeof **m);
+	snprintf((*m)->name, sizeof (*m)->name, "%s", name);
+	(*m)->E = (*m)->nu = (*m)->rho = NAN;
+	(*m)->yield = 0; /* optional: unknown */
+	(*m)->source = CUSTOM_SOURCE;
+	return ANVIL_OK;
+}
+
+int anvil_scene_custom_check(const struct anvil_material *m, struct anvil_err *err)
+{
+	const char *unset = isnan(m->E) ? "E" : isnan(m->nu) ? "nu" : isnan(m->rho) ? "rho" : NULL;
+	if (unset)
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "material '%s' is incomplete: %s is not set (E, nu and rho "
+				     "are needed)", m->name, unset);
+	return anvil_material_check(m, err);
+}
+
+int anvil_scene_resolve(struct anvil_scene *sc, struct anvil_body *b,
+			struct anvil_err *err)
+{
+	const struct anvil_material *base = custom_find(sc, b->material);
+	int st;
+	if (base) {
+		if ((st = anvil_scene_custom_check(base, err)))
+			return st;
+	} else if (!(base = anvil_material_find(b->material))) {
+		return material_unknown(sc, b->material, err);
+	}
+	struct anvil_material m = *base;
+	const double over[] = {b->E, b->nu, b->rho, b->yield};
+	double *field[] = {&m.E, &m.nu, &m.rho, &m.yield};
+	for (size_t i = 0; i < sizeof over / sizeof over[0]; ++i) {
+		if (!isnan(over[i])) {
+			*field[i] = over[i];
+			m.source = OVERRIDE_SOURCE;
+		}
+	}
+	if ((st = anvil_material_check(&m, err)))
+		return st;
+	/* The canonical spelling: "Steel" and "aluminum" become "steel", "aluminium". */
+	snprintf(b->material, sizeof b->material, "%s", base->name);
+	b->mat = m;
+	return ANVIL_OK;
+}
+
+/* ---- the key table ---- */
+
+enum rule { RULE_ANY, RULE_POSITIVE, RULE_NONNEG, RULE_POISSON };
+enum base { BASE_SCENE, BASE_BODY, BASE_MATERIAL };
+
+struct key;
+/* Parse, check and store value (already trimmed) into base. */
+typedef int key_set_fn(struct anvil_scene *sc, void *base, const struct key *k,
+		       const char *value, int deferred, struct anvil_err *err);
+/* Print the stored value into buf; 0 when the key is not set. */
+typedef int key_put_fn(const void *base, const struct key *k, char *buf, size_t n);
+
+struct key {
+	int sec;
+	const char *name;
+	key_set_fn *set;
+	key_put_fn *put;
+	enum base base;
+	size_t off;         /* of the double in the base struct */
+	enum anvil_dim dim; /* of that double */
+	enum rule rule;
+};
+
+#define FIELD(base, k) ((double *)((char *)(base) + (k)->off))
+#define CFIELD(base, k) ((const double *)((const char *)(base) + (k)->off))
+
+static int rule_check(enum rule r, double v, const char *text, struct anvil_err *err)
+{
+	static const char *const need[] = {"", "> 0", ">= 0", "in (-1, 0.5)"};
+	int ok = r == RULE_ANY || (r == RULE_POSITIVE && v > 0) ||
+		 (r == RULE_NONNEG && v >= 0) || (r == RULE_POISSON && v > -1 && v < 0.5);
+	if (ok)
+		return ANVIL_OK;
+	return anvil_err_set(err, ANVIL_EPARSE, "must be %s, got '%s'", need[r], text);
+}
+
+/* The shortest text that reads back to the same double: the fewest %g
+ * digits (at most 17), or the integer itself when that is shorter
+ * ("7830", not "7.83e+03"). */
+static void put_double(char *buf, size_t n, double v, const char *unit)
+{
+	char num[40], whole[40];
+	for (int prec = 1; prec <= 17; ++prec) {
+		snprintf(num, sizeof num, "%.*g", prec, v);
+		if (strtod(num, NULL) == v)
+			break;
+	}
+	if (v == floor(v) && fabs(v) < 1e15) {
+		snprintf(whole, sizeof whole, "%.0f", v);
+		if (strlen(whole) <= strlen(num))
+			snprintf(num, sizeof num, "%s", whole);
+	}
+	snprintf(buf, n, "%s%s%s", num, unit[0] ? " " : "", unit);
+}
+
+static int set_quantity(struct anvil_scene *sc, void *base, const struct key *k,
+			const char *value, int deferred, struct anvil_err *err)
+{
+	double v;
+	int st;
+	(void)sc;
+	(void)deferred;
+	if ((st = anvil_units_parse(value, k->dim, &v, err)) ||
+	    (st = rule_check(k->rule, v, value, err)))
+		return st;
+	*FIELD(base, k) = v;
+	return ANVIL_OK;
+}
+
+static int put_quantity(const void *base, const struct key *k, char *buf, size_t n)
+{
+	double v = *CFIELD(base, k);
+	if (isnan(v))
+		return 0; /* an override that is not set */
+	put_double(buf, n, v, anvil_units_si_name(k->dim));
+	return 1;
+}
+
+static int set_title(struct anvil_scene *sc, void *base, const struct key *k,
+		     const char *value, int deferred, struct anvil_err *err)
+{
+	(void)base;
+	(void)k;
+	(void)deferred;
+	for (const char *p = value; *p; ++p) {
+		if (iscntrl((unsigned char)*p))
+			return anvil_err_set(err, ANVIL_EPARSE, "must be one line of text");
+		/* It would not survive anvil_scene_write and a new parse. */
+		if ((*p == '#' || *p == ';') && p > value && isspace((unsigned char)p[-1]))
+			return anvil_err_set(err, ANVIL_EPARSE,
+					     "'%c' after a space would start a comment", *p);
+	}
+	if (strlen(value) >= sizeof sc->title)
+		return anvil_err_set(err, ANVIL_EPARSE, "longer than %d characters",
+				     (int)sizeof sc->title - 1);
+	snprintf(sc->title, sizeof sc->title, "%s", value);
+	return ANVIL_OK;
+}
+
+static int put_title(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", ((const struct anvil_scene *)base)->title);
+	return 1;
+}
+
+static int set_material(struct anvil_scene *sc, void *base, const struct key *k,
+			const char *value, int deferred, struct anvil_err *err)
+{
+	struct anvil_body *b = base;
+	(void)k;
+	if (!name_ok(value))
+		return name_error(value, err);
+	const struct anvil_material *m = custom_find(sc, value);
+	if (!m)
+		m = anvil_material_find(value);
+	/* While parsing, [material NAME] may come after its use. */
+	if (!m && !deferred)
+		return material_unknown(sc, value, err);
+	snprintf(b->material, sizeof b->material, "%s", m ? m->name : value);
+	return ANVIL_OK;
+}
+
+static int put_material(const void *base, const struct key *k, char *buf, size_t n)
+{
+	const struct anvil_body *b = base;
+	(void)k;
+	snprintf(buf, n, "%s", b->material);
+	return b->material[0] != '\0';
+}
+
+static int set_thickness(struct anvil_scene *sc, void *base, const struct key *k,
+			 const char *value, int deferred, struct anvil_err *err)
+{
+	size_t n = strlen(value);
+	double v;
+	int per_r0 = 0;
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (strcasecmp(value, "inf") == 0 || strcasecmp(value, "infinity") == 0) {
+		v = INFINITY;
+	} else if (n >= 2 && strcasecmp(value + n - 2, "r0") == 0) {
+		char num[VALUE_MAX];
+		snprintf(num, sizeof num, "%.*s", (int)(n - 2), value);
+		per_r0 = 1;
+		if (anvil_units_parse(num, ANVIL_DIM_NONE, &v, NULL))
+			goto bad;
+	} else if (anvil_units_parse(value, ANVIL_DIM_LENGTH, &v, NULL)) {
+		goto bad;
+	}
+	if (!(v > 0))
+		return anvil_err_set(err, ANVIL_EPARSE, "must be > 0, got '%s'", value);
+	sc->thickness = v;
+	sc->thickness_per_r0 = per_r0;
+	return ANVIL_OK;
+bad:
+	return anvil_err_set(err, ANVIL_EPARSE,
+			     "expected a length such as '4 mm' or '2 r0', got '%s' (or 'inf' "
+			     "for a half-space)", value);
+}
+
+static int put_thickness(const void *base, const struct key *k, char *buf, size_t n)
+{
+	const struct anvil_scene *sc = base;
+	(void)k;
+	if (isinf(sc->thickness))
+		snprintf(buf, n, "inf");
+	else
+		put_double(buf, n, sc->thickness, sc->thickness_per_r0 ? "r0" : "m");
+	return 1;
+}
+
+static int set_dt(struct anvil_scene *sc, void *base, const struct key *k,
+		  const char *value, int deferred, struct anvil_err *err)
+{
+	double v = 0;
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (strcasecmp(value, "auto") != 0 &&
+	    anvil_units_parse(value, ANVIL_DIM_TIME, &v, NULL))
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "expected a time such as '0.16 us' or 'auto', got '%s'",
+				     value);
+	if (v < 0)
+		return anvil_err_set(err, ANVIL_EPARSE, "must be >= 0, got '%s'", value);
+	sc->dt = v;
+	return ANVIL_OK;
+}
+
+static int put_dt(const void *base, const struct key *k, char *buf, size_t n)
+{
+	const struct anvil_scene *sc = base;
+	(void)k;
+	if (sc->dt == 0)
+		snprintf(buf, n, "auto");
+	else
+		put_double(buf, n, sc->dt, "s");
+	return 1;
+}
+
+/* "expected a, b or c, got 'x'; did you mean 'y'?" for a closed set of names. */
+static int choice_error(const char *value, const char *const *names, int count,
+			const char *more, struct anvil_err *err)
+{
+	char list[160] = "";
+	size_t len = 0;
+	struct anvil_suggest s;
+	anvil_suggest_init(&s, value);
+	for (int i = 0; i < count && len < sizeof list; ++i) {
+		anvil_suggest_try(&s, names[i]);
+		len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+					i == 0 ? "" : i == count - 1 && !more ? " or " : ", ",
+					names[i]);
+	}
+	if (more && len < sizeof list)
+		snprintf(list + len, sizeof list - len, " or %s", more);
+	if (s.best[0])
+		return anvil_err_set(err, ANVIL_EPARSE, "expected %s, got '%s'; did you mean '%s'?",
+				     list, value, s.best);
+	return anvil_err_set(err, ANVIL_EPARSE, "expected %s, got '%s'", list, value);
+}
+
+static int set_accuracy(struct anvil_scene *sc, void *base, const struct key *k,
+			const char *value, int deferred, struct anvil_err *err)
+{
+	const char *names[ANVIL_ACC_COUNT];
+	int a = anvil_accuracy_parse(value);
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (a < 0) {
+		for (int i = 0; i < ANVIL_ACC_COUNT; ++i)
+			names[i] = anvil_accuracy_name((enum anvil_accuracy)i);
+		return choice_error(value, names, ANVIL_ACC_COUNT, NULL, err);
+	}
+	sc->accuracy = (enum anvil_accuracy)a;
+	return ANVIL_OK;
+}
+
+static int put_accuracy(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", anvil_accuracy_name(((const struct anvil_scene *)base)->accuracy));
+	return 1;
+}
+
+static const char *const scheme_names[] = {"implicit", "paper"};
+#define NSCHEMES ((int)(sizeof scheme_names / sizeof scheme_names[0]))
+
+static int set_scheme(struct anvil_scene *sc, void *base, const struct key *k,
+		      const char *value, int deferred, struct anvil_err *err)
+{
+	(void)base;
+	(void)k;
+	(void)deferred;
+	for (int i = 0; i < NSCHEMES; ++i) {
+		if (strcasecmp(value, scheme_names[i]) == 0) {
+			sc->scheme = (enum anvil_scheme)i;
+			return ANVIL_OK;
+		}
+	}
+	return choice_error(value, scheme_names, NSCHEMES, NULL, err);
+}
+
+static int put_scheme(const void *base, const struct key *k, char *buf, size_t n)
+{
+	unsigned s = (unsigned)((const struct anvil_scene *)base)->scheme;
+	(void)k;
+	snprintf(buf, n, "%s", s < (unsigned)NSCHEMES ? scheme_names[s] : "?");
+	return 1;
+}
+
+/* "hertz, layer" or "all"; spaces around the commas are fine. */
+static int set_models(struct anvil_scene *sc, void *base, const struct key *k,
+		      const char *value, int deferred, struct anvil_err *err)
+{
+	unsigned bits = 0;
+	const char *p = value;
+	(void)base;
+	(void)k;
+	(void)deferred;
+	while (*p) {
+		size_t n = strcspn(p, ",");
+		char word[VALUE_MAX];
+		snprintf(word, sizeof word, "%.*s", (int)n, p);
+		char *w = word, *e = word + strlen(word);
+		while (isspace((unsigned char)*w))
+			++w;
+		while (e > w && isspace((unsigned char)e[-1]))
+			*--e = '\0';
+		int m = anvil_model_parse(w);
+		if (!*w) {
+			/* "hertz,,layer": an empty item is no model */
+		} else if (strcasecmp(w, "all") == 0) {
+			bits |= ANVIL_MODELS_ALL;
+		} else if (m >= 0) {
+			bits |= 1u << m;
+		} else {
+			const char *names[ANVIL_MODEL_COUNT];
+			for (int i = 0; i < ANVIL_MODEL_COUNT; ++i)
+				names[i] = anvil_model_name((enum anvil_model)i);
+			return choice_error(w, names, ANVIL_MODEL_COUNT, "'all'", err);
+		}
+		p += n + (p[n] == ',');
+	}
+	if (!bits)
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "expected a list of models such as 'hertz, layer' or 'all', "
+				     "got '%s'", value);
+	sc->models = bits;
+	return ANVIL_OK;
+}
+
+static int put_models(const void *base, const struct key *k, char *buf, size_t n)
+{
+	unsigned bits = ((const struct anvil_scene *)base)->models;
+	size_t len = 0;
+	(void)k;
+	buf[0] = '\0';
+	if (bits == ANVIL_MODELS_ALL) {
+		snprintf(buf, n, "all");
+		return 1;
+	}
+	for (int i = 0; i < ANVIL_MODEL_COUNT && len < n; ++i)
+		if (bits & (1u << i))
+			len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? ", " : "",
+						anvil_model_name((enum anvil_model)i));
+	return 1;
+}
+
+#define S(sec) ANVIL_SEC_##sec
+#define D(dim) ANVIL_DIM_##dim
+#define Q(sec, key, base, type, field, dim, rule)                                   \
+	{S(sec), key, set_quantity, put_quantity, base, offsetof(type, field), D(dim), \
+	 RULE_##rule}
+#define SCENE_Q(sec, key, field, dim, rule) \
+	Q(sec, key, BASE_SCENE, struct anvil_scene, field, dim, rule)
+#define BODY_Q(sec, key, field, dim, rule) \
+	Q(sec, key, BASE_BODY, struct anvil_body, field, dim, rule)
+#define FN(sec, key, base, fn) \
+	{S(sec), key, set_##fn, put_##fn, base, 0, ANVIL_DIM_NONE, RULE_ANY}
+/* E, nu, rho, yield: of a body (an override) or of a [material NAME]. */
+#define ELASTIC(sec, base, type)                                    \
+	Q(sec, "E", base, type, E, PRESSURE, POSITIVE),             \
+	Q(sec, "nu", base, type, nu, NONE, POISSON),                \
+	Q(sec, "rho", base, type, rho, DENSITY, POSITIVE),          \
+	Q(sec, "yield", base, type, yield, PRESSURE, NONNEG)
+
+/* In the order anvil_scene_write prints them. */
+static const struct key keys[] = {
+	FN(SCENE, "title", BASE_SCENE, title),
+	FN(IMPACTOR, "material", BASE_BODY, material),
+	SCENE_Q(IMPACTOR, "mass", mass, MASS, POSITIVE),
+	SCENE_Q(IMPACTOR, "radius", radius, LENGTH, POSITIVE),
+	ELASTIC(IMPACTOR, BASE_BODY, struct anvil_body),
+	FN(LAYER, "material", BASE_BODY, material),
+	FN(LAYER, "thickness", BASE_SCENE, thickness),
+	ELASTIC(LAYER, BASE_BODY, struct anvil_body),
+	SCENE_Q(IMPACT, "velocity", velocity, VELOCITY, POSITIVE),
+	FN(SOLVER, "accuracy", BASE_SCENE, accuracy),
+	FN(SOLVER, "scheme", BASE_SCENE, scheme),
+	FN(SOLVER, "dt", BASE_SCENE, dt),
+	FN(SOLVER, "models", BASE_SCENE, models),
+	ELASTIC(MATERIAL, BASE_MATERIAL, struct anvil_material),
+};
+#define NKEYS ((int)(sizeof keys / sizeof keys[0]))
+
+static void *key_base(struct anvil_scene *sc, const struct key *k,
+		      struct anvil_material *m)
+{
+	switch (k->base) {
+	case BASE_BODY:
+		return k->sec == ANVIL_SEC_IMPACTOR ? &sc->impactor : &sc->layer;
+	case BASE_MATERIAL:
+		return m;
+	case BASE_SCENE:
+		break;
+	}
+	return sc;
+}
+
+static const struct key *key_find(int sec, const char *name)
+{
+	for (int i = 0; i < NKEYS; ++i)
+		if (keys[i].sec == sec && strcasecmp(keys[i].name, name) == 0)
+			return &keys[i];
+	return NULL;
+}
+
+static int key_unknown(int sec, const char *name, const char *key, struct anvil_err *err)
+{
+	struct anvil_suggest s;
+	char cand[80], list[160] = "";
+	size_t len = 0;
+	anvil_suggest_init(&s, key);
+	for (int i = 0; i < NKEYS; ++i) {
+		const struct key *k = &keys[i];
+		if (k->sec == ANVIL_SEC_MATERIAL)
+			snprintf(cand, sizeof cand, "material.%s.%s", name ? name : "NAME", k->name);
+		else
+			snprintf(cand, sizeof cand, "%s.%s", section_names[k->sec], k->name);
+		if (sec < 0 && k->sec != ANVIL_SEC_MATERIAL) {
+			anvil_suggest_try(&s, cand); /* no section given: any key */
+		} else if (k->sec == sec) {
+			anvil_suggest_try(&s, cand);
+			if (len < sizeof list)
+				len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+							len ? ", " : "", k->name);
+		} else if (s.dist > 0 && k->sec != ANVIL_SEC_MATERIAL &&
+			   strcasecmp(k->name, key) == 0) {
+			/* The right key in the wrong section. */
+			s.dist = 0;
+			snprintf(s.best, sizeof s.best, "%s", cand);
+		}
+	}
+	if (s.best[0])
+		return anvil_err_set(err, ANVIL_EPARSE, "unknown key; did you mean '%s'?", s.best);
+	if (sec < 0)
+		return anvil_err_set(err, ANVIL_EPARSE,
+				     "unknown key (keys are SECTION.KEY, e.g. impactor.mass)");
+	return anvil_err_set(err, ANVIL_EPARSE, "unknown key (keys of [%s]: %s)",
+			     section_names[sec], list);
+}
+
+int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
+			const char *key, const char *value, int deferred,
+			struct anvil_err *err)
+{
+	char v[VALUE_MAX];
+	const struct key *k = key_find(sec, key);
+	struct anvil_material *m = NULL;
+	int st;
+	if (!k)
+		return key_unknown(sec, name, key, err);
+	while (isspace((unsigned char)*value))
+		++value;
+	size_t n = strlen(value);
+	while (n > 0 && isspace((unsigned char)value[n - 1]))
+		--n;
+	if (n >= sizeof v)
+		return anvil_err_set(err, ANVIL_EPARSE, "value longer than %d characters",
+				     (int)sizeof v - 1);
+	snprintf(v, sizeof v, "%.*s", (int)n, value);
+	if (sec == ANVIL_SEC_MATERIAL && (st = anvil_scene_custom_define(sc, name, &m, err)))
+		return st;
+	return k->set(sc, key_base(sc, k, m), k, v, deferred, err);
+}
+
+void anvil_scene_keys_write(const struct anvil_scene *sc, int sec, int custom,
+			    FILE *out)
+{
+	/* key_base only computes an address; nothing is written through it. */
+	struct anvil_scene *s = (struct anvil_scene *)sc;
+	struct anvil_material *m = sec == ANVIL_SEC_MATERIAL ? &s->custom[custom] : NULL;
+	char buf[VALUE_MAX];
+	for (int i = 0; i < NKEYS; ++i)
+		if (keys[i].sec == sec && keys[i].put(key_base(s, &keys[i], m), &keys[i],
+						      buf, sizeof buf))
+			fprintf(out, "%s = %s\n", keys[i].name, buf);
+}

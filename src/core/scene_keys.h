@@ -1,0 +1,65 @@
+/* scene_keys.h: internal to scene.c and scene_keys.c, not part of the API.
+ *
+ * The table of scene keys (section, key, how to parse, check and print it),
+ * the resolution of a body's material, and "did you mean" suggestions.
+ * Messages written here carry no location: the callers prefix
+ * "FILE:LINE: SECTION.KEY: ". */
+#ifndef ANVIL_SCENE_KEYS_H
+#define ANVIL_SCENE_KEYS_H
+
+#include <stdio.h>
+
+#include "scene.h"
+
+/* Sections, in the order anvil_scene_write prints them. */
+enum anvil_section {
+	ANVIL_SEC_SCENE,
+	ANVIL_SEC_IMPACTOR,
+	ANVIL_SEC_LAYER,
+	ANVIL_SEC_IMPACT,
+	ANVIL_SEC_SOLVER,
+	ANVIL_SEC_MATERIAL, /* [material NAME] */
+	ANVIL_SEC_COUNT
+};
+
+const char *anvil_scene_section_name(int sec);
+/* Case-insensitive; -1 (with "unknown section 'x'; did you mean 'y'?" in
+ * err) when there is none. */
+int anvil_scene_section_find(const char *name, struct anvil_err *err);
+
+/* Set key of section sec to value (trimmed).  name is the NAME of a
+ * [material NAME] section, else unused.  When deferred (while parsing), a
+ * body's material may be one defined later in the text: call
+ * anvil_scene_resolve at the end.  Checks the value alone; ANVIL_EPARSE. */
+int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
+			const char *key, const char *value, int deferred,
+			struct anvil_err *err);
+
+/* Print "key = value" lines for the keys of sec that are set; for
+ * ANVIL_SEC_MATERIAL those of sc->custom[custom]. */
+void anvil_scene_keys_write(const struct anvil_scene *sc, int sec, int custom,
+			    FILE *out);
+
+/* Define (or find) the custom material NAME; ANVIL_EPARSE for a bad or
+ * built-in name or too many materials. */
+int anvil_scene_custom_define(struct anvil_scene *sc, const char *name,
+			      struct anvil_material **m, struct anvil_err *err);
+/* A custom material is complete (E, nu, rho set) and valid. */
+int anvil_scene_custom_check(const struct anvil_material *m, struct anvil_err *err);
+
+/* Set b->mat from b->material and b's overrides; ANVIL_EPARSE for an
+ * unknown or incomplete material (with a suggestion). */
+int anvil_scene_resolve(struct anvil_scene *sc, struct anvil_body *b,
+			struct anvil_err *err);
+
+/* The closest candidate to word: edit distance <= 2, or word a prefix of
+ * it.  Feed candidates with _try; best is "" when none fits. */
+struct anvil_suggest {
+	const char *word;
+	char best[96];
+	int dist;
+};
+void anvil_suggest_init(struct anvil_suggest *s, const char *word);
+void anvil_suggest_try(struct anvil_suggest *s, const char *candidate);
+
+#endif

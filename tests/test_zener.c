@@ -1,0 +1,301 @@
+/* test_zener: Zener's thin-plate ODE (51)-(52) against the paper's starred
+ * rows (tables.tsv, with the misprints of notes.md), Zener's fit (54), its
+ * own convergence and its error paths. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "tap.h"
+#include "zener.h"
+
+/* The paper's copper on steel, as src/core/params.c derives it. */
+static void fill_params(struct anvil_params *p, double h_r0, double V0)
+{
+	memset(p, 0, sizeof *p);
+	p->m1 = 0.0122;
+	p->r0 = 0.004;
+	p->V0 = V0;
+	p->E1 = 123e9;
+	p->nu1 = 0.34;
+	p->rho1 = 8960;
+	p->E = 209e9;
+	p->nu = 0.3;
+	p->rho = 7830;
+	p->h = isinf(h_r0) ? INFINITY : h_r0 * p->r0;
+	p->Estar = 1.0 / ((1 - p->nu1 * p->nu1) / p->E1 + (1 - p->nu * p->nu) / p->E);
+	p->K = 4.0 * p->Estar * sqrt(p->r0) / 3.0;
+	p->k0 = pow(p->K, -2.0 / 3.0);
+	p->T = pow(p->m1, 0.4) * pow(p->V0, -0.2) * pow(p->K, -0.4);
+	if (isinf(p->h)) {
+		p->alpha_star = 0.0;
+	} else {
+		/* Eq (8) with the half-thickness h* = h/2 (notes.md). */
+		double hs = 0.5 * p->h;
+		p->alpha_star = sqrt(3.0 * p->rho * (1 - p->nu * p->nu) / p->E) /
+				(16.0 * p->rho * hs * hs);
+	}
+	p->lambda_star = p->alpha_star * p->K * sqrt(p->V0) * pow(p->T, 1.5);
+	p->Rf_star = exp(-1.7191 * p->lambda_star);
+}
+
+/* One starred row of tables.tsv; the strings keep the printed digits. */
+struct row {
+	double V0, h_r0;
+	char ts[16], tmax[16], Pmax[16], lambda[16], Rf[16];
+};
+
+/* Printed starred values off the ODE: what the ODE gives instead.  The
+ * first two are notes.md's misprints; the third is not in notes.md: Table 2,
+ * h = r0, t*_max is printed 16.7 us where the ODE gives 17.22 us (3.1 %,
+ * beyond the 2.5 % allowed for t*_max; checked with an independent
+ * fixed-step RK4: tau_max = 1.40291 at lambda* = 0.63417). */
+struct misprint {
+	double V0, h_r0;
+	const char *what;
+	double ode; /* us or kN */
+};
+
+static const struct misprint misprints[] = {
+	{ 10, 5, "P*_max", 11.07 },  /* printed 10.048 kN */
+	{ 100, 10, "t*_s", 24.97 },  /* printed 24.5 us */
+	{ 10, 1, "t*_max", 17.22 },  /* printed 16.7 us */
+};
+
+static const struct misprint *find_misprint(const struct row *w, const char *what)
+{
+	for (size_t i = 0; i < sizeof misprints / sizeof *misprints; i++)
+		if (misprints[i].V0 == w->V0 && misprints[i].h_r0 == w->h_r0 &&
+		    strcmp(misprints[i].what, what) == 0)
+			return &misprints[i];
+	return NULL;
+}
+
+/* Half a unit in the last printed digit, relative: "0.0063" -> 0.79 %. */
+static double printed_rounding(const char *s)
+{
+	const char *dot = strchr(s, '.');
+	int dec = dot ? (int)strspn(dot + 1, "0123456789") : 0;
+	return 0.5 * pow(10.0, -dec) / fabs(atof(s));
+}
+
+/* The finite-h rows of tables.tsv; returns how many were read, -1 if none. */
+static int read_rows(struct row *rows, int max)
+{
+	const char *shared = getenv("SHARED");
+	char path[1024], line[512];
+	snprintf(path, sizeof path, "%s/paper/tables.tsv", shared ? shared : "../shared");
+	FILE *f = fopen(path, "r");
+	if (!f) {
+		diag("cannot open %s", path);
+		return -1;
+	}
+	int n = 0;
+	while (n < max && fgets(line, sizeof line, f)) {
+		struct row *w = &rows[n];
+		char h[16], skip[16];
+		if (line[0] == '#' || strncmp(line, "V0", 2) == 0)
+			continue;
+		if (sscanf(line, "%lf %15s %15s %15s %15s %15s %15s %15s %15s %15s %15s %15s",
+			   &w->V0, h, skip, w->ts, skip, w->tmax, skip, w->Pmax, skip, skip,
+			   w->lambda, w->Rf) != 12)
+			continue;
+		if (strcmp(h, "inf") == 0)
+			continue; /* notes.md: the half-space's starred column is not Zener's */
+		w->h_r0 = atof(h);
+		n++;
+	}
+	fclose(f);
+	return n;
+}
+
+/* ours vs printed, within tol (relative); misprints against the ODE value. */
+static void compare(const struct row *w, const char *what, double ours,
+		    const char *printed, double tol)
+{
+	const struct misprint *m = find_misprint(w, what);
+	double paper = atof(printed);
+	diag("%-4g %-3g %-7s %11.5g %9s %+8.3f %%%s", w->V0, w->h_r0, what, ours, printed,
+	     100 * (ours / paper - 1), m ? "  (off the ODE)" : "");
+	if (m) {
+		ok(fabs(ours / paper - 1) > 0.015, "V0=%g h=%gr0 %s: printed %s is off the ODE",
+		   w->V0, w->h_r0, what, printed);
+		is_rel(ours, m->ode, 0.005, "V0=%g h=%gr0 %s = %g (ODE)", w->V0,
+		       w->h_r0, what, m->ode);
+		return;
+	}
+	is_rel(ours, paper, tol, "V0=%g h=%gr0 %s vs paper %s", w->V0, w->h_r0, what, printed);
+}
+
+/* The run's error estimates cover its distance from a solve at 1e-13, and
+ * are small. */
+static void check_errors(const struct anvil_params *p, const struct anvil_result *r)
+{
+	struct anvil_zener_sol ref;
+	int st = anvil_zener_solve(p->lambda_star, 1e-13, &ref, NULL);
+	if (!ok(st == ANVIL_OK, "reference solve at tol 1e-13"))
+		return;
+	double dts = fabs(r->ts - p->T * ref.tau_s), dtm = fabs(r->tmax - p->T * ref.tau_max);
+	double dP = fabs(r->Pmax - p->K * pow(p->T * p->V0 * ref.alpha_max, 1.5));
+	double dR = fabs(r->Rf - ref.rf);
+	ok(dts <= r->ts_err && dtm <= r->tmax_err && dP <= r->Pmax_err && dR <= r->Rf_err,
+	   "error estimates cover the error: ts %.2g <= %.2g s, tmax %.2g <= %.2g s, "
+	   "Pmax %.2g <= %.2g N, Rf %.2g <= %.2g", dts, r->ts_err, dtm, r->tmax_err, dP,
+	   r->Pmax_err, dR, r->Rf_err);
+	ok(r->ts_err < 1e-6 * r->ts && r->Pmax_err < 1e-6 * r->Pmax && r->Rf_err < 1e-6 &&
+	   fabs(r->Ea_err) < 1e-6 * p->m1 * p->V0 * p->V0,
+	   "error estimates below 1e-6 relative");
+}
+
+static void test_table(void)
+{
+	struct row rows[16];
+	int n = read_rows(rows, 16);
+	if (!ok(n == 8, "tables.tsv: 8 finite-h rows (got %d)", n))
+		return;
+	diag("V0   h   what           ours     paper  rel.diff");
+	for (int i = 0; i < n; i++) {
+		const struct row *w = &rows[i];
+		struct anvil_params p;
+		struct anvil_result r;
+		struct anvil_err e;
+		fill_params(&p, w->h_r0, w->V0);
+		anvil_result_init(&r, ANVIL_MODEL_ZENER);
+		int st = anvil_zener_run(&p, 0, &r, &e);
+		if (!ok(st == ANVIL_OK, "zener V0=%g h=%gr0 runs", w->V0, w->h_r0))
+			continue;
+		/* lambda* is printed to 2-5 digits: allow the printed rounding too. */
+		compare(w, "lambda*", r.lambda_star, w->lambda,
+			0.005 + printed_rounding(w->lambda));
+		compare(w, "t*_s", 1e6 * r.ts, w->ts, 0.005);
+		compare(w, "t*_max", 1e6 * r.tmax, w->tmax, 0.025);
+		compare(w, "P*_max", 1e-3 * r.Pmax, w->Pmax, 0.005);
+		compare(w, "R*_f", r.Rf_star, w->Rf, 0.005);
+		diag("%-4g %-3g %-7s %11.5g %9s %+8.3f %%  (ODE R_f vs (54))", w->V0, w->h_r0,
+		     "R_f", r.Rf, w->Rf, 100 * (r.Rf / atof(w->Rf) - 1));
+		check_errors(&p, &r);
+		ok(w->h_r0 > 1 ? strstr(r.note, "thick") != NULL : r.note[0] == '\0',
+		   "note: \"%s\"", r.note);
+		anvil_result_free(&r);
+	}
+}
+
+/* Zener's fit (54) against the ODE on lambda* in [0, 1]. */
+static void test_fit(void)
+{
+	double dmax = 0, lmax = 0;
+	int st = ANVIL_OK;
+	for (int i = 0; i <= 50 && !st; i++) {
+		struct anvil_zener_sol s;
+		double l = 0.02 * i;
+		st = anvil_zener_solve(l, 1e-10, &s, NULL);
+		double d = fabs(s.rf - anvil_zener_rf_fit(l));
+		if (!st && d > dmax) {
+			dmax = d;
+			lmax = l;
+		}
+	}
+	ok(st == ANVIL_OK, "ODE solves on lambda* in [0, 1]");
+	ok(dmax < 0.02, "|rf(ODE) - exp(-1.7191 lambda*)| <= %.4f (at lambda* = %g) < 0.02",
+	   dmax, lmax);
+	is_rel(anvil_zener_rf_fit(0.5), exp(-0.85955), 1e-15, "fit (54) at 0.5");
+}
+
+static void test_convergence(void)
+{
+	const double lambdas[] = { 0.0, 0.0063, 0.25, 0.6342, 1.0, 3.0 };
+	for (size_t i = 0; i < sizeof lambdas / sizeof *lambdas; i++) {
+		struct anvil_zener_sol a, b;
+		double l = lambdas[i];
+		int st = anvil_zener_solve(l, 1e-8, &a, NULL);
+		st = st ? st : anvil_zener_solve(l, 1e-11, &b, NULL);
+		if (!ok(st == ANVIL_OK, "lambda* = %g solves at 1e-8 and 1e-11", l))
+			continue;
+		double d = fmax(fmax(fabs(a.tau_s - b.tau_s), fabs(a.tau_max - b.tau_max)),
+				fmax(fabs(a.alpha_max - b.alpha_max), fabs(a.rf - b.rf)));
+		ok(d <= a.err && b.err < a.err,
+		   "lambda* = %g: |tol 1e-8 - tol 1e-11| = %.2g <= err %.2g (fine err %.2g)",
+		   l, d, a.err, b.err);
+		ok(a.tau_max < a.tau_s && a.alpha_max > 0 && a.rf > 0 && a.rf <= 1,
+		   "lambda* = %g: tau_s %.6f, tau_max %.6f, alpha_max %.6f, rf %.6f", l,
+		   a.tau_s, a.tau_max, a.alpha_max, a.rf);
+	}
+}
+
+/* Histories: w* = alpha* int P dt = alpha* m1 (V0 - v) (eq 8), which the
+ * ODE never uses, and the ends. */
+static void test_history(void)
+{
+	struct anvil_params p;
+	struct anvil_result r;
+	struct anvil_err e;
+	const size_t n = 301;
+	fill_params(&p, 1.0, 10.0);
+	anvil_result_init(&r, ANVIL_MODEL_ZENER);
+	int st = anvil_zener_run(&p, n, &r, &e);
+	if (!ok(st == ANVIL_OK && r.hist.n == n, "zener history of %zu samples", n))
+		return;
+	const struct anvil_history *h = &r.hist;
+	double dw = 0, dalpha = 0, wscale = p.alpha_star * p.m1 * p.V0;
+	size_t imax = 0;
+	for (size_t i = 0; i < n; i++) {
+		double w8 = p.alpha_star * p.m1 * (p.V0 - h->v[i]);
+		dw = fmax(dw, fabs(h->w[i] - w8) / wscale);
+		dalpha = fmax(dalpha, fabs(h->W[i] - h->w[i] - h->alpha[i]));
+		if (h->P[i] > h->P[imax])
+			imax = i;
+	}
+	ok(dw < 1e-8, "w = alpha* m1 (V0 - v) along the history (max rel. dev. %.2g)", dw);
+	ok(dalpha < 1e-12 * p.r0, "alpha_H = W - w");
+	is_abs(h->t[0], 0.0, 0.0, "starts at t = 0");
+	is_rel(h->t[n - 1], r.ts, 1e-15, "ends at t_s");
+	is_rel(h->v[n - 1], -r.Vs, 1e-9, "v(t_s) = -V_s");
+	ok(fabs(h->alpha[n - 1]) < 1e-9 * h->alpha[imax], "alpha(t_s) = 0");
+	ok(fabs(h->t[imax] - r.tmax) <= r.ts / (n - 1), "peak of P history at t_max");
+	ok(h->P[imax] <= r.Pmax * (1 + 1e-12) && h->P[imax] > 0.999 * r.Pmax,
+	   "peak of P history just below P_max");
+	anvil_result_free(&r);
+}
+
+static void test_errors(void)
+{
+	struct anvil_zener_sol s;
+	struct anvil_err e;
+	struct anvil_params p;
+	struct anvil_result r;
+	ok(anvil_zener_solve(-0.1, 1e-10, &s, &e) == ANVIL_EINVAL && e.msg[0],
+	   "lambda* < 0: EINVAL (%s)", e.msg);
+	ok(anvil_zener_solve(NAN, 1e-10, &s, &e) == ANVIL_EINVAL, "lambda* NaN: EINVAL");
+	ok(anvil_zener_solve(INFINITY, 1e-10, &s, &e) == ANVIL_EINVAL, "lambda* inf: EINVAL");
+	ok(anvil_zener_solve(0.1, 0.0, &s, &e) == ANVIL_EINVAL, "tol 0: EINVAL");
+	ok(anvil_zener_solve(0.1, NAN, &s, &e) == ANVIL_EINVAL, "tol NaN: EINVAL");
+	ok(anvil_zener_solve(0.1, 1e-10, NULL, NULL) == ANVIL_EINVAL, "NULL sol: EINVAL");
+	ok(anvil_zener_solve(0.1, 1e-2, &s, &e) == ANVIL_EINVAL, "tol 1e-2: EINVAL (%s)", e.msg);
+	/* lambda* = 1000: R_f ~ 1e-14, alpha creeps to 0 below the tolerance. */
+	ok(anvil_zener_solve(1000, 1e-8, &s, &e) == ANVIL_ENUM && e.msg[0],
+	   "lambda* = 1000: ENUM (%s)", e.msg);
+	fill_params(&p, 1.0, 10.0);
+	anvil_result_init(&r, ANVIL_MODEL_ZENER);
+	p.lambda_star = -1.0;
+	ok(anvil_zener_run(&p, 10, &r, &e) == ANVIL_EINVAL && r.hist.n == 0,
+	   "run with lambda* < 0: EINVAL, no history");
+	p.lambda_star = NAN;
+	ok(anvil_zener_run(&p, 0, &r, &e) == ANVIL_EINVAL, "run with lambda* NaN: EINVAL");
+	ok(anvil_zener_run(NULL, 0, &r, &e) == ANVIL_EINVAL, "run with NULL params: EINVAL");
+	anvil_result_free(&r);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	test_table();
+	test_fit();
+	test_convergence();
+	test_history();
+	test_errors();
+	plan(tap_n);
+	return done_testing();
+}
