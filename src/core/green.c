@@ -29,11 +29,11 @@ struct anvil_green {
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs)
 {
 	static const struct anvil_green_settings table[ANVIL_ACC_COUNT] = {
-		/* c0T  omega_max panel gl_n ktail */
-		{ 9.0, 12.0, 2.0, 8, 1e-8 },   /* draft */
-		{ 10.0, 24.0, 1.5, 10, 1e-10 }, /* normal */
-		{ 11.0, 48.0, 1.0, 12, 1e-12 }, /* fine */
-		{ 12.0, 96.0, 0.7, 16, 1e-14 }, /* reference */
+		/* c0T  omega_max tol  ktail */
+		{ 9.0, 12.0, 1e-5, 1e-8 },   /* draft */
+		{ 10.0, 24.0, 1e-6, 1e-10 }, /* normal */
+		{ 11.0, 48.0, 1e-7, 1e-12 }, /* fine */
+		{ 12.0, 96.0, 1e-8, 1e-14 }, /* reference */
 	};
 	*gs = table[acc < ANVIL_ACC_COUNT ? acc : ANVIL_ACC_NORMAL];
 }
@@ -61,7 +61,8 @@ static cplx cexpm1_(cplx z)
  * doc/derivation.md and green.h).  With a = k^2, b = s^2:
  *   alpha_j = sqrt(a + kappa_j^2 b), gamma = 2a + b, X = 4 a alpha1 alpha2,
  *   R = gamma^2 - X = b Q / (gamma^2 + X)           (rationalised: the k^8
- *   terms cancel exactly, so Q is expanded by hand and loses no digits),
+ *   terms cancel exactly, so Q is expanded by hand and loses no digits;
+ *   used where |gamma^2 + X| > |gamma^2 - X|, the plain form elsewhere),
  *   W_hs = alpha1 b / R = alpha1 (gamma^2 + X) / Q.
  * The free layer, split into parts symmetric and antisymmetric about its
  * mid-plane (half-thickness H), with t_j = tanh(alpha_j H):
@@ -86,11 +87,19 @@ static cplx w_halfspace(const struct kern *p, double k, cplx *al1_out, cplx *al2
 	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
 	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
 		 8.0 * a * b * b + b * b * b;
-	cplx g2X = gam * gam + X;
+	cplx g2X = gam * gam + X, g2mX = gam * gam - X;
 	*al1_out = al1;
 	*al2_out = al2;
-	*R_out = b * Q / g2X;
 	*X_out = X;
+	/* The rationalised form cancels nothing at large k but is 0/0 where
+	 * gamma^2 + X = 0 (the spurious root that rationalising brings in, which
+	 * can sit on the integration path); the plain form is exact there.  Use
+	 * whichever denominator is the larger. */
+	if (cabs(g2mX) >= cabs(g2X)) {
+		*R_out = g2mX;
+		return al1 * b / g2mX;
+	}
+	*R_out = b * Q / g2X;
 	return al1 * g2X / Q;
 }
 
@@ -101,7 +110,10 @@ static cplx kern_layer_corr(const struct kern *p, double k)
 	double H = p->H;
 	cplx m1 = -cexpm1_(-2.0 * H * al1), m2 = -cexpm1_(-2.0 * H * al2);
 	cplx t1 = m1 / (2.0 - m1), t2 = m2 / (2.0 - m2);
-	cplx E1 = 1.0 - m1;
+	/* E1 itself, not 1 - m1: that would leave rounding noise (1e-16) where
+	 * E1 is 1e-23, and the noise is then multiplied by
+	 * exp(-2H (alpha2 - alpha1)), which grows where Re(alpha2 - alpha1) < 0. */
+	cplx E1 = cexp(-2.0 * H * al1);
 	cplx u1 = 2.0 * E1 / (2.0 - m1);
 	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
 	cplx dal = (1.0 - p->kap2) * p->b / (al1 + al2);
@@ -114,8 +126,12 @@ static cplx kern_layer_corr(const struct kern *p, double k)
 struct quad {
 	enum anvil_green_mode mode;
 	struct kern kp;
-	const gsl_integration_glfixed_table *gl;
 	size_t evals;
+	/* GSL's Gauss-Kronrod rules are for real integrands: the real part is
+	 * integrated first and the imaginary parts of the same 21 nodes are
+	 * kept here for the second call, so each node is evaluated once. */
+	double cache_x[21], cache_im[21];
+	int ncache, imag_pass;
 };
 
 static cplx integrand(struct quad *q, double k)
@@ -129,15 +145,126 @@ static cplx integrand(struct quad *q, double k)
 	return kern_layer_corr(&q->kp, k) * zhat(k) * k;
 }
 
-static cplx panel(struct quad *q, double a, double b)
+static double part(double k, void *vq)
+{
+	struct quad *q = vq;
+	if (q->imag_pass) {
+		for (int i = 0; i < q->ncache; i++)
+			if (q->cache_x[i] == k)
+				return q->cache_im[i];
+		return cimag(integrand(q, k)); /* not reached with qk21 */
+	}
+	cplx v = integrand(q, k);
+	if (q->ncache < 21) {
+		q->cache_x[q->ncache] = k;
+		q->cache_im[q->ncache++] = cimag(v);
+	}
+	return creal(v);
+}
+
+/* The 21-point Gauss-Kronrod rule on [a, b] for the complex integrand. */
+static void qk21_complex(struct quad *q, double a, double b, cplx *val, double *err)
+{
+	gsl_function f = { part, q };
+	double re, im, ere, eim, r1, r2;
+	q->ncache = 0;
+	q->imag_pass = 0;
+	gsl_integration_qk21(&f, a, b, &re, &ere, &r1, &r2);
+	q->imag_pass = 1;
+	gsl_integration_qk21(&f, a, b, &im, &eim, &r1, &r2);
+	*val = re + I * im;
+	*err = hypot(ere, eim);
+}
+
+/* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
+ * integrands only): split the interval with the largest error estimate
+ * until the total meets the tolerance.  A binary heap keeps the next
+ * interval to split at hand. */
+struct seg {
+	double a, b, err;
+	cplx val;
+};
+
+#define SEG_MAX 8192
+
+struct heap {
+	struct seg s[SEG_MAX];
+	int n;
+};
+
+static void heap_push(struct heap *h, struct seg x)
+{
+	int i = h->n++;
+	while (i > 0 && h->s[(i - 1) / 2].err < x.err) {
+		h->s[i] = h->s[(i - 1) / 2];
+		i = (i - 1) / 2;
+	}
+	h->s[i] = x;
+}
+
+static struct seg heap_pop(struct heap *h)
+{
+	struct seg top = h->s[0], last = h->s[--h->n];
+	int i = 0;
+	for (;;) {
+		int c = 2 * i + 1;
+		if (c >= h->n)
+			break;
+		if (c + 1 < h->n && h->s[c + 1].err > h->s[c].err)
+			c++;
+		if (h->s[c].err <= last.err)
+			break;
+		h->s[i] = h->s[c];
+		i = c;
+	}
+	if (h->n)
+		h->s[i] = last;
+	return top;
+}
+
+static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
+{
+	struct seg x = { .a = a, .b = b };
+	qk21_complex(q, a, b, &x.val, &x.err);
+	*sum += x.val;
+	*err += x.err;
+	heap_push(h, x);
+}
+
+/* Integrate over [0, kend], starting from pieces of width w0 on [0, kband]
+ * (where the Lamb-mode poles are) and w1 beyond; absolute tolerance eps.
+ * Returns ANVIL_ETOL (with the best value) when SEG_MAX pieces do not
+ * suffice. */
+static int adapt(struct quad *q, struct heap *h, double kband, double kend, double w0,
+		 double w1, double eps, cplx *val, double *abserr)
 {
 	cplx sum = 0;
-	for (size_t i = 0; i < q->gl->n; i++) {
-		double x, w;
-		gsl_integration_glfixed_point(a, b, i, &x, &w, q->gl);
-		sum += w * integrand(q, x);
+	double err = 0;
+	h->n = 0;
+	for (double a = 0; a < kend && h->n < SEG_MAX / 2;) {
+		double w = a < kband ? w0 : w1;
+		double b = fmin(kend, a < kband ? fmin(kband, a + w) : a + w);
+		heap_add(q, h, a, b, &sum, &err);
+		a = b;
 	}
-	return sum;
+	while (err > eps && h->n < SEG_MAX - 1) {
+		struct seg x = heap_pop(h);
+		double m = 0.5 * (x.a + x.b);
+		sum -= x.val;
+		err -= x.err;
+		heap_add(q, h, x.a, m, &sum, &err);
+		heap_add(q, h, m, x.b, &sum, &err);
+	}
+	/* re-add from scratch: the running sums drift */
+	sum = 0;
+	err = 0;
+	for (int i = 0; i < h->n; i++) {
+		sum += h->s[i].val;
+		err += h->s[i].err;
+	}
+	*val = sum;
+	*abserr = err;
+	return err <= eps ? ANVIL_OK : ANVIL_ETOL;
 }
 
 /* Dimensionless Rayleigh speed c_R/c2: root of the Rayleigh function
@@ -157,40 +284,28 @@ static double rayleigh_speed(double kap2)
 	return sqrt(0.5 * (lo + hi));
 }
 
-/* The k-integral at one s = c0 + i omega.  Poles of the Lamb modes lie
- * within about c0 kappa of the real axis for k up to ~omega/c_A0, where the
- * slowest mode (A0) has phase speed below both c_R and the thin-plate
- * flexural speed: panels of width panel*c0*kappa there.  Beyond, the
- * integrand is smooth (evanescent fields): wider panels resolving exp(-2kH)
- * and the period 2 pi of zhat. */
-static cplx k_integral(struct quad *q, double c0, double omega, double hh,
-		       double cr, const struct anvil_green_settings *gs)
+/* The k-integral at one s = c0 + i omega, to absolute error eps.  The
+ * Lamb-mode poles lie within about c0/c_group of the real k axis for k up
+ * to about omega/c_A0, where the slowest mode (A0) has phase speed below
+ * both c_R and the thin-plate flexural speed: that band starts in small
+ * pieces; beyond it the fields are evanescent and the integrand smooth
+ * (exp(-2kH) times the period-2pi oscillation of zhat). */
+static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
+		      double cr, double ktail, double eps, cplx *val, double *abserr)
 {
-	double kap = sqrt(q->kp.kap2), nu_ = (1 - 2 * q->kp.kap2) / (2 * (1 - q->kp.kap2));
-	double wfine = gs->panel * c0 * kap;
-	double kflex = q->mode == ANVIL_GREEN_HALFSPACE ? 0 :
-		pow(6.0 * (1.0 - nu_) * (omega * omega + c0 * c0) / (hh * hh), 0.25);
+	double nu_ = (1 - 2 * q->kp.kap2) / (2 * (1 - q->kp.kap2));
+	double wabs = hypot(omega, creal(q->kp.s));
+	int hs = q->mode == ANVIL_GREEN_HALFSPACE;
+	double kflex = hs ? 0 : pow(6.0 * (1.0 - nu_) * wabs * wabs / (hh * hh), 0.25);
 	double kband = 1.6 * fmax(omega / cr, kflex) + 3.0;
-	double L = -log(gs->ktail), kend;
-	if (q->mode == ANVIL_GREEN_HALFSPACE)
-		kend = fmax(kband, pow((omega * omega + c0 * c0) / gs->ktail, 0.25));
-	else
-		kend = fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
-	double wtail = q->mode == ANVIL_GREEN_HALFSPACE ? 1.0 : fmin(1.0, 0.5 * hh + 0.05);
-	cplx sum = 0;
-	double a = 0;
-	size_t nf = (size_t)ceil(fmin(kband, kend) / wfine);
-	for (size_t i = 0; i < nf; i++) {
-		double b = fmin(kband, kend) * (double)(i + 1) / (double)nf;
-		sum += panel(q, a, b);
-		a = b;
-	}
-	while (a < kend) {
-		double b = fmin(kend, a + fmax(wtail, wfine));
-		sum += panel(q, a, b);
-		a = b;
-	}
-	return sum;
+	double L = -log(ktail);
+	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
+			 : fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
+	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
+	 * the band, wider in the smooth tail; the adaptive splitting finds the
+	 * poles from there (the results do not move when these are halved). */
+	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = 4.0;
+	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
 }
 
 static size_t pow2_at_least(size_t n)
@@ -202,33 +317,37 @@ static size_t pow2_at_least(size_t n)
 }
 
 /* Fill spec[0..M] with the transform of the ramp response at
- * s_n = c0 + i n pi/T', and return an estimate of the quadrature error
- * (the largest change when the panels are halved, checked on a sample of
- * frequencies). */
-static int sample_spectrum(struct quad *q, double hh, double c0, double Tp, size_t M,
-			   const struct anvil_green_settings *gs, cplx *spec,
-			   double *qerr, anvil_progress_fn progress, void *ctx)
+ * s_n = c0 + i n pi/T'.  Each k-integral gets the share eps of the error
+ * budget that keeps the time-domain ramp within tol of its size; qerr
+ * returns the time-domain bound that the quadrature's estimates give. */
+static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0, double Tp,
+			   size_t M, const struct anvil_green_settings *gs, double tau_end,
+			   cplx *spec, double *qerr, anvil_progress_fn progress, void *ctx)
 {
 	double cr = rayleigh_speed(q->kp.kap2);
-	struct anvil_green_settings fine = *gs;
-	fine.panel *= 0.5;
-	*qerr = 0;
+	double scale = 3.0 / (16.0 * (1.0 - q->kp.kap2)) * tau_end; /* half-space ramp */
+	double amp = exp(c0 * tau_end) / Tp;  /* series -> time at tau_end */
+	double epsF = gs->tol * scale / (amp * (double)(M + 1));
+	double sum_err = 0;
+	int st = ANVIL_OK;
 	for (size_t n = 0; n <= M; n++) {
-		double omega = (double)n * M_PI / Tp;
+		double omega = (double)n * M_PI / Tp, e;
+		cplx In;
 		q->kp.s = c0 + I * omega;
 		q->kp.b = q->kp.s * q->kp.s;
-		cplx I0 = k_integral(q, c0, omega, hh, cr, gs);
-		if (n % 16 == 5) {
-			cplx I1 = k_integral(q, c0, omega, hh, cr, &fine);
-			*qerr = fmax(*qerr, cabs(I1 - I0) / cabs(q->kp.b));
-		}
-		spec[n] = I0 / q->kp.b;
+		double s2 = cabs(q->kp.b);
+		int qs = k_integral(q, h, omega, hh, cr, gs->ktail, epsF * s2, &In, &e);
+		if (qs && !st)
+			st = qs; /* keep going: the result says how far off it is */
+		spec[n] = In / q->kp.b;
+		sum_err += e / s2;
 		if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
 			return ANVIL_ENUM;
-		if (progress && n % 8 == 0 && progress(ctx, (double)n / (double)M, "layer response"))
+		if (progress && n % 4 == 0 && progress(ctx, (double)n / (double)M, "layer response"))
 			return ANVIL_ECANCEL;
 	}
-	return ANVIL_OK;
+	*qerr = amp * sum_err;
+	return st;
 }
 
 /* Durbin's Fourier series f(t) = (e^{c0 t}/T') [F_0/2 + Re sum F_n e^{i n pi t/T'}]
@@ -274,19 +393,24 @@ static int green_compute(struct anvil_green *g, const struct anvil_green_setting
 	g->n = (size_t)floor(g->tau_end / g->dtau) + 2;
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
 	cplx *spec = malloc((M + 1) * sizeof *spec);
+	struct heap *heap = malloc(sizeof *heap);
 	struct quad q = { .mode = g->mode, .kp = { .kap2 = g->kap2, .H = 0.5 * g->hh } };
-	q.gl = gsl_integration_glfixed_table_alloc((size_t)gs->gl_n);
-	int st = (!g->tau || !spec || !q.gl) ? ANVIL_ENOMEM : ANVIL_OK;
+	int st = (!g->tau || !spec || !heap) ? ANVIL_ENOMEM : ANVIL_OK;
 	double qerr = 0;
 	if (!st)
-		st = sample_spectrum(&q, g->hh, c0, Tp, M, gs, spec, &qerr, progress, ctx);
+		st = sample_spectrum(&q, heap, g->hh, c0, Tp, M, gs, g->tau_end, spec, &qerr,
+				     progress, ctx);
+	/* A k-integral that missed its share of the budget is not fatal: its
+	 * error estimate is in qerr, hence in abserr, for the caller to judge. */
+	if (st == ANVIL_ETOL)
+		st = ANVIL_OK;
 	if (!st) {
 		g->ramp = g->tau + g->n;
 		st = invert(spec, M, N, c0, Tp, g->ramp, g->n);
 	}
 	if (!st) {
 		double tail = cabs(spec[M]) * (double)M * 0.5;
-		g->abserr = exp(c0 * g->tau_end) / Tp * ((double)M * qerr + tail);
+		g->abserr = qerr + exp(c0 * g->tau_end) / Tp * tail;
 		for (size_t j = 0; j < g->n; j++) {
 			g->tau[j] = (double)j * g->dtau;
 			/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
@@ -300,7 +424,7 @@ static int green_compute(struct anvil_green *g, const struct anvil_green_setting
 			st = ANVIL_ENUM;
 	}
 	g->evals = q.evals;
-	gsl_integration_glfixed_table_free((gsl_integration_glfixed_table *)q.gl);
+	free(heap);
 	free(spec);
 	return st;
 }

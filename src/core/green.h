@@ -14,8 +14,9 @@
  *
  * Method: Fourier-series inversion of the Laplace transform on the Bromwich
  * line s = c0 + i n pi/T' (Durbin), summed by FFT; the k-integral at each s
- * by fixed Gauss-Legendre panels no wider than the distance of the Lamb-mode
- * poles from the real k axis (about c0 c2/c1) over the band that holds them.
+ * by globally adaptive Gauss-Kronrod quadrature, which resolves the
+ * Lamb-mode poles (at about c0/c_group from the real k axis) wherever they
+ * are, to a tolerance derived from the time-domain target.
  * The ramp response (load P = t) is produced: it is the smoothest of the
  * step/ramp/impulse family and the one the impact solver's product
  * integration needs.  See ../shared/design/solver.md. */
@@ -38,8 +39,7 @@ enum anvil_green_mode {
 struct anvil_green_settings {
 	double c0T;     /* c0 times the half period T' */
 	double omega_max; /* highest frequency summed (dimensionless) */
-	double panel;   /* k-panel width in units of c0 c2/c1 */
-	int gl_n;       /* Gauss-Legendre points per panel */
+	double tol;     /* ramp error target, relative to its half-space size */
 	double ktail;   /* integrand cut-off: exp(-2 Re(alpha1) H) below this */
 };
 

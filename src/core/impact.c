@@ -3,7 +3,6 @@
 #include <string.h>
 
 #include "impact.h"
-#include "zener.h"
 
 /* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
 struct pass {
@@ -293,11 +292,14 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		     double tau_avail, const struct anvil_impact_opts *o,
 		     struct anvil_result *r, struct anvil_err *err)
 {
-	struct anvil_zener_sol zs;
-	int st = anvil_zener_solve(p->lambda_star, 1e-8, &zs, err);
-	if (st)
-		return st;
-	double dt = o->dt > 0 ? o->dt : zs.tau_s * p->T / (double)(o->nsteps ? o->nsteps : 400);
+	double dt = o->dt > 0 ? o->dt : o->dt_auto;
+	if (!(dt > 0))
+		return anvil_err_set(err, ANVIL_EINVAL, "impact: no time step");
+	if (tau_avail * p->r0 / p->c2 / dt > (double)o->max_steps)
+		return anvil_err_set(err, ANVIL_ETOL,
+				     "the contact (over %.3g us) needs more than %zu steps of %.3g us",
+				     tau_avail * p->r0 / p->c2 * 1e6, o->max_steps, dt * 1e6);
+	int st;
 	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail };
 	struct pass a = {0}, b = {0};
 	st = run_pass(&c, o->scheme, dt, &a);

@@ -28,8 +28,9 @@ typedef int (*anvil_ramp_fn)(void *ctx, double tau, double *val);
 
 struct anvil_impact_opts {
 	enum anvil_scheme scheme;
-	double dt;        /* s; 0: t_s estimate / nsteps */
-	size_t nsteps;    /* steps over the contact when dt = 0 */
+	double dt;        /* s; 0: dt_auto */
+	double dt_auto;   /* s; the step when dt = 0 (the caller's choice) */
+	size_t max_steps; /* refuse (ANVIL_ETOL) a run needing more steps */
 	size_t nhist;     /* history samples wanted (0: none) */
 };
 

@@ -17,11 +17,11 @@
  * outputs differ from the reference level's by well under its target.
  *   cycles: the layer correction's bandwidth omega_max times the contact
  *           time (dimensionless), so fast impacts get more frequencies;
- *   nsteps: time steps over the contact (the dt/2 pass doubles them);
+ *   nsteps: time steps per Hertz contact time (the dt/2 pass doubles them);
  *   hs_tol: tolerance of the exact half-space response. */
 static const struct level {
 	double cycles, omega_min, hs_tol;
-	size_t nsteps;
+	size_t nsteps; /* per Hertz contact time */
 } levels[ANVIL_ACC_COUNT] = {
 	{ 60.0, 1.5, 1e-6, 100 },    /* draft */
 	{ 120.0, 2.0, 1e-8, 400 },   /* normal */
@@ -30,6 +30,11 @@ static const struct level {
 };
 
 #define CACHE_MAX 24
+/* Beyond these a run is refused with ANVIL_ETOL and a message, instead of
+ * grinding for minutes: very thin layers (lambda* >> 1) have contacts
+ * thousands of Hertz times long, where the thin-plate model applies. */
+#define MAX_STEPS 40000
+#define MAX_TERMS 20000
 
 /* A cached response: the exact half-space (per nu and tolerance) or a layer
  * correction (per h/r0, nu, level), each made once and shared by every
@@ -184,8 +189,11 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 	double tgt = anvil_accuracy_target(acc);
 	double e_p = r->Pmax_err / r->Pmax, e_t = r->ts_err / r->ts;
 	double e_r = r->Rf_err / fmax(fabs(r->Rf), 0.1);
-	if (!isfinite(r->ts) || !isfinite(r->Pmax) || !isfinite(r->Rf))
-		return anvil_err_set(err, ANVIL_ENUM, "%s: non-finite result", anvil_model_name(r->model));
+	if (!isfinite(r->ts) || !isfinite(r->Pmax) || !isfinite(r->Rf) || !(r->ts > 0) ||
+	    !(r->Pmax > 0) || r->Rf > 1.0 + fmax(10.0 * r->Rf_err, 1e-6))
+		return anvil_err_set(err, ANVIL_ENUM,
+				     "%s: the solution is unphysical (t_s = %.3g us, P_max = %.3g N, R_f = %.3g): the time stepping is unstable for this scene",
+				     anvil_model_name(r->model), r->ts * 1e6, r->Pmax, r->Rf);
 	if (e_p > tgt || e_t > tgt || e_r > tgt)
 		return anvil_err_set(err, ANVIL_ETOL,
 				     "%s: accuracy '%s' (%.0e) not reached: estimated errors P_max %.1e, t_s %.1e, R_f %.1e",
@@ -194,7 +202,7 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 }
 
 struct waves {
-	double hh, kappa, tau_s, omega;
+	double hh, kappa, tau_s, omega; /* tau_s: contact time estimate */
 	const struct level *lev;
 	struct response rs;
 	struct anvil_impact_opts io;
@@ -209,7 +217,21 @@ static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 	for (int attempt = 0; attempt < 6 && st == ANVIL_ETOL; attempt++) {
 		double tau_end = 1.4 * wv->tau_s * (double)(1 << attempt) + 2.0;
 		int need = isfinite(wv->hh) && 2.0 * wv->hh * wv->kappa < tau_end;
+		double terms = omega * 2.0 * tau_end / M_PI;
+		double dt = wv->io.dt > 0 ? wv->io.dt : wv->io.dt_auto;
+		double steps = tau_end * p->r0 / p->c2 / dt;
 		wv->rs.corr = NULL;
+		if (steps > MAX_STEPS)
+			return anvil_err_set(err, ANVIL_ETOL,
+					     "%s: the contact lasts over %.3g us, more than %d steps of %.3g us; %s",
+					     anvil_model_name(r->model), tau_end * p->r0 / p->c2 * 1e6,
+					     MAX_STEPS, dt * 1e6,
+					     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
+					     "set a larger solver.dt or a coarser solver.accuracy");
+		if (need && terms > MAX_TERMS)
+			return anvil_err_set(err, ANVIL_ETOL,
+					     "layer: the contact lasts over %.3g us (lambda* = %.3g), too long for the transform solver (%.0f terms); the thin-plate model 'zener' applies here",
+					     tau_end * p->r0 / p->c2 * 1e6, p->lambda_star, terms);
 		if (need) {
 			wv->rs.corr = get_corr(s, wv->hh, p->nu, sc->accuracy, omega, tau_end, exact, err);
 			if (!wv->rs.corr)
@@ -236,21 +258,39 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 			 2.0 * p->h / p->c1 * 1e6, r->ts * 1e6);
 }
 
+/* Contact time estimate (s): Zener's plate model for a layer, Hertz for a
+ * half-space.  When Zener's ODE cannot finish (lambda* >> 1, the impactor
+ * then slows like exp(-t/(m1 alpha*)) = exp(-t/(lambda* T))), a few of
+ * those decay times. */
+static double contact_estimate(const struct anvil_params *p, int layer, double t_hertz)
+{
+	struct anvil_zener_sol zs;
+	double lam = layer ? p->lambda_star : 0.0;
+	if (anvil_zener_solve(lam, 1e-8, &zs, NULL) == ANVIL_OK && isfinite(zs.tau_s))
+		return fmax(zs.tau_s * p->T, t_hertz);
+	return fmax(3.0 * lam * p->T, t_hertz);
+}
+
 static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
 		     const struct anvil_params *p, size_t nhist, struct anvil_result *r,
 		     struct anvil_err *err)
 {
 	struct waves wv = { .lev = &levels[sc->accuracy], .kappa = p->c2 / p->c1 };
-	struct anvil_zener_sol zs;
-	int st = anvil_zener_solve(r->model == ANVIL_MODEL_LAYER ? p->lambda_star : 0.0,
-				   1e-8, &zs, err);
-	if (st)
-		return st;
-	wv.hh = r->model == ANVIL_MODEL_LAYER ? p->h / p->r0 : INFINITY;
-	wv.tau_s = zs.tau_s * p->T * p->c2 / p->r0;
-	wv.omega = fmax(wv.lev->omega_min, wv.lev->cycles / wv.tau_s);
+	int layer = r->model == ANVIL_MODEL_LAYER && isfinite(p->h);
+	double t_hertz = anvil_hertz_tau_s() * p->T;
+	double ts = contact_estimate(p, layer, t_hertz);
+	double tchar = fmin(ts, t_hertz); /* sets the bandwidth and the step */
+	int st;
+	wv.hh = layer ? p->h / p->r0 : INFINITY;
+	wv.tau_s = ts * p->c2 / p->r0;
+	wv.omega = fmax(wv.lev->omega_min, wv.lev->cycles / (tchar * p->c2 / p->r0));
 	wv.io = (struct anvil_impact_opts){ .scheme = sc->scheme, .dt = sc->dt,
-					    .nsteps = wv.lev->nsteps, .nhist = nhist };
+					    .dt_auto = tchar / (double)wv.lev->nsteps,
+					    .max_steps = MAX_STEPS, .nhist = nhist };
+	if (sc->dt > 0.25 * ts)
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
+				     sc->dt * 1e6, ts * 1e6);
 	wv.rs.hs = get_halfspace(s, p->nu, wv.lev->hs_tol, err);
 	if (!wv.rs.hs)
 		return err ? err->status : ANVIL_ENUM;
@@ -266,6 +306,10 @@ static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
 		if (st)
 			return st;
 		add_green_error(r, &coarse);
+	}
+	if (!layer) { /* Zener's plate parameter has no meaning for a half-space */
+		r->lambda_star = 0.0;
+		r->Rf_star = 1.0;
 	}
 	waves_note(r, p, &wv);
 	return sc->scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, sc->accuracy, err);

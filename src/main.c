@@ -1,0 +1,112 @@
+/* main.c: picks the face of anvil from the first argument. */
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "config.h"
+#include "ui/commands.h"
+#include "ui/common.h"
+
+struct command {
+	const char *name;
+	int (*fn)(int argc, char **argv);
+	const char *summary;
+};
+
+static const struct command commands[] = {
+	{"run", anvil_cmd_run, "compute one impact with every model of a scene"},
+	{"table", anvil_cmd_table, "the paper's Tables 2 and 3, ours beside the printed values"},
+	{"materials", anvil_cmd_materials, "list the built-in materials"},
+	{"accuracy", anvil_cmd_accuracy, "run a model at every accuracy level and check the targets"},
+	{"plot", anvil_cmd_plot, "draw a chart as PNG with gnuplot"},
+	{"tui", anvil_cmd_tui, "the interactive terminal interface"},
+};
+#define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
+
+static void usage(FILE *f)
+{
+	fputs("usage: anvil COMMAND [ARGS...]\n"
+	      "       anvil --help | --version\n"
+	      "Impact of a rod or ball-ended impactor on an elastic layer.\n\n"
+	      "commands:\n",
+	      f);
+	for (int i = 0; i < NCOMMANDS; i++)
+		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
+	fputs("\nWithout a command: the TUI on a terminal, else 'anvil run'.\n"
+	      "'anvil COMMAND --help' describes a command; man anvil tells all.\n",
+	      f);
+}
+
+/* Edit distance, for "did you mean": commands are short, so the O(n m)
+ * table fits on the stack. */
+static int distance(const char *a, const char *b)
+{
+	int row[32], n = (int)strlen(b);
+	if (n > 30 || strlen(a) > 30)
+		return 99;
+	for (int j = 0; j <= n; j++)
+		row[j] = j;
+	for (int i = 1; a[i - 1]; i++) {
+		int diag = row[0];
+		row[0] = i;
+		for (int j = 1; j <= n; j++) {
+			int up = row[j], best = diag + (a[i - 1] != b[j - 1]);
+			if (up + 1 < best)
+				best = up + 1;
+			if (row[j - 1] + 1 < best)
+				best = row[j - 1] + 1;
+			diag = up;
+			row[j] = best;
+		}
+	}
+	return row[n];
+}
+
+static int unknown(const char *name)
+{
+	const char *best = NULL;
+	int bestd = 3; /* more than two edits away is no suggestion */
+	for (int i = 0; i < NCOMMANDS; i++) {
+		int d = distance(name, commands[i].name);
+		/* An abbreviation ("mat") is as good as one typo. */
+		if (name[0] && strncmp(name, commands[i].name, strlen(name)) == 0)
+			d = 1;
+		if (d < bestd) {
+			bestd = d;
+			best = commands[i].name;
+		}
+	}
+	if (best)
+		cli_error("unknown command '%s'; did you mean '%s'? (see anvil --help)", name, best);
+	else
+		cli_error("unknown command '%s' (see anvil --help)", name);
+	return EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+	static char *run_argv[] = {"run", NULL}, *tui_argv[] = {"tui", NULL};
+	cli_init();
+	if (argc < 2) {
+		if (isatty(STDIN_FILENO) && isatty(STDOUT_FILENO))
+			return anvil_cmd_tui(1, tui_argv);
+		return anvil_cmd_run(1, run_argv);
+	}
+	const char *cmd = argv[1];
+	if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+		usage(stdout);
+		return EXIT_OK;
+	}
+	if (!strcmp(cmd, "--version")) {
+		printf("anvil %s\n", PACKAGE_VERSION);
+		return EXIT_OK;
+	}
+	for (int i = 0; i < NCOMMANDS; i++)
+		if (!strcmp(cmd, commands[i].name))
+			return commands[i].fn(argc - 1, argv + 1);
+	if (cmd[0] == '-') {
+		cli_error("unknown option '%s' (see anvil --help)", cmd);
+		return EXIT_USAGE;
+	}
+	return unknown(cmd);
+}

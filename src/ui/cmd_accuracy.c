@@ -1,0 +1,221 @@
+/* cmd_accuracy.c: `anvil accuracy`, one model at every accuracy level, to
+ * show what each level costs and whether it keeps its promised error. */
+#include <getopt.h>
+#include <math.h>
+#include <string.h>
+
+#include "ui/commands.h"
+#include "ui/common.h"
+#include "ui/output.h"
+
+struct acc_opts {
+	const char *scene, *model;
+	int format;
+	struct cli_sets sets;
+};
+
+/* One level's run: the values and their estimated relative errors. */
+struct acc_level {
+	struct anvil_result r;
+	double wall;     /* seconds, solver made fresh for the level */
+	double rel[3];   /* P_max, t_s, R_f */
+	int status;      /* of anvil_solver_run */
+};
+
+static void acc_usage(FILE *f)
+{
+	fputs("usage: anvil accuracy [SCENE] [-s KEY=VALUE]... [--format table|tsv] [-m MODEL]\n"
+	      "Run one model (default: layer; halfspace when h = inf) at every accuracy\n"
+	      "level and compare each with the next finer one (the reference level with\n"
+	      "its own error estimate).  Exits 1 if a level misses its target.\n",
+	      f);
+}
+
+static const struct option acc_longopts[] = {
+	{"set", required_argument, NULL, 's'},
+	{"format", required_argument, NULL, 'f'},
+	{"model", required_argument, NULL, 'm'},
+	{"help", no_argument, NULL, 'h'},
+	{NULL, 0, NULL, 0}};
+
+/* -1 to go on, else the exit code. */
+static int acc_parse(int argc, char **argv, struct acc_opts *o)
+{
+	int c;
+	opterr = 0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, ":s:f:m:h", acc_longopts, NULL)) != -1) {
+		switch (c) {
+		case 's':
+			if (cli_sets_add(&o->sets, optarg))
+				return EXIT_FAIL;
+			break;
+		case 'f':
+			o->format = out_format_parse("accuracy", optarg,
+						     OUT_ALLOW(OUT_TABLE) | OUT_ALLOW(OUT_TSV));
+			if (o->format < 0)
+				return EXIT_USAGE;
+			break;
+		case 'm':
+			o->model = optarg;
+			break;
+		case 'h':
+			acc_usage(stdout);
+			return EXIT_OK;
+		default:
+			return out_getopt_error("accuracy", c, argv);
+		}
+	}
+	if (optind < argc)
+		o->scene = argv[optind++];
+	if (optind < argc)
+		return out_usage("accuracy", "unexpected argument '%s'", argv[optind]);
+	return -1;
+}
+
+static int acc_run_level(struct anvil_scene sc, enum anvil_model m,
+			 enum anvil_accuracy a, struct acc_level *lv)
+{
+	struct anvil_err err = {0};
+	struct cli_progress prog = {0};
+	/* A fresh solver per level: the time must include making the layer
+	 * response, not a cache hit from the level before. */
+	struct anvil_solver *s = anvil_solver_alloc();
+	if (!s) {
+		anvil_result_init(&lv->r, m);
+		cli_error("out of memory");
+		return lv->status = ANVIL_ENOMEM;
+	}
+	anvil_solver_set_progress(s, cli_progress_cb, &prog);
+	sc.accuracy = a;
+	double t0 = cli_now();
+	lv->status = anvil_solver_run(s, &sc, m, 0, &lv->r, &err);
+	lv->wall = cli_now() - t0;
+	cli_progress_done(&prog);
+	anvil_solver_free(s);
+	if (lv->status && lv->status != ANVIL_ETOL)
+		cli_error("%s at accuracy %s: %s", anvil_model_name(m), anvil_accuracy_name(a),
+			  err.msg[0] ? err.msg : anvil_strerror(lv->status));
+	return lv->status == ANVIL_ETOL ? ANVIL_OK : lv->status;
+}
+
+static double rel_diff(double x, double ref)
+{
+	return fabs(x - ref) / fabs(ref);
+}
+
+/* Against the next finer level; the finest against its own estimate. */
+static void acc_estimate(struct acc_level *lv, int l)
+{
+	const struct anvil_result *r = &lv[l].r;
+	if (l + 1 < ANVIL_ACC_COUNT) {
+		const struct anvil_result *f = &lv[l + 1].r;
+		lv[l].rel[0] = rel_diff(r->Pmax, f->Pmax);
+		lv[l].rel[1] = rel_diff(r->ts, f->ts);
+		lv[l].rel[2] = rel_diff(r->Rf, f->Rf);
+	} else {
+		lv[l].rel[0] = fabs(r->Pmax_err / r->Pmax);
+		lv[l].rel[1] = fabs(r->ts_err / r->ts);
+		lv[l].rel[2] = fabs(r->Rf_err / r->Rf);
+	}
+}
+
+/* "ok", "MISSED", or "n/a" when the model gives no estimate to judge. */
+static const char *acc_verdict(const struct acc_level *lv, double target)
+{
+	int known = 0, missed = lv->status == ANVIL_ETOL;
+	for (int i = 0; i < 3; i++) {
+		if (isnan(lv->rel[i]))
+			continue;
+		known = 1;
+		missed |= lv->rel[i] > target;
+	}
+	return missed ? "MISSED" : known ? "ok" : "n/a";
+}
+
+static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format fmt)
+{
+	static const char *const head[] = {"level", "target", "seconds", "Pmax_kN", "ts_us",
+					   "Rf", "Pmax_rel_err", "ts_rel_err", "Rf_rel_err",
+					   "status"};
+	static const char *const label[] = {"level", "target", "time/s", "P_max/kN", "t_s/us",
+					    "R_f", "err P_max", "err t_s", "err R_f", "status"};
+	const int ncol = (int)(sizeof head / sizeof head[0]), t = fmt == OUT_TABLE;
+	struct out_grid *g = out_grid_alloc(ncol);
+	int missed = 0;
+	char b[40];
+	out_grid_left(g, ncol - 1);
+	for (int i = 0; i < ncol; i++)
+		out_grid_cell(g, "%s", t ? label[i] : head[i]);
+	for (int l = 0; l < ANVIL_ACC_COUNT; l++) {
+		double target = anvil_accuracy_target((enum anvil_accuracy)l);
+		const char *v = acc_verdict(&lv[l], target);
+		missed |= !strcmp(v, "MISSED");
+		out_grid_cell(g, "%s", anvil_accuracy_name((enum anvil_accuracy)l));
+		out_grid_cell(g, "%s", out_num(b, target, t ? "%.0e" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].wall, t ? "%.3g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.Pmax * 1e-3, t ? "%.7g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.ts * 1e6, t ? "%.7g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.Rf, t ? "%.7g" : NULL));
+		for (int i = 0; i < 3; i++)
+			out_grid_cell(g, "%s", out_num(b, lv[l].rel[i], t ? "%.1e" : NULL));
+		out_grid_cell(g, "%s", v);
+	}
+	int st = out_grid_print(g, fmt, stdout);
+	out_grid_free(g);
+	if (!st && t)
+		printf("\nmodel %s; errors relative, each level against the next finer one,\n"
+		       "the reference level by its own estimate\n",
+		       anvil_model_name(m));
+	if (st || fflush(stdout)) {
+		cli_error("accuracy: %s", anvil_strerror(st ? st : ANVIL_EIO));
+		return EXIT_FAIL;
+	}
+	return missed ? EXIT_FAIL : EXIT_OK;
+}
+
+static int acc_model(const struct acc_opts *o, const struct anvil_scene *sc)
+{
+	if (!o->model)
+		return isinf(anvil_scene_h(sc)) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
+	int m = anvil_model_parse(o->model);
+	if (m < 0)
+		out_usage("accuracy", "-m: unknown model '%s'; one of: hertz, zener, layer, halfspace",
+			  o->model);
+	return m;
+}
+
+static int acc_main(const struct acc_opts *o)
+{
+	struct anvil_scene sc;
+	struct acc_level lv[ANVIL_ACC_COUNT];
+	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n), code, n = 0;
+	if (st)
+		return cli_exit_code(st);
+	int m = acc_model(o, &sc);
+	if (m < 0)
+		return EXIT_USAGE;
+	memset(lv, 0, sizeof lv);
+	for (st = ANVIL_OK; !st && n < ANVIL_ACC_COUNT; n++)
+		st = acc_run_level(sc, (enum anvil_model)m, (enum anvil_accuracy)n, &lv[n]);
+	if (!st) {
+		for (int l = 0; l < ANVIL_ACC_COUNT; l++)
+			acc_estimate(lv, l);
+		code = acc_print(lv, (enum anvil_model)m, (enum out_format)o->format);
+	} else {
+		code = EXIT_FAIL;
+	}
+	for (int l = 0; l < n; l++)
+		anvil_result_free(&lv[l].r);
+	return code;
+}
+
+int anvil_cmd_accuracy(int argc, char **argv)
+{
+	struct acc_opts o = {0};
+	int code = acc_parse(argc, argv, &o);
+	if (code < 0)
+		code = acc_main(&o);
+	cli_sets_free(&o.sets);
+	return code;
+}

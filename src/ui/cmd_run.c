@@ -1,0 +1,296 @@
+/* cmd_run.c: `anvil run`, one impact computed with every model the scene
+ * asks for, printed as a table, TSV, CSV or JSON. */
+#include <errno.h>
+#include <getopt.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ui/commands.h"
+#include "ui/common.h"
+#include "ui/output.h"
+#include "ui/plot.h"
+
+/* Samples per model in --history and the charts. */
+#define RUN_NHIST 400
+
+struct run_opts {
+	const char *scene, *out, *history, *png;
+	char *models;   /* "solver.models=..." built from -m, owned */
+	int format, verbose, quiet;
+	struct cli_sets sets;
+};
+
+static void run_usage(FILE *f)
+{
+	fputs("usage: anvil run [SCENE] [-s KEY=VALUE]... [--format table|tsv|csv|json]\n"
+	      "                 [-o FILE] [--history FILE] [--png DIR] [-m MODELS] [-v] [-q]\n"
+	      "Compute one impact with every model of the scene (default: the paper's\n"
+	      "copper rod on a 1 r0 steel layer at 10 m/s).\n"
+	      "  -s, --set KEY=VALUE  change a scene key, e.g. -s layer.thickness=5r0\n"
+	      "  -f, --format FORMAT  table (default), tsv, csv or json\n"
+	      "  -o, --output FILE    write the results to FILE (default: standard output)\n"
+	      "      --history FILE   write the time histories of every model as TSV\n"
+	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
+	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
+	      "  -v, --verbose        print the resolved scene and timings on stderr\n"
+	      "  -q, --quiet          no progress or informational messages\n",
+	      f);
+}
+
+static const struct option run_longopts[] = {
+	{"set", required_argument, NULL, 's'},
+	{"format", required_argument, NULL, 'f'},
+	{"output", required_argument, NULL, 'o'},
+	{"history", required_argument, NULL, 'H'},
+	{"png", required_argument, NULL, 'P'},
+	{"models", required_argument, NULL, 'm'},
+	{"verbose", no_argument, NULL, 'v'},
+	{"quiet", no_argument, NULL, 'q'},
+	{"help", no_argument, NULL, 'h'},
+	{NULL, 0, NULL, 0}};
+
+static int run_models_set(struct run_opts *o, const char *list)
+{
+	size_t n = strlen(list) + sizeof "solver.models=";
+	free(o->models);
+	o->models = malloc(n);
+	if (!o->models)
+		return ANVIL_ENOMEM;
+	snprintf(o->models, n, "solver.models=%s", list);
+	return ANVIL_OK;
+}
+
+static int run_option(struct run_opts *o, int c, char **argv)
+{
+	switch (c) {
+	case 's':
+		return cli_sets_add(&o->sets, optarg) ? EXIT_FAIL : -1;
+	case 'f':
+		o->format = out_format_parse("run", optarg, OUT_ALLOW(OUT_TABLE) |
+				OUT_ALLOW(OUT_TSV) | OUT_ALLOW(OUT_CSV) | OUT_ALLOW(OUT_JSON));
+		return o->format < 0 ? EXIT_USAGE : -1;
+	case 'o':
+		o->out = optarg;
+		return -1;
+	case 'H':
+		o->history = optarg;
+		return -1;
+	case 'P':
+		o->png = optarg;
+		return -1;
+	case 'm':
+		return run_models_set(o, optarg) ? EXIT_FAIL : -1;
+	case 'v':
+		o->verbose = 1;
+		return -1;
+	case 'q':
+		o->quiet = 1;
+		return -1;
+	case 'h':
+		run_usage(stdout);
+		return EXIT_OK;
+	}
+	return out_getopt_error("run", c, argv);
+}
+
+/* -1 to go on, else the exit code. */
+static int run_parse(int argc, char **argv, struct run_opts *o)
+{
+	int c, code;
+	opterr = 0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, ":s:f:o:m:vqh", run_longopts, NULL)) != -1)
+		if ((code = run_option(o, c, argv)) >= 0)
+			return code;
+	if (optind < argc)
+		o->scene = argv[optind++];
+	if (optind < argc)
+		return out_usage("run", "unexpected argument '%s'", argv[optind]);
+	/* -m comes last so that it wins over any -s solver.models. */
+	if (o->models && cli_sets_add(&o->sets, o->models))
+		return EXIT_FAIL;
+	return -1;
+}
+
+/* Ctrl-C while the models run cancels them through the progress callback,
+ * so the temporary output files are removed on the way out.  The handler
+ * is one-shot: a second Ctrl-C kills as usual. */
+static volatile sig_atomic_t run_interrupted;
+
+static void run_on_signal(int sig)
+{
+	(void)sig;
+	run_interrupted = 1;
+}
+
+static void run_catch_signals(int on)
+{
+	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sigemptyset(&sa.sa_mask);
+	sa.sa_handler = on ? run_on_signal : SIG_DFL;
+	sa.sa_flags = SA_RESETHAND;
+	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
+		sigaction(sigs[i], &sa, NULL);
+}
+
+struct run_progress {
+	struct cli_progress shown;
+	int quiet;
+};
+
+static int run_progress_cb(void *ctx, double fraction, const char *what)
+{
+	struct run_progress *p = ctx;
+	if (run_interrupted)
+		return 1;
+	return p->quiet ? 0 : cli_progress_cb(&p->shown, fraction, what);
+}
+
+/* Run every model of the scene into res (n of them, each to be freed).
+ * Returns the exit code so far; *tol is set when a model missed its
+ * accuracy but still gave values. */
+static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
+		      struct anvil_result *res, int *n, int *tol)
+{
+	struct anvil_solver *s = anvil_solver_alloc();
+	struct run_progress prog = {.quiet = o->quiet};
+	size_t nhist = o->history || o->png ? RUN_NHIST : 0;
+	int code = EXIT_OK;
+	if (!s) {
+		cli_error("out of memory");
+		return EXIT_FAIL;
+	}
+	anvil_solver_set_progress(s, run_progress_cb, &prog);
+	run_catch_signals(1);
+	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
+		struct anvil_err err = {0};
+		if (!(sc->models & (1u << m)))
+			continue;
+		memset(&prog.shown, 0, sizeof prog.shown);
+		int st = anvil_solver_run(s, sc, (enum anvil_model)m, nhist, &res[*n], &err);
+		cli_progress_done(&prog.shown);
+		(*n)++;
+		if (run_interrupted) {
+			cli_error("interrupted");
+			code = EXIT_FAIL;
+			break;
+		}
+		if (st == ANVIL_ETOL) {
+			/* The values are there, with their error estimates: show them,
+			 * but do not let a script take them for converged ones. */
+			cli_error("warning: %s: %s", anvil_model_name((enum anvil_model)m),
+				  err.msg[0] ? err.msg : anvil_strerror(st));
+			*tol = 1;
+		} else if (st) {
+			cli_error("%s: %s", anvil_model_name((enum anvil_model)m),
+				  err.msg[0] ? err.msg : anvil_strerror(st));
+			code = EXIT_FAIL;
+		} else if (o->verbose) {
+			fprintf(stderr, "anvil: %s: %.3g s\n",
+				anvil_model_name((enum anvil_model)m), res[*n - 1].seconds);
+		}
+	}
+	run_catch_signals(0);
+	anvil_solver_free(s);
+	return code;
+}
+
+/* Fill an open output and push it to the disk without committing it, so
+ * that a full disk shows up before any file is put in place. */
+static int run_fill(struct cli_out *o, const char *path, int st)
+{
+	if (!st && (fflush(o->f) != 0 || ferror(o->f))) {
+		cli_error("%s: write failed: %s", path, strerror(errno));
+		st = ANVIL_EIO;
+	}
+	return st;
+}
+
+/* Write both outputs, then put them in place: files are filled and
+ * flushed first and standard output is written last, so a failure leaves
+ * no file behind and prints no half result. */
+static int run_write(const struct anvil_scene *sc, const struct run_opts *o,
+		     const struct anvil_result *res, int n, struct cli_out *out,
+		     struct cli_out *hist)
+{
+	enum out_format fmt = (enum out_format)o->format;
+	int to_file = out->f != stdout, st = ANVIL_OK;
+	if (o->history)
+		st = run_fill(hist, o->history, out_history(hist->f, res, n));
+	if (!st && to_file)
+		st = run_fill(out, o->out, out_results(out->f, fmt, sc, res, n));
+	if (!st && o->history)
+		st = cli_out_commit(hist);
+	if (!st && !to_file)
+		st = out_results(out->f, fmt, sc, res, n);
+	if (!st)
+		st = cli_out_commit(out);
+	if (st) {
+		cli_out_abort(hist);
+		cli_out_abort(out);
+		if (st == ANVIL_ENOMEM)
+			cli_error("out of memory");
+	}
+	return st ? EXIT_FAIL : EXIT_OK;
+}
+
+static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
+		   const struct anvil_result *res, int n)
+{
+	char paths[4096] = "";
+	if (plot_run_charts(o->png, sc, res, n, paths, sizeof paths))
+		return EXIT_FAIL;
+	if (!o->quiet && paths[0])
+		fprintf(stderr, "%s%s", paths, paths[strlen(paths) - 1] == '\n' ? "" : "\n");
+	return EXIT_OK;
+}
+
+static int run_scene(const struct run_opts *o)
+{
+	struct anvil_scene sc;
+	struct anvil_result res[ANVIL_MODEL_COUNT];
+	struct cli_out out = {0}, hist = {0};
+	int n = 0, tol = 0, code;
+	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);
+	if (st)
+		return cli_exit_code(st);
+	if (!(sc.models & ANVIL_MODELS_ALL)) {
+		cli_error("no model to run (set solver.models or use -m)");
+		return EXIT_USAGE;
+	}
+	if (o->verbose && anvil_scene_write(&sc, stderr))
+		return EXIT_FAIL;
+	/* Open the outputs first: a bad path fails before minutes of work. */
+	if (cli_out_open(&out, o->out))
+		return EXIT_FAIL;
+	if (o->history && cli_out_open(&hist, o->history)) {
+		cli_out_abort(&out);
+		return EXIT_FAIL;
+	}
+	code = run_models(&sc, o, res, &n, &tol);
+	if (code) {
+		cli_out_abort(&hist);
+		cli_out_abort(&out);
+	} else {
+		code = run_write(&sc, o, res, n, &out, &hist);
+	}
+	if (!code && o->png)
+		code = run_png(&sc, o, res, n);
+	for (int i = 0; i < n; i++)
+		anvil_result_free(&res[i]);
+	return code ? code : tol ? EXIT_FAIL : EXIT_OK;
+}
+
+int anvil_cmd_run(int argc, char **argv)
+{
+	struct run_opts o = {0};
+	int code = run_parse(argc, argv, &o);
+	if (code < 0)
+		code = run_scene(&o);
+	cli_sets_free(&o.sets);
+	free(o.models);
+	return code;
+}

@@ -1,0 +1,490 @@
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "output.h"
+#include "ui/common.h"
+
+static const char *const format_names[] = {"table", "tsv", "csv", "json"};
+#define NFORMATS ((int)(sizeof format_names / sizeof format_names[0]))
+
+int out_format_parse(const char *cmd, const char *name, unsigned allowed)
+{
+	char list[64] = "";
+	for (int i = 0; i < NFORMATS; i++) {
+		if (!(allowed & OUT_ALLOW(i)))
+			continue;
+		if (strcmp(name, format_names[i]) == 0)
+			return i;
+		if (list[0])
+			strcat(list, ", ");
+		strcat(list, format_names[i]);
+	}
+	out_usage(cmd, "--format: unknown format '%s'; one of: %s", name, list);
+	return -1;
+}
+
+int out_usage(const char *cmd, const char *fmt, ...)
+{
+	va_list ap;
+	fprintf(stderr, "anvil %s: ", cmd);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, " (see 'anvil %s --help')\n", cmd);
+	return EXIT_USAGE;
+}
+
+int out_getopt_error(const char *cmd, int c, char **argv)
+{
+	const char *arg = argv[optind - 1];
+	if (c == ':')
+		return out_usage(cmd, "option '%s' needs a value", arg);
+	if (optopt && strncmp(arg, "--", 2) != 0)
+		return out_usage(cmd, "unknown option '-%c'", optopt);
+	return out_usage(cmd, "unknown option '%s'", arg);
+}
+
+char *out_num(char *buf, double x, const char *fmt)
+{
+	if (isnan(x))
+		strcpy(buf, fmt ? "-" : "nan");
+	else if (isinf(x))
+		strcpy(buf, x > 0 ? "inf" : "-inf");
+	else
+		snprintf(buf, 40, fmt ? fmt : "%.10g", x);
+	return buf;
+}
+
+/* ---- the grid ---- */
+
+struct out_grid {
+	int ncol;
+	size_t n, cap;    /* cells stored */
+	char **cell;
+	unsigned char *left; /* per column */
+	int nomem;
+};
+
+struct out_grid *out_grid_alloc(int ncol)
+{
+	struct out_grid *g = calloc(1, sizeof *g);
+	if (!g)
+		return NULL;
+	g->ncol = ncol;
+	g->left = calloc((size_t)ncol, 1);
+	if (!g->left) {
+		free(g);
+		return NULL;
+	}
+	g->left[0] = 1; /* the first column names the row */
+	return g;
+}
+
+void out_grid_free(struct out_grid *g)
+{
+	if (!g)
+		return;
+	for (size_t i = 0; i < g->n; i++)
+		free(g->cell[i]);
+	free(g->cell);
+	free(g->left);
+	free(g);
+}
+
+void out_grid_left(struct out_grid *g, int col)
+{
+	if (g && col >= 0 && col < g->ncol)
+		g->left[col] = 1;
+}
+
+void out_grid_cell(struct out_grid *g, const char *fmt, ...)
+{
+	char *s = NULL;
+	va_list ap;
+	if (!g)
+		return;
+	if (g->n == g->cap) {
+		size_t cap = g->cap ? 2 * g->cap : 64;
+		char **c = realloc(g->cell, cap * sizeof *c);
+		if (!c) {
+			g->nomem = 1;
+			return;
+		}
+		g->cell = c;
+		g->cap = cap;
+	}
+	va_start(ap, fmt);
+	int len = vsnprintf(NULL, 0, fmt, ap);
+	va_end(ap);
+	if (len >= 0 && (s = malloc((size_t)len + 1))) {
+		va_start(ap, fmt);
+		vsnprintf(s, (size_t)len + 1, fmt, ap);
+		va_end(ap);
+	}
+	/* Keep the grid rectangular even without the text. */
+	if (!s)
+		g->nomem = 1;
+	g->cell[g->n++] = s;
+}
+
+/* Display width of UTF-8 text: continuation bytes take no column ("±"). */
+static int text_width(const char *s)
+{
+	int w = 0;
+	for (; s && *s; s++)
+		w += ((unsigned char)*s & 0xC0) != 0x80;
+	return w;
+}
+
+static void put_csv(const char *s, FILE *f)
+{
+	if (!strpbrk(s, ",\"\n\r")) {
+		fputs(s, f);
+		return;
+	}
+	fputc('"', f);
+	for (; *s; s++) {
+		if (*s == '"')
+			fputc('"', f);
+		fputc(*s, f);
+	}
+	fputc('"', f);
+}
+
+/* TSV cannot quote: a tab or newline inside a cell becomes a space. */
+static void put_tsv(const char *s, FILE *f)
+{
+	for (; *s; s++)
+		fputc(*s == '\t' || *s == '\n' || *s == '\r' ? ' ' : *s, f);
+}
+
+static void put_padded(const char *s, int width, int left, int last, FILE *f)
+{
+	int pad = width - text_width(s);
+	if (!left)
+		for (int i = 0; i < pad; i++)
+			fputc(' ', f);
+	fputs(s, f);
+	if (left && !last)
+		for (int i = 0; i < pad; i++)
+			fputc(' ', f);
+}
+
+static void print_table(const struct out_grid *g, FILE *f)
+{
+	int *width = calloc((size_t)g->ncol, sizeof *width);
+	if (!width)
+		return;
+	for (size_t i = 0; i < g->n; i++) {
+		int c = (int)(i % (size_t)g->ncol), w = text_width(g->cell[i]);
+		if (w > width[c])
+			width[c] = w;
+	}
+	for (size_t i = 0; i < g->n; i++) {
+		int c = (int)(i % (size_t)g->ncol), last = c == g->ncol - 1;
+		put_padded(g->cell[i], width[c], g->left[c], last, f);
+		fputs(last ? "\n" : "  ", f);
+	}
+	free(width);
+}
+
+int out_grid_print(const struct out_grid *g, enum out_format fmt, FILE *f)
+{
+	if (!g || g->nomem || g->n % (size_t)g->ncol)
+		return ANVIL_ENOMEM;
+	if (fmt == OUT_TABLE) {
+		print_table(g, f);
+	} else {
+		for (size_t i = 0; i < g->n; i++) {
+			int last = (int)(i % (size_t)g->ncol) == g->ncol - 1;
+			if (fmt == OUT_CSV)
+				put_csv(g->cell[i], f);
+			else
+				put_tsv(g->cell[i], f);
+			fputs(last ? "\n" : fmt == OUT_CSV ? "," : "\t", f);
+		}
+	}
+	return ferror(f) ? ANVIL_EIO : ANVIL_OK;
+}
+
+/* ---- results of `anvil run` ---- */
+
+double out_h_r0(const struct anvil_scene *sc, const struct anvil_result *r)
+{
+	if (r && r->model == ANVIL_MODEL_HALFSPACE)
+		return INFINITY;
+	return anvil_scene_h(sc) / sc->radius;
+}
+
+/* One number of a result row: its column name, how to get it (scaled to the
+ * column's unit), and how the table rounds it.  A table of columns keeps
+ * the header, the machine rows and the JSON keys in one place. */
+struct column {
+	const char *name;     /* machine name, also the JSON key */
+	const char *err_name; /* its error column, or NULL: none */
+	const char *label;    /* table header */
+	double scale;
+	size_t off;           /* offsetof(struct anvil_result, value) */
+	size_t err_off;       /* offset of its error estimate */
+	const char *fmt;      /* table format */
+};
+
+#define RV(f) offsetof(struct anvil_result, f)
+static const struct column columns[] = {
+	{"ts_us", "ts_err_us", "t_s/us", 1e6, RV(ts), RV(ts_err), "%.2f"},
+	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax), RV(tmax_err), "%.2f"},
+	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax), RV(Pmax_err), "%#.4g"},
+	{"Vs", NULL, "V_s/(m/s)", 1, RV(Vs), 0, "%#.4g"},
+	{"Rf", "Rf_err", "R_f", 1, RV(Rf), RV(Rf_err), "%.4f"},
+	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea), RV(Ea_err), "%#.3g"},
+	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%.4f"},
+	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%.4f"},
+};
+#define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
+
+static int nerr(void)
+{
+	int n = 0;
+	for (int i = 0; i < NCOLUMNS; i++)
+		n += columns[i].err_name != NULL;
+	return n;
+}
+
+static double field(const struct anvil_result *r, size_t off)
+{
+	return *(const double *)(const void *)((const char *)r + off);
+}
+
+static double value(const struct anvil_result *r, const struct column *c)
+{
+	return c->scale * field(r, c->off);
+}
+
+static double error(const struct anvil_result *r, const struct column *c)
+{
+	return c->err_name ? c->scale * field(r, c->err_off) : NAN;
+}
+
+static void machine_header(struct out_grid *g)
+{
+	out_grid_cell(g, "model");
+	out_grid_cell(g, "h_r0");
+	out_grid_cell(g, "V0");
+	for (int i = 0; i < NCOLUMNS; i++)
+		out_grid_cell(g, "%s", columns[i].name);
+	for (int i = 0; i < NCOLUMNS; i++)
+		if (columns[i].err_name)
+			out_grid_cell(g, "%s", columns[i].err_name);
+	out_grid_cell(g, "seconds");
+}
+
+static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
+			const struct anvil_result *r)
+{
+	char b[40];
+	out_grid_cell(g, "%s", anvil_model_name(r->model));
+	out_grid_cell(g, "%s", out_num(b, out_h_r0(sc, r), NULL));
+	out_grid_cell(g, "%s", out_num(b, sc->velocity, NULL));
+	for (int i = 0; i < NCOLUMNS; i++)
+		out_grid_cell(g, "%s", out_num(b, value(r, &columns[i]), NULL));
+	for (int i = 0; i < NCOLUMNS; i++)
+		if (columns[i].err_name)
+			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), NULL));
+	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
+}
+
+static void table_header(struct out_grid *g)
+{
+	out_grid_cell(g, "model");
+	out_grid_cell(g, "h/r0");
+	for (int i = 0; i < NCOLUMNS; i++) {
+		out_grid_cell(g, "%s", columns[i].label);
+		if (columns[i].err_name)
+			out_grid_cell(g, "±");
+	}
+	out_grid_cell(g, "time/s");
+}
+
+static void table_row(struct out_grid *g, const struct anvil_scene *sc,
+		      const struct anvil_result *r)
+{
+	char b[40];
+	out_grid_cell(g, "%s", anvil_model_name(r->model));
+	out_grid_cell(g, "%s", out_num(b, out_h_r0(sc, r), "%.4g"));
+	for (int i = 0; i < NCOLUMNS; i++) {
+		out_grid_cell(g, "%s", out_num(b, value(r, &columns[i]), columns[i].fmt));
+		if (columns[i].err_name)
+			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), "%.2g"));
+	}
+	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
+}
+
+/* What the table shows below the rows, after the models' notes: the
+ * scene in one line, so a pasted table still says what was simulated. */
+static void table_caption(FILE *f, const struct anvil_scene *sc)
+{
+	double h = anvil_scene_h(sc);
+	fprintf(f, "\n%s: %s impactor %.4g g, r0 = %.4g mm, V0 = %.4g m/s -> %s layer ",
+		sc->title[0] ? sc->title : "scene", sc->impactor.mat.name,
+		sc->mass * 1e3, sc->radius * 1e3, sc->velocity, sc->layer.mat.name);
+	if (isinf(h))
+		fputs("h = inf (half-space)", f);
+	else
+		fprintf(f, "h = %.4g r0 = %.4g mm", h / sc->radius, h * 1e3);
+	fprintf(f, ", accuracy %s\n", anvil_accuracy_name(sc->accuracy));
+}
+
+static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
+			const struct anvil_result *res, int n)
+{
+	/* model, h_r0, V0 (not in the table), values, errors, seconds */
+	int ncol = 3 + NCOLUMNS + nerr() + 1 - (fmt == OUT_TABLE);
+	struct out_grid *g = out_grid_alloc(ncol);
+	if (!g)
+		return ANVIL_ENOMEM;
+	if (fmt == OUT_TABLE)
+		table_header(g);
+	else
+		machine_header(g);
+	for (int i = 0; i < n; i++) {
+		if (fmt == OUT_TABLE)
+			table_row(g, sc, &res[i]);
+		else
+			machine_row(g, sc, &res[i]);
+	}
+	int st = out_grid_print(g, fmt, f);
+	out_grid_free(g);
+	if (fmt == OUT_TABLE && !st) {
+		int any = 0;
+		for (int i = 0; i < n; i++)
+			if (res[i].note[0])
+				fprintf(f, "%s%s: %s\n", any++ ? "" : "\n",
+					anvil_model_name(res[i].model), res[i].note);
+		table_caption(f, sc);
+		st = ferror(f) ? ANVIL_EIO : ANVIL_OK;
+	}
+	return st;
+}
+
+/* ---- JSON ---- */
+
+static void json_string(FILE *f, const char *s)
+{
+	fputc('"', f);
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", c);
+		else if (c < 0x20)
+			fprintf(f, "\\u%04x", c);
+		else
+			fputc(c, f);
+	}
+	fputc('"', f);
+}
+
+/* JSON has no NaN or infinity: both become null. */
+static void json_number(FILE *f, double x)
+{
+	if (isfinite(x))
+		fprintf(f, "%.10g", x);
+	else
+		fputs("null", f);
+}
+
+static void json_key(FILE *f, const char *indent, const char *key)
+{
+	fprintf(f, ",\n%s", indent);
+	json_string(f, key);
+	fputs(": ", f);
+}
+
+static void json_scene(FILE *f, const struct anvil_scene *sc)
+{
+	const char *in = "    ";
+	fputs("  \"scene\": {\n    \"title\": ", f);
+	json_string(f, sc->title);
+	json_key(f, in, "impactor");
+	json_string(f, sc->impactor.mat.name);
+	json_key(f, in, "layer");
+	json_string(f, sc->layer.mat.name);
+	json_key(f, in, "thickness_m");
+	json_number(f, anvil_scene_h(sc));
+	json_key(f, in, "h_r0");
+	json_number(f, out_h_r0(sc, NULL));
+	json_key(f, in, "V0");
+	json_number(f, sc->velocity);
+	json_key(f, in, "mass");
+	json_number(f, sc->mass);
+	json_key(f, in, "radius");
+	json_number(f, sc->radius);
+	json_key(f, in, "accuracy");
+	json_string(f, anvil_accuracy_name(sc->accuracy));
+	fputs("\n  }", f);
+}
+
+static void json_result(FILE *f, const struct anvil_scene *sc,
+			const struct anvil_result *r)
+{
+	const char *in = "      ";
+	fputs("    {\n      \"model\": ", f);
+	json_string(f, anvil_model_name(r->model));
+	json_key(f, in, "h_r0");
+	json_number(f, out_h_r0(sc, r));
+	json_key(f, in, "V0");
+	json_number(f, sc->velocity);
+	for (int i = 0; i < NCOLUMNS; i++) {
+		json_key(f, in, columns[i].name);
+		json_number(f, value(r, &columns[i]));
+	}
+	for (int i = 0; i < NCOLUMNS; i++) {
+		if (!columns[i].err_name)
+			continue;
+		json_key(f, in, columns[i].err_name);
+		json_number(f, error(r, &columns[i]));
+	}
+	json_key(f, in, "seconds");
+	json_number(f, r->seconds);
+	json_key(f, in, "note");
+	json_string(f, r->note);
+	fputs("\n    }", f);
+}
+
+static int results_json(FILE *f, const struct anvil_scene *sc,
+			const struct anvil_result *res, int n)
+{
+	fputs("{\n", f);
+	json_scene(f, sc);
+	fputs(",\n  \"results\": [\n", f);
+	for (int i = 0; i < n; i++) {
+		json_result(f, sc, &res[i]);
+		fputs(i + 1 < n ? ",\n" : "\n", f);
+	}
+	fputs("  ]\n}\n", f);
+	return ferror(f) ? ANVIL_EIO : ANVIL_OK;
+}
+
+int out_results(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
+		const struct anvil_result *res, int n)
+{
+	if (fmt == OUT_JSON)
+		return results_json(f, sc, res, n);
+	return results_grid(f, fmt, sc, res, n);
+}
+
+int out_history(FILE *f, const struct anvil_result *res, int n)
+{
+	fputs("model\tt_us\tP_kN\tv_m_s\tW_um\tw_um\talphaH_um\n", f);
+	for (int i = 0; i < n; i++) {
+		const struct anvil_history *h = &res[i].hist;
+		const char *name = anvil_model_name(res[i].model);
+		for (size_t k = 0; k < h->n; k++)
+			fprintf(f, "%s\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\n", name,
+				h->t[k] * 1e6, h->P[k] * 1e-3, h->v[k], h->W[k] * 1e6,
+				h->w[k] * 1e6, h->alpha[k] * 1e6);
+	}
+	return ferror(f) ? ANVIL_EIO : ANVIL_OK;
+}

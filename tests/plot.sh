@@ -1,0 +1,175 @@
+#!/bin/sh
+# plot.sh: `anvil plot` and `anvil run --png` end to end: every chart kind
+# gives a real PNG of the asked size that is not blank; hostile titles stay
+# text; a missing or failing gnuplot is one clear error and leaves no file.
+# The PNG tests are skipped when gnuplot is not installed.
+. "${top_srcdir:-.}/tests/setup.sh"
+
+GNUPLOT=${GNUPLOT:-gnuplot}
+have_gnuplot=0
+command -v "$GNUPLOT" >/dev/null 2>&1 && have_gnuplot=1
+have_python=0
+command -v python3 >/dev/null 2>&1 && have_python=1
+# Layer models run at the cheapest level: these tests are about charts.
+draft="-s solver.accuracy=draft"
+
+# "WIDTH HEIGHT COLOURS" of a PNG, from its IHDR chunk and its decoded
+# pixels (zlib, PNG filters undone), COLOURS counted up to 2 (not blank);
+# "bad" when it is no PNG.
+cat >"$tmp/pnginfo.py" <<'EOF'
+import struct, sys, zlib
+def paeth(a, b, c):
+    p = a + b - c
+    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+    return a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+def main(path):
+    d = open(path, 'rb').read()
+    if d[:8] != b'\x89PNG\r\n\x1a\n' or d[12:16] != b'IHDR':
+        return 'bad'
+    w, h, depth, ctype = struct.unpack('>IIBB', d[16:26])
+    idat, pos = b'', 8
+    while pos < len(d):
+        n, = struct.unpack('>I', d[pos:pos + 4])
+        if d[pos + 4:pos + 8] == b'IDAT':
+            idat += d[pos + 8:pos + 8 + n]
+        pos += 12 + n
+    raw = zlib.decompress(idat)
+    bpp = max(1, {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype] * depth // 8)
+    stride = (w * {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype] * depth + 7) // 8
+    prev, colours = bytearray(stride), set()
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            line[i] = (line[i] + [0, a, b, (a + b) // 2, paeth(a, b, c)][f]) & 255
+        for i in range(0, stride, bpp):
+            colours.add(bytes(line[i:i + bpp]))
+        prev = line
+        if len(colours) > 1:
+            break  # not blank: that is all we need to know
+    return '%d %d %d' % (w, h, len(colours))
+print(main(sys.argv[1]))
+EOF
+
+# Checks that $1 is a PNG of $2 x $3 pixels with more than one colour.
+is_png() {
+	if [ "$have_python" = 1 ]; then
+		info=$(python3 "$tmp/pnginfo.py" "$1" 2>&1 || echo bad)
+		set -- "$1" "$2" "$3" $info
+		[ "$#" -eq 6 ] && [ "$4" = "$2" ] && [ "$5" = "$3" ] && [ "$6" -gt 1 ] && return 0
+		diag "$1: got '$info', want $2 $3 and more than one colour"
+		return 1
+	fi
+	# No python3: signature and size from `file`, not blank by a size
+	# heuristic (a blank 8-bit PNG of this size compresses to < 2 kB).
+	file "$1" | grep -q "PNG image data, $2 x $3" && [ "$(wc -c <"$1")" -gt 2000 ]
+}
+[ "$have_python" = 1 ] || diag "no python3: PNG pixels not decoded; 'file' and a size heuristic instead"
+
+# A directory holds exactly the files named (no temporary left behind).
+only_files() {
+	dir=$1
+	shift
+	[ "$(cd "$dir" && ls -A)" = "$(printf '%s\n' "$@" | sed '/^$/d')" ]
+}
+
+# --- usage errors: no gnuplot needed -----------------------------------
+check_exit 2 "unknown chart is a usage error" "$ANVIL" plot forse -o "$tmp/x.png"
+assert "unknown chart suggests a name" grep -q "did you mean 'force'" "$tmp/err"
+check_exit 2 "missing -o is a usage error" "$ANVIL" plot force
+assert "missing -o is said" grep -q -- "-o" "$tmp/err"
+check_exit 2 "-o - refused for a PNG" "$ANVIL" plot force -o -
+check_exit 2 "bad --size refused" "$ANVIL" plot force -o "$tmp/x.png" --size 12
+check "--help" "$ANVIL" plot --help
+assert "--help lists every kind" grep -q "restitution-lambda" "$tmp/out"
+
+# --- missing gnuplot: one line naming gnuplot, no file --------------------
+mkdir "$tmp/none"
+check_exit 1 "missing gnuplot: exit 1" env ANVIL_GNUPLOT=/nonexistent \
+	"$ANVIL" plot force -s solver.models=hertz -o "$tmp/none/f.png"
+assert "missing gnuplot: one line naming gnuplot" \
+	test "$(grep -c gnuplot "$tmp/err")" -eq 1 -a "$(wc -l <"$tmp/err")" -eq 1
+assert "missing gnuplot: no file left" only_files "$tmp/none"
+
+# `anvil run --png` without gnuplot still writes the history.
+check_exit 1 "run --png without gnuplot: exit 1" env ANVIL_GNUPLOT=/nonexistent \
+	"$ANVIL" run -s solver.models=hertz,zener --png "$tmp/runpng" --history "$tmp/hist.tsv"
+assert "run --png without gnuplot: the history is written" test -s "$tmp/hist.tsv"
+assert "run --png without gnuplot: gnuplot named" grep -q gnuplot "$tmp/err"
+
+# --- the script alone: no gnuplot needed ---------------------------------
+check "--script without -o writes only the script" \
+	"$ANVIL" plot restitution-lambda $draft --script "$tmp/rl.gp"
+assert "the script has its data inline" grep -q '^\$d1 << EOD$' "$tmp/rl.gp"
+
+hostile='it'"'"'s "q"
+system("touch '"$tmp"'/pwned1") `touch '"$tmp"'/pwned2` @x ^_{}\'
+check "hostile --title: script written" \
+	"$ANVIL" plot force -s solver.models=hertz,zener --title "$hostile" --script -
+assert "hostile --title: quoted on one line" grep -q \
+	"^set title 'it''s \"q\" system(\"touch .*pwned1\") \`touch .*pwned2\` @x ^_{}\\\\' noenhanced\$" "$tmp/out"
+
+if [ "$have_gnuplot" = 0 ]; then
+	for k in force velocity deflection restitution-thickness restitution-lambda \
+		accuracy injection failing-gnuplot run-png expected-scripts; do
+		skip "$k PNG" "gnuplot ($GNUPLOT) not installed"
+	done
+	done_testing
+	exit
+fi
+
+# --- every chart kind ----------------------------------------------------
+for k in force velocity deflection restitution-thickness restitution-lambda accuracy; do
+	mkdir "$tmp/$k"
+	check "$k: exit 0" "$ANVIL" plot "$k" $draft -o "$tmp/$k/$k.png" --size 640x480
+	assert "$k: a 640x480 PNG, not blank" is_png "$tmp/$k/$k.png" 640 480
+	assert "$k: no temporary file left" only_files "$tmp/$k" "$k.png"
+done
+check "--font and --title" "$ANVIL" plot force -s solver.models=hertz,zener \
+	-o "$tmp/font.png" --size 300x200 --font "DejaVu Sans,8" --title "small"
+assert "--font: a 300x200 PNG" is_png "$tmp/font.png" 300 200
+
+# --- injection: nothing runs, the chart still renders ---------------------
+check "hostile --title: rendered" "$ANVIL" plot force -s solver.models=hertz,zener \
+	-o "$tmp/inj.png" --title "$hostile"
+assert "hostile --title: a PNG" is_png "$tmp/inj.png" 800 600
+printf '[scene]\ntitle = x'"'"'); system("touch %s/pwned3"); print(`touch %s/pwned4`\n[solver]\nmodels = hertz, zener\n' \
+	"$tmp" "$tmp" >"$tmp/evil.scene"
+check "hostile scene title: rendered" "$ANVIL" plot velocity "$tmp/evil.scene" -o "$tmp/inj2.png"
+assert "hostile scene title: a PNG" is_png "$tmp/inj2.png" 800 600
+check "hostile font name: rendered" "$ANVIL" plot force -s solver.models=hertz \
+	-o "$tmp/inj3.png" --font "Sans,9'; system('touch $tmp/pwned5'); '"
+assert "nothing was executed" test ! -e "$tmp/pwned1" -a ! -e "$tmp/pwned2" \
+	-a ! -e "$tmp/pwned3" -a ! -e "$tmp/pwned4" -a ! -e "$tmp/pwned5"
+
+# --- a failing gnuplot: anvil's line, gnuplot's words, no file -------------
+mkdir "$tmp/fail"
+printf '#!/bin/sh\ncat >/dev/null\necho "line 7: undefined function: frobnicate" >&2\nexit 1\n' \
+	>"$tmp/fake-gnuplot"
+chmod +x "$tmp/fake-gnuplot"
+check_exit 1 "failing gnuplot: exit 1" env ANVIL_GNUPLOT="$tmp/fake-gnuplot" \
+	"$ANVIL" plot force -s solver.models=hertz -o "$tmp/fail/f.png"
+assert "failing gnuplot: named, with its own message" \
+	grep -q "gnuplot.*exit status 1" "$tmp/err"
+assert "failing gnuplot: its error text shown" grep -q "frobnicate" "$tmp/err"
+assert "failing gnuplot: no file left" only_files "$tmp/fail"
+
+# --- anvil run --png DIR ---------------------------------------------------
+check "run --png: exit 0" "$ANVIL" run -s solver.models=hertz,zener \
+	--png "$tmp/runpng2" --history "$tmp/hist2.tsv"
+for k in force velocity deflection; do
+	assert "run --png: $k.png" is_png "$tmp/runpng2/$k.png" 800 600
+done
+assert "run --png: the history too" test -s "$tmp/hist2.tsv"
+
+# --- the expected scripts of test_plot are valid gnuplot -------------------
+for f in "$top_srcdir"/tests/plot-expected/*.gp; do
+	b=$(basename "$f" .gp)
+	check "expected script $b renders" sh -c '"$1" "$2" >"$3"' sh "$GNUPLOT" "$f" "$tmp/exp-$b.png"
+	assert "expected script $b: a PNG" is_png "$tmp/exp-$b.png" \
+		"$(sed -n 's/.*size \([0-9]*\),.*/\1/p' "$f" | head -1)" \
+		"$(sed -n 's/.*size [0-9]*,\([0-9]*\).*/\1/p' "$f" | head -1)"
+done
+
+done_testing

@@ -1,0 +1,400 @@
+/* test_tui_model.c: the TUI's model and canvas, driven without curses. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "core/material.h"
+#include "tap.h"
+#include "ui/tui_model.h"
+#include "ui/tui_plot.h"
+
+/* ---- canvas ---- */
+
+static void test_canvas_braille(void)
+{
+	struct tui_canvas c;
+	char row[64], cell[4];
+	double x[2] = {0, 1}, top[2] = {1, 1};
+	ok(tui_canvas_init(&c, 3, 1, TUI_CANVAS_BRAILLE) == 0, "braille canvas 3x1");
+	tui_canvas_polyline(&c, 2, x, top, 2);
+	tui_canvas_row(&c, 0, row, sizeof row);
+	/* the top dots of both columns: 1 and 4, U+2809 */
+	ok(strcmp(row, "\xe2\xa0\x89\xe2\xa0\x89\xe2\xa0\x89") == 0,
+	   "a line along the top lights dots 1 and 4 of every cell");
+	ok(tui_canvas_cell(&c, 1, 0, cell) == 2, "the cell remembers its series");
+	tui_canvas_free(&c);
+
+	double xs[2] = {0, 0}, ys[2] = {0, 1};
+	ok(tui_canvas_init(&c, 1, 1, TUI_CANVAS_BRAILLE) == 0, "braille canvas 1x1");
+	tui_canvas_range(&c, 0, 1, 0, 1);
+	tui_canvas_polyline(&c, 0, xs, ys, 2);
+	tui_canvas_cell(&c, 0, 0, cell);
+	/* the left column: dots 1, 2, 3 and 7 = bits 0x47, U+2847 */
+	ok(strcmp(cell, "\xe2\xa1\x87") == 0, "a vertical line is the left column");
+	tui_canvas_clear(&c);
+	ok(tui_canvas_cell(&c, 0, 0, cell) == -1 && strcmp(cell, " ") == 0,
+	   "a cleared cell is a blank");
+	tui_canvas_free(&c);
+	tui_canvas_free(&c);
+	ok(1, "free twice is harmless");
+}
+
+static void test_canvas_ascii(void)
+{
+	struct tui_canvas c;
+	char r0[16], r1[16], r2[16];
+	double x[2] = {0, 1}, y[2] = {0, 1};
+	ok(tui_canvas_init(&c, 3, 3, TUI_CANVAS_ASCII) == 0, "ascii canvas 3x3");
+	tui_canvas_polyline(&c, 1, x, y, 2);
+	tui_canvas_row(&c, 0, r0, sizeof r0);
+	tui_canvas_row(&c, 1, r1, sizeof r1);
+	tui_canvas_row(&c, 2, r2, sizeof r2);
+	ok(!strcmp(r0, "  o") && !strcmp(r1, " o ") && !strcmp(r2, "o  "),
+	   "ascii diagonal drawn with the series' glyph: '%s' '%s' '%s'", r0, r1, r2);
+	ok(tui_canvas_glyph(0) != tui_canvas_glyph(1), "series have distinct glyphs");
+	tui_canvas_free(&c);
+}
+
+static void test_canvas_edges(void)
+{
+	struct tui_canvas c;
+	char r[16];
+	double x[3] = {0, NAN, 1}, y[3] = {0, 0.5, 1};
+	double fx[2] = {-1e300, 1e300}, fy[2] = {0.5, 0.5};
+	ok(tui_canvas_init(&c, 0, 3, TUI_CANVAS_ASCII) == -1, "a zero-width canvas is refused");
+	tui_canvas_init(&c, 3, 3, TUI_CANVAS_ASCII);
+	tui_canvas_polyline(&c, 0, x, y, 3);
+	tui_canvas_row(&c, 1, r, sizeof r);
+	ok(strcmp(r, "   ") == 0, "a NaN breaks the line: no segment through the middle");
+	tui_canvas_clear(&c);
+	tui_canvas_polyline(&c, 0, fx, fy, 2);
+	tui_canvas_row(&c, 1, r, sizeof r);
+	ok(strcmp(r, "***") == 0, "a line far past both ends is clipped to the canvas");
+	tui_canvas_range(&c, 2, 2, 5, 5); /* empty ranges must not divide by 0 */
+	ok(c.x1 > c.x0 && c.y1 > c.y0, "a zero-width range is widened");
+	tui_canvas_free(&c);
+}
+
+/* ---- steps ---- */
+
+static void test_step(void)
+{
+	is_rel(tui_step(4, +1, 0), 4.1, 1e-15, "4 fine up -> 4.1");
+	is_rel(tui_step(4.1, -1, 0), 4, 1e-15, "4.1 fine down -> 4");
+	is_rel(tui_step(1, -1, 0), 0.99, 1e-15, "1 fine down -> 0.99");
+	is_rel(tui_step(0.99, +1, 0), 1, 1e-15, "0.99 fine up -> 1");
+	is_rel(tui_step(12.2, +1, 1), 20, 1e-15, "12.2 coarse up -> 20");
+	is_rel(tui_step(12.2, -1, 1), 10, 1e-15, "12.2 coarse down -> 10");
+	is_rel(tui_step(10, -1, 1), 9, 1e-15, "10 coarse down -> 9");
+	is_rel(tui_step(9, +1, 1), 10, 1e-15, "9 coarse up -> 10");
+	ok(tui_step(0.1, -1, 1) > 0, "coarse steps down never reach 0");
+	ok(isinf(tui_step(INFINITY, 1, 0)) && tui_step(0, 1, 0) == 0,
+	   "inf and 0 are left alone");
+}
+
+/* ---- keys ---- */
+
+static struct tui_model *fresh(void)
+{
+	static struct tui_model m;
+	struct anvil_scene sc;
+	tui_model_free(&m); /* from the test before; zeroed static at first */
+	anvil_scene_default(&sc);
+	tui_model_init(&m, &sc, NULL);
+	return &m;
+}
+
+static int type(struct tui_model *m, const char *s)
+{
+	int a = TUI_ACT_NONE;
+	for (; *s; ++s)
+		a = tui_model_key(m, (unsigned char)*s);
+	return a;
+}
+
+static const char *text(const struct tui_model *m, enum tui_field f)
+{
+	static char buf[4][64];
+	static int i;
+	i = (i + 1) % 4;
+	tui_model_field_text(m, f, buf[i], sizeof buf[i]);
+	return buf[i];
+}
+
+static void test_selection(void)
+{
+	struct tui_model *m = fresh();
+	ok(m->sel == 0, "selection starts at the top");
+	tui_model_key(m, TUI_KEY_DOWN);
+	tui_model_key(m, 'j');
+	ok(m->sel == 2, "Down and j move down");
+	ok(tui_model_key(m, 'k') == TUI_ACT_REDRAW && m->sel == 1, "k moves up");
+	tui_model_key(m, TUI_KEY_UP);
+	tui_model_key(m, TUI_KEY_UP);
+	ok(m->sel == TUI_F_COUNT - 1, "Up from the top wraps to the bottom");
+}
+
+static void test_thickness(void)
+{
+	struct tui_model *m = fresh();
+	double r0 = m->sc.radius;
+	m->sel = TUI_F_THICK_MM;
+	ok(!strcmp(text(m, TUI_F_THICK_MM), "4 mm") && !strcmp(text(m, TUI_F_THICK_R0), "1 r0"),
+	   "default thickness: 4 mm = 1 r0 (%s, %s)", text(m, TUI_F_THICK_MM),
+	   text(m, TUI_F_THICK_R0));
+	ok(tui_model_key(m, TUI_KEY_RIGHT) == TUI_ACT_RECOMPUTE, "Right asks for a recompute");
+	ok(!strcmp(text(m, TUI_F_THICK_MM), "4.1 mm") &&
+	   !strcmp(text(m, TUI_F_THICK_R0), "1.025 r0") && !m->sc.thickness_per_r0,
+	   "a fine step in mm updates both views: %s, %s", text(m, TUI_F_THICK_MM),
+	   text(m, TUI_F_THICK_R0));
+	tui_model_key(m, 'h');
+	is_rel(anvil_scene_h(&m->sc), 0.004, 1e-15, "h steps back to 4 mm");
+	m->sel = TUI_F_THICK_R0;
+	tui_model_key(m, 'L');
+	ok(!strcmp(text(m, TUI_F_THICK_R0), "2 r0") && !strcmp(text(m, TUI_F_THICK_MM), "8 mm") &&
+	   m->sc.thickness_per_r0, "a coarse step in r0: %s = %s, kept in r0",
+	   text(m, TUI_F_THICK_R0), text(m, TUI_F_THICK_MM));
+	tui_model_key(m, TUI_KEY_SLEFT);
+	is_rel(anvil_scene_h(&m->sc) / r0, 1, 1e-15, "Shift-Left: coarse step back to 1 r0");
+	m->sel = TUI_F_RADIUS;
+	tui_model_key(m, 'L');
+	ok(!strcmp(text(m, TUI_F_THICK_R0), "1 r0") && !strcmp(text(m, TUI_F_THICK_MM), "5 mm"),
+	   "a thickness in r0 follows the radius: %s, %s", text(m, TUI_F_THICK_R0),
+	   text(m, TUI_F_THICK_MM));
+	ok(m->modified, "the scene is marked modified");
+}
+
+static void test_numbers(void)
+{
+	struct tui_model *m = fresh();
+	m->sel = TUI_F_VELOCITY;
+	tui_model_key(m, 'h');
+	is_rel(m->sc.velocity, 9.9, 1e-15, "velocity 10 -> 9.9 m/s");
+	tui_model_key(m, 'H');
+	is_rel(m->sc.velocity, 9, 1e-15, "coarse: 9.9 -> 9 m/s");
+	tui_model_key(m, TUI_KEY_SRIGHT);
+	is_rel(m->sc.velocity, 10, 1e-15, "Shift-Right: 9 -> 10 m/s");
+	m->sel = TUI_F_MASS;
+	tui_model_key(m, 'l');
+	is_rel(m->sc.mass, 13e-3, 1e-15, "mass 12.2 -> 13 g (two digits)");
+	ok(!strcmp(text(m, TUI_F_MASS), "13 g"), "shown as %s", text(m, TUI_F_MASS));
+	m->sel = TUI_F_RADIUS;
+	tui_model_key(m, 'l');
+	is_rel(m->sc.radius, 4.1e-3, 1e-15, "radius 4 -> 4.1 mm");
+}
+
+static void test_materials(void)
+{
+	struct tui_model *m = fresh();
+	ok(type(m, ":impactor.E = 100 GPa") == TUI_ACT_REDRAW && m->editing, "':' opens a field");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE && !m->editing,
+	   "KEY=VALUE applied");
+	ok(m->sc.impactor.E == 100e9 && m->sc.impactor.mat.E == 100e9, "impactor.E overridden");
+	ok(!strcmp(text(m, TUI_F_IMPACTOR), "copper*"), "an overridden material is starred: %s",
+	   text(m, TUI_F_IMPACTOR));
+	m->sel = TUI_F_MASS; /* a row of the impactor */
+	ok(tui_model_key(m, 'm') == TUI_ACT_RECOMPUTE, "m cycles the impactor's material");
+	const struct anvil_material *mat = anvil_material_find(m->sc.impactor.material);
+	ok(strcmp(m->sc.impactor.material, "copper") != 0 && mat &&
+	   isnan(m->sc.impactor.E) && isnan(m->sc.impactor.nu) &&
+	   isnan(m->sc.impactor.rho) && isnan(m->sc.impactor.yield) &&
+	   m->sc.impactor.mat.E == mat->E,
+	   "now %s, overrides cleared, its own E", m->sc.impactor.material);
+	ok(!strcmp(m->sc.layer.material, "steel"), "the layer is untouched");
+	m->sel = TUI_F_THICK_R0;
+	tui_model_key(m, 'm');
+	ok(strcmp(m->sc.layer.material, "steel") != 0, "m on a layer row: layer now %s",
+	   m->sc.layer.material);
+	m->sel = TUI_F_LAYER;
+	for (int i = 1; i < anvil_material_count(); ++i)
+		tui_model_key(m, 'l');
+	ok(!strcmp(m->sc.layer.material, "steel"), "Right cycles round the whole table");
+	tui_model_key(m, 'h');
+	tui_model_key(m, 'l');
+	ok(!strcmp(m->sc.layer.material, "steel"), "Left undoes Right");
+	m->sel = TUI_F_ACCURACY;
+	ok(tui_model_key(m, 'm') == TUI_ACT_REDRAW && m->msg_error && m->msg[0],
+	   "m on a row of no body: an error message (%s)", m->msg);
+}
+
+static void test_accuracy(void)
+{
+	struct tui_model *m = fresh();
+	enum anvil_accuracy a0 = m->sc.accuracy;
+	ok(tui_model_key(m, 'a') == TUI_ACT_RECOMPUTE &&
+	   m->sc.accuracy == (a0 + 1) % ANVIL_ACC_COUNT, "a: next level (%s)",
+	   anvil_accuracy_name(m->sc.accuracy));
+	for (int i = 1; i < ANVIL_ACC_COUNT; ++i)
+		tui_model_key(m, 'a');
+	ok(m->sc.accuracy == a0, "a cycles through every level and back");
+	m->sel = TUI_F_ACCURACY;
+	tui_model_key(m, 'h');
+	ok(m->sc.accuracy == (a0 + ANVIL_ACC_COUNT - 1) % ANVIL_ACC_COUNT,
+	   "Left on the accuracy row: the level before");
+}
+
+static void test_edit(void)
+{
+	struct tui_model *m = fresh();
+	m->sel = TUI_F_MASS;
+	tui_model_key(m, TUI_KEY_ENTER);
+	ok(m->editing && !strcmp(m->edit, "12.2 g") && !strcmp(m->edit_key, "impactor.mass"),
+	   "Enter opens the value with its unit: %s = '%s'", m->edit_key, m->edit);
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "12x kg");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW, "a bad value: no recompute");
+	ok(m->editing && m->msg_error && strstr(m->msg, "mass"),
+	   "the parse error is reported and the field stays open: %s", m->msg);
+	is_rel(m->sc.mass, 12.2e-3, 1e-15, "the mass is unchanged");
+	tui_model_key(m, TUI_KEY_ESC);
+	ok(!m->editing && !m->msg[0], "Esc cancels");
+
+	m->sel = TUI_F_THICK_MM;
+	tui_model_key(m, TUI_KEY_ENTER);
+	for (int i = 0; i < 10; ++i)
+		tui_model_key(m, TUI_KEY_BACKSPACE);
+	type(m, "8");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "a bare number is accepted");
+	is_rel(anvil_scene_h(&m->sc), 8e-3, 1e-15, "and means the row's unit (8 mm)");
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "inf\n");
+	ok(isinf(anvil_scene_h(&m->sc)), "inf: a half-space");
+	ok(tui_model_key(m, 'l') == TUI_ACT_REDRAW && m->msg_error,
+	   "stepping inf is refused with a message");
+
+	m->sel = TUI_F_LAYER;
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "unobtanium\r");
+	ok(m->editing && m->msg_error && !strcmp(m->sc.layer.material, "steel"),
+	   "an unknown material: error, nothing changed (%s)", m->msg);
+	tui_model_key(m, 27);
+	type(m, ":nonsense\n");
+	ok(m->editing && m->msg_error, "':' without '=': error (%s)", m->msg);
+	tui_model_key(m, TUI_KEY_ESC);
+}
+
+static void test_keys(void)
+{
+	struct tui_model *m = fresh();
+	ok(tui_model_key(m, 'v') == TUI_ACT_REDRAW && m->quantity == TUI_Q_VELOCITY, "v: v(t)");
+	tui_model_key(m, 'v');
+	tui_model_key(m, 'v');
+	ok(m->quantity == TUI_Q_FORCE, "v cycles back to P(t)");
+	ok(tui_model_key(m, '?') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_HELP, "? helps");
+	ok(tui_model_key(m, 'q') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_MAIN,
+	   "any key, even q, leaves the help");
+	ok(tui_model_key(m, 'p') == TUI_ACT_EXPORT, "p exports");
+	ok(tui_model_key(m, 's') == TUI_ACT_SAVE, "s saves");
+	ok(!strcmp(tui_model_save_path(m), TUI_DEFAULT_SAVE), "to %s without a file",
+	   TUI_DEFAULT_SAVE);
+	tui_model_saved(m, "x.scene");
+	ok(!strcmp(tui_model_save_path(m), "x.scene") && !m->modified, "then to where it went");
+	ok(tui_model_key(m, 'q') == TUI_ACT_QUIT, "q quits");
+	ok(tui_model_key(m, 0x1234) == TUI_ACT_NONE, "an unknown key does nothing");
+	int has_q = 0;
+	for (int i = 0; tui_help_lines[i]; ++i)
+		has_q |= strstr(tui_help_lines[i], "quit") != NULL;
+	ok(has_q, "the help lists the keys");
+}
+
+static void test_models_toggle(void)
+{
+	struct tui_model *m = fresh();
+	unsigned all = m->sc.models;
+	m->sel = TUI_F_SHOW_LAYER;
+	ok(tui_model_key(m, ' ') == TUI_ACT_RECOMPUTE &&
+	   m->sc.models == (all & ~(1u << ANVIL_MODEL_LAYER)), "Space switches a model off");
+	ok(!strcmp(text(m, TUI_F_SHOW_LAYER), "[ ] layer"), "shown as %s",
+	   text(m, TUI_F_SHOW_LAYER));
+	tui_model_key(m, 'l');
+	ok(m->sc.models == all, "Right switches it back on");
+	m->sc.models = 1u << ANVIL_MODEL_HERTZ;
+	m->sel = TUI_F_SHOW_HERTZ;
+	ok(tui_model_key(m, ' ') == TUI_ACT_REDRAW && m->sc.models == 1u << ANVIL_MODEL_HERTZ,
+	   "the last model stays on");
+}
+
+/* ---- generations and the cache ---- */
+
+static struct anvil_result fake(enum anvil_model model, double ts)
+{
+	struct anvil_result r;
+	anvil_result_init(&r, model);
+	r.ts = ts;
+	anvil_history_alloc(&r.hist, 3);
+	r.hist.t[2] = ts;
+	return r;
+}
+
+static void test_generations(void)
+{
+	struct tui_model *m = fresh();
+	const unsigned hz = (1u << ANVIL_MODEL_HERTZ) | (1u << ANVIL_MODEL_ZENER);
+	m->sc.models = hz;
+	ok(tui_model_request(m) == hz && tui_model_busy(m), "a request wants both models");
+	ok(m->rows[ANVIL_MODEL_LAYER].state == TUI_ROW_OFF, "others are off");
+	unsigned g = m->gen;
+	struct anvil_result r = fake(ANVIL_MODEL_ZENER, 40e-6);
+	ok(tui_model_deliver(m, g, ANVIL_MODEL_ZENER, ANVIL_OK, NULL, &r) == 1,
+	   "a current result is used");
+	ok(m->rows[ANVIL_MODEL_ZENER].state == TUI_ROW_DONE &&
+	   m->rows[ANVIL_MODEL_ZENER].res.ts == 40e-6 &&
+	   m->rows[ANVIL_MODEL_ZENER].res.hist.n == 3 && r.hist.n == 0,
+	   "the row holds it and owns its history");
+	r = fake(ANVIL_MODEL_HERTZ, 1);
+	ok(tui_model_deliver(m, g - 1, ANVIL_MODEL_HERTZ, ANVIL_OK, NULL, &r) == 0 &&
+	   tui_model_busy(m), "a stale generation is dropped");
+	r = fake(ANVIL_MODEL_HERTZ, 1);
+	ok(tui_model_deliver(m, g, ANVIL_MODEL_HERTZ, ANVIL_ECANCEL, NULL, &r) == 0,
+	   "a cancelled run is dropped");
+	r = fake(ANVIL_MODEL_HERTZ, 30e-6);
+	tui_model_deliver(m, g, ANVIL_MODEL_HERTZ, ANVIL_EINVAL, "no", &r);
+	ok(!tui_model_busy(m) && !m->rows[ANVIL_MODEL_HERTZ].have &&
+	   !strcmp(m->rows[ANVIL_MODEL_HERTZ].msg, "no"), "a failure is a row with a message");
+
+	m->sel = TUI_F_VELOCITY;
+	tui_model_key(m, 'l');
+	ok(tui_model_request(m) == hz, "a new velocity: both to compute");
+	ok(m->rows[ANVIL_MODEL_ZENER].state == TUI_ROW_PENDING &&
+	   m->rows[ANVIL_MODEL_ZENER].have, "old values stay, pending");
+	tui_model_key(m, 'h');
+	ok(tui_model_request(m) == 0 && !tui_model_busy(m) && m->run_cached == 2,
+	   "back to a scene seen before: all from the cache");
+	ok(m->rows[ANVIL_MODEL_ZENER].res.ts == 40e-6 &&
+	   m->rows[ANVIL_MODEL_ZENER].res.hist.n == 3 &&
+	   m->rows[ANVIL_MODEL_HERTZ].status == ANVIL_EINVAL,
+	   "with the values, the history and the failure");
+	ok(memcmp(tui_model_scene(m), &m->sc, sizeof m->sc) == 0,
+	   "the scene computed is the scene edited");
+	struct tui_cache_key k1, k2;
+	tui_cache_key_make(&k1, &m->sc, ANVIL_MODEL_ZENER);
+	m->sc.layer.mat.E *= 1.0000001;
+	tui_cache_key_make(&k2, &m->sc, ANVIL_MODEL_ZENER);
+	ok(memcmp(&k1, &k2, sizeof k1) != 0, "the key sees the resolved material");
+	tui_model_free(m);
+	memset(m, 0, sizeof *m);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	plan(95);
+	test_canvas_braille();
+	test_canvas_ascii();
+	test_canvas_edges();
+	test_step();
+	test_selection();
+	test_thickness();
+	test_numbers();
+	test_materials();
+	test_accuracy();
+	test_edit();
+	test_keys();
+	test_models_toggle();
+	test_generations();
+	return done_testing();
+}
