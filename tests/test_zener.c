@@ -154,6 +154,10 @@ static void test_table(void)
 {
 	struct row rows[16];
 	int n = read_rows(rows, 16);
+	if (n < 0) { /* no ../shared beside the tree (e.g. a tarball build) */
+		printf("ok %d # SKIP tables.tsv not found (set SHARED)\n", ++tap_n);
+		return;
+	}
 	if (!ok(n == 8, "tables.tsv: 8 finite-h rows (got %d)", n))
 		return;
 	diag("V0   h   what           ours     paper  rel.diff");

@@ -23,8 +23,8 @@ if ! command -v tmux >/dev/null 2>&1; then
 	exit
 fi
 
-sock="anvil-tui-$$"
-T() { tmux -L "$sock" -f /dev/null "$@"; }
+# A private server, its socket in the scratch directory (removed with it).
+T() { tmux -S "$tmp/tmux" -f /dev/null "$@"; }
 trap 'T kill-server >/dev/null 2>&1 || :; rm -rf "$tmp"' EXIT
 ESC=$(printf '\033')
 

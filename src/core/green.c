@@ -316,13 +316,46 @@ static size_t pow2_at_least(size_t n)
 	return p;
 }
 
+/* A layer moves like Zener's plate at late times: its impulse response tends
+ * to alpha* (eq 8), in these units sqrt(3 (1 - nu)/2) / (4 hh^2), so its ramp
+ * response grows like alpha* t^2/2 and would alias in a periodic inversion.
+ * That growth is taken out in the s-domain and put back in time, through
+ * the impulse response alpha* (1 - exp(-t/tp)), smooth at t = 0:
+ *   ramp  alpha* [t^2/2 - tp t + tp^2 (1 - exp(-t/tp))]  <->  alpha* / (s^3 (1 + s tp)). */
+struct plate {
+	double alpha, tp;
+};
+
+static struct plate plate_term(enum anvil_green_mode mode, double hh, double kap2)
+{
+	struct plate pl = { 0.0, 1.0 };
+	if (mode == ANVIL_GREEN_LAYER_CORRECTION) {
+		double nu = (1 - 2 * kap2) / (2 * (1 - kap2));
+		pl.alpha = sqrt(1.5 * (1 - nu)) / (4.0 * hh * hh);
+		pl.tp = fmax(hh, 0.5);
+	}
+	return pl;
+}
+
+static cplx plate_s(const struct plate *pl, cplx s)
+{
+	return pl->alpha / (s * s * s * (1.0 + s * pl->tp));
+}
+
+static double plate_t(const struct plate *pl, double t)
+{
+	double tp = pl->tp;
+	return pl->alpha * (0.5 * t * t - tp * t - tp * tp * expm1(-t / tp));
+}
+
 /* Fill spec[0..M] with the transform of the ramp response at
  * s_n = c0 + i n pi/T'.  Each k-integral gets the share eps of the error
  * budget that keeps the time-domain ramp within tol of its size; qerr
  * returns the time-domain bound that the quadrature's estimates give. */
 static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0, double Tp,
 			   size_t M, const struct anvil_green_settings *gs, double tau_end,
-			   cplx *spec, double *qerr, anvil_progress_fn progress, void *ctx)
+			   const struct plate *pl, cplx *spec, double *qerr,
+			   anvil_progress_fn progress, void *ctx)
 {
 	double cr = rayleigh_speed(q->kp.kap2);
 	double scale = 3.0 / (16.0 * (1.0 - q->kp.kap2)) * tau_end; /* half-space ramp */
@@ -339,7 +372,7 @@ static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0,
 		int qs = k_integral(q, h, omega, hh, cr, gs->ktail, epsF * s2, &In, &e);
 		if (qs && !st)
 			st = qs; /* keep going: the result says how far off it is */
-		spec[n] = In / q->kp.b;
+		spec[n] = In / q->kp.b - plate_s(pl, q->kp.s);
 		sum_err += e / s2;
 		if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
 			return ANVIL_ENUM;
@@ -395,10 +428,11 @@ static int green_compute(struct anvil_green *g, const struct anvil_green_setting
 	cplx *spec = malloc((M + 1) * sizeof *spec);
 	struct heap *heap = malloc(sizeof *heap);
 	struct quad q = { .mode = g->mode, .kp = { .kap2 = g->kap2, .H = 0.5 * g->hh } };
+	struct plate pl = plate_term(g->mode, g->hh, g->kap2);
 	int st = (!g->tau || !spec || !heap) ? ANVIL_ENOMEM : ANVIL_OK;
 	double qerr = 0;
 	if (!st)
-		st = sample_spectrum(&q, heap, g->hh, c0, Tp, M, gs, g->tau_end, spec, &qerr,
+		st = sample_spectrum(&q, heap, g->hh, c0, Tp, M, gs, g->tau_end, &pl, spec, &qerr,
 				     progress, ctx);
 	/* A k-integral that missed its share of the budget is not fatal: its
 	 * error estimate is in qerr, hence in abserr, for the caller to judge. */
@@ -416,6 +450,8 @@ static int green_compute(struct anvil_green *g, const struct anvil_green_setting
 			/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
 			if (g->mode == ANVIL_GREEN_HALFSPACE)
 				g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * g->tau[j];
+			else
+				g->ramp[j] += plate_t(&pl, g->tau[j]);
 		}
 		g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
 		g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
@@ -483,6 +519,15 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 		return ANVIL_EINVAL;
 	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, NULL);
 	return ANVIL_OK;
+}
+
+void anvil_green_kernel(double k, double complex s, double nu, double hh,
+			double complex *layer, double complex *halfspace)
+{
+	struct kern p = { .kap2 = (1 - 2 * nu) / (2 * (1 - nu)), .H = 0.5 * hh, .s = s, .b = s * s };
+	cplx al1, al2, R, X;
+	*halfspace = w_halfspace(&p, k, &al1, &al2, &R, &X);
+	*layer = *halfspace + kern_layer_corr(&p, k);
 }
 
 double anvil_green_tau_end(const struct anvil_green *g) { return g->tau_end; }

@@ -23,6 +23,7 @@
 #ifndef ANVIL_GREEN_H
 #define ANVIL_GREEN_H
 
+#include <complex.h>
 #include <stddef.h>
 
 #include "scene.h"
@@ -63,6 +64,13 @@ void anvil_green_free(struct anvil_green *g);
 int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
 /* Step response (derivative of the ramp). */
 int anvil_green_step(const struct anvil_green *g, double tau, double *val);
+
+/* The transformed centre displacement per unit Hankel-transformed load at
+ * one (k, s), Re s > 0, units mu = c2 = r0 = 1: the free layer of thickness
+ * hh (its stable symmetric/antisymmetric form) and the half-space.  For
+ * tests and for anyone checking the algebra. */
+void anvil_green_kernel(double k, double complex s, double nu, double hh,
+			double complex *layer, double complex *halfspace);
 
 double anvil_green_tau_end(const struct anvil_green *g);
 /* Estimated absolute error of the ramp response over [0, tau_end]. */

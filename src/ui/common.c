@@ -5,6 +5,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include <sys/stat.h>
 
 #include <gsl/gsl_errno.h>
 
@@ -101,6 +102,16 @@ int cli_out_open(struct cli_out *o, const char *path)
 	}
 	snprintf(o->tmp, n, "%s.tmpXXXXXX", path);
 	int fd = mkstemp(o->tmp);
+	/* mkstemp makes the file 0600; outputs get the usual 0666 & ~umask */
+	if (fd >= 0) {
+		mode_t mask = umask(0);
+		umask(mask);
+		if (fchmod(fd, 0666 & ~mask) != 0) {
+			close(fd);
+			unlink(o->tmp);
+			fd = -1;
+		}
+	}
 	if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
 		cli_error("%s: cannot write: %s", path, strerror(errno));
 		if (fd >= 0) {
