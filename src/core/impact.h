@@ -32,6 +32,7 @@ struct anvil_impact_opts {
 	double dt_auto;   /* s; the step when dt = 0 (the caller's choice) */
 	size_t max_steps; /* refuse (ANVIL_ETOL) a run needing more steps */
 	size_t nhist;     /* history samples wanted (0: none) */
+	int single;       /* 1: one pass at dt, no extrapolation (to test the order) */
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

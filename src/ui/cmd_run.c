@@ -2,6 +2,7 @@
  * asks for, printed as a table, TSV, CSV or JSON. */
 #include <errno.h>
 #include <getopt.h>
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,6 +153,20 @@ static int run_progress_cb(void *ctx, double fraction, const char *what)
 /* Run every model of the scene into res (n of them, each to be freed).
  * Returns the exit code so far; *tol is set when a model missed its
  * accuracy but still gave values. */
+/* "MODEL: message", without repeating the model when the core's message
+ * already starts with it. */
+static const char *model_message(enum anvil_model m, const struct anvil_err *err, int st)
+{
+	static char buf[ANVIL_ERR_MSG + 32];
+	const char *name = anvil_model_name(m), *msg = err->msg[0] ? err->msg : anvil_strerror(st);
+	size_t n = strlen(name);
+	if (strncmp(msg, name, n) == 0 && msg[n] == ':')
+		snprintf(buf, sizeof buf, "%s", msg);
+	else
+		snprintf(buf, sizeof buf, "%s: %s", name, msg);
+	return buf;
+}
+
 static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 		      struct anvil_result *res, int *n, int *tol)
 {
@@ -178,15 +193,16 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 			code = EXIT_FAIL;
 			break;
 		}
-		if (st == ANVIL_ETOL) {
+		const struct anvil_result *r = &res[*n - 1];
+		int has_values = isfinite(r->ts) && r->ts > 0 && isfinite(r->Pmax) && isfinite(r->Rf);
+		if (st == ANVIL_ETOL && has_values) {
 			/* The values are there, with their error estimates: show them,
 			 * but do not let a script take them for converged ones. */
-			cli_error("warning: %s: %s", anvil_model_name((enum anvil_model)m),
-				  err.msg[0] ? err.msg : anvil_strerror(st));
+			cli_error("warning: %s", model_message((enum anvil_model)m, &err, st));
 			*tol = 1;
 		} else if (st) {
-			cli_error("%s: %s", anvil_model_name((enum anvil_model)m),
-				  err.msg[0] ? err.msg : anvil_strerror(st));
+			/* a refusal without values is a failure: no row of zeros */
+			cli_error("%s", model_message((enum anvil_model)m, &err, st));
 			code = EXIT_FAIL;
 		} else if (o->verbose) {
 			fprintf(stderr, "anvil: %s: %.3g s\n",

@@ -1,0 +1,133 @@
+/* test_impact: the coupled impact solver (impact.c) on anvils whose response
+ * is known exactly, so that only the time stepping is under test:
+ *  - a rigid anvil reproduces the quasi-static Hertz impact in closed form;
+ *  - on the exact half-space the implicit scheme is second order (halving dt
+ *    cuts the error about four times) and the paper's explicit lagged
+ *    scheme (42)-(46) first order (about two times);
+ *  - the Richardson error estimate covers the actual error;
+ *  - the paper's scheme converges to the implicit result. */
+#include <math.h>
+#include <stdio.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "halfspace.h"
+#include "hertz.h"
+#include "impact.h"
+#include "params.h"
+#include "tap.h"
+
+static int rigid(void *ctx, double tau, double *val)
+{
+	(void)ctx;
+	(void)tau;
+	*val = 0;
+	return ANVIL_OK;
+}
+
+static int halfspace(void *ctx, double tau, double *val)
+{
+	return anvil_halfspace_ramp(ctx, tau, val, NULL);
+}
+
+static void paper_params(struct anvil_params *p, double V0)
+{
+	struct anvil_scene sc;
+	anvil_scene_default(&sc);
+	sc.velocity = V0;
+	sc.thickness = INFINITY;
+	sc.thickness_per_r0 = 0;
+	struct anvil_err e;
+	if (anvil_params_init(p, &sc, &e))
+		diag("params: %s", e.msg);
+}
+
+static struct anvil_result run(const struct anvil_params *p, anvil_ramp_fn f, void *ctx,
+			       enum anvil_scheme scheme, double dt, int single)
+{
+	struct anvil_impact_opts o = { .scheme = scheme, .dt = dt, .max_steps = 1000000,
+				       .single = single };
+	struct anvil_result r;
+	struct anvil_err e;
+	anvil_result_init(&r, ANVIL_MODEL_HALFSPACE);
+	double tau_avail = 2.0 * anvil_hertz_tau_s() * p->T * p->c2 / p->r0;
+	if (anvil_impact_run(p, f, ctx, tau_avail, &o, &r, &e))
+		diag("impact: %s", e.msg);
+	return r;
+}
+
+static void test_rigid(void)
+{
+	struct anvil_params p;
+	paper_params(&p, 10);
+	double ts = anvil_hertz_tau_s() * p.T;
+	double Pmax = p.K * pow(anvil_hertz_alpha_max() * p.T * p.V0, 1.5);
+	struct anvil_result r = run(&p, rigid, NULL, ANVIL_SCHEME_IMPLICIT, ts / 2000, 0);
+	is_rel(r.ts, ts, 1e-7, "rigid anvil: t_s = 3.21807 T (quasi-static Hertz)");
+	is_rel(r.Pmax, Pmax, 1e-7, "rigid anvil: P_max = K ((5/4)^(2/5) T V0)^(3/2)");
+	is_rel(r.tmax, ts / 2, 1e-6, "rigid anvil: t_max = t_s / 2");
+	is_abs(r.Rf, 1.0, 1e-7, "rigid anvil: R_f = 1 (no energy leaves)");
+	anvil_result_free(&r);
+}
+
+/* Observed order from three step sizes: log2 of the ratio of successive
+ * differences. */
+static double order(double a, double b, double c)
+{
+	return log2(fabs(a - b) / fabs(b - c));
+}
+
+static void test_order(struct anvil_halfspace *hs)
+{
+	struct anvil_params p;
+	paper_params(&p, 10);
+	double dt = anvil_hertz_tau_s() * p.T / 200;
+	struct anvil_result r[3], q[3];
+	for (int i = 0; i < 3; i++) {
+		r[i] = run(&p, halfspace, hs, ANVIL_SCHEME_IMPLICIT, dt / (1 << i), 1);
+		q[i] = run(&p, halfspace, hs, ANVIL_SCHEME_PAPER, dt / (1 << i), 1);
+	}
+	double oP = order(r[0].Pmax, r[1].Pmax, r[2].Pmax), oV = order(r[0].Vs, r[1].Vs, r[2].Vs);
+	double oT = order(r[0].ts, r[1].ts, r[2].ts);
+	double qP = order(q[0].Pmax, q[1].Pmax, q[2].Pmax), qV = order(q[0].Vs, q[1].Vs, q[2].Vs);
+	diag("observed orders: implicit P_max %.2f, t_s %.2f, V_s %.2f; paper P_max %.2f, V_s %.2f",
+	     oP, oT, oV, qP, qV);
+	ok(oP > 1.7 && oP < 2.5 && oT > 1.7 && oT < 2.5,
+	   "implicit scheme is second order (P_max %.2f, t_s %.2f)", oP, oT);
+	/* V_s, an integral of P, converges faster (about dt^2.7 here) */
+	ok(oV > 1.7, "and V_s converges at least as fast (%.2f)", oV);
+	ok(qP > 0.7 && qP < 1.4 && qV > 0.7 && qV < 1.4,
+	   "paper's explicit scheme (42)-(46) is first order (P_max %.2f, V_s %.2f)", qP, qV);
+
+	/* Richardson: the extrapolated value and its estimate against a run
+	 * with a 16 times smaller step. */
+	struct anvil_result x = run(&p, halfspace, hs, ANVIL_SCHEME_IMPLICIT, dt, 0);
+	struct anvil_result f = run(&p, halfspace, hs, ANVIL_SCHEME_IMPLICIT, dt / 16, 0);
+	ok(fabs(x.Pmax - f.Pmax) <= x.Pmax_err + 1e-9 * f.Pmax && fabs(x.ts - f.ts) <= x.ts_err + 1e-9 * f.ts &&
+	   fabs(x.Rf - f.Rf) <= x.Rf_err + 1e-9,
+	   "error estimates cover the error (P_max %.1e <= %.1e, t_s %.1e <= %.1e, R_f %.1e <= %.1e)",
+	   fabs(x.Pmax - f.Pmax) / f.Pmax, x.Pmax_err / f.Pmax, fabs(x.ts - f.ts) / f.ts,
+	   x.ts_err / f.ts, fabs(x.Rf - f.Rf), x.Rf_err);
+	double d0 = fabs(q[0].Pmax - f.Pmax), d2 = fabs(q[2].Pmax - f.Pmax);
+	ok(d2 < 0.3 * d0, "paper's scheme converges to the implicit result (%.2e -> %.2e)",
+	   d0 / f.Pmax, d2 / f.Pmax);
+	ok(q[0].Pmax > f.Pmax && q[0].Rf > f.Rf,
+	   "at a coarse step the paper's scheme overestimates P_max and R_f (notes.md)");
+	for (int i = 0; i < 3; i++) {
+		anvil_result_free(&r[i]);
+		anvil_result_free(&q[i]);
+	}
+	anvil_result_free(&x);
+	anvil_result_free(&f);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	struct anvil_halfspace *hs = anvil_halfspace_alloc(0.3, 1e-12, NULL);
+	test_rigid();
+	test_order(hs);
+	anvil_halfspace_free(hs);
+	plan(tap_n);
+	return done_testing();
+}
