@@ -8,6 +8,7 @@
 #include <gsl/gsl_sf_gamma.h>
 
 #include "hertz.h"
+#include "paper.h"
 #include "tap.h"
 #include "zener.h"
 
@@ -20,34 +21,6 @@
 #define TS_100_REF 2.49286361515117252556453598871e-5
 #define PMAX_100_REF 180053.759412064056582177479965
 
-/* The paper's copper on steel, as src/core/params.c derives it. */
-static void fill_params(struct anvil_params *p, double h_r0, double V0)
-{
-	memset(p, 0, sizeof *p);
-	p->m1 = 0.0122;
-	p->r0 = 0.004;
-	p->V0 = V0;
-	p->E1 = 123e9;
-	p->nu1 = 0.34;
-	p->rho1 = 8960;
-	p->E = 209e9;
-	p->nu = 0.3;
-	p->rho = 7830;
-	p->h = isinf(h_r0) ? INFINITY : h_r0 * p->r0;
-	p->Estar = 1.0 / ((1 - p->nu1 * p->nu1) / p->E1 + (1 - p->nu * p->nu) / p->E);
-	p->K = 4.0 * p->Estar * sqrt(p->r0) / 3.0;
-	p->k0 = pow(p->K, -2.0 / 3.0);
-	p->T = pow(p->m1, 0.4) * pow(p->V0, -0.2) * pow(p->K, -0.4);
-	if (isinf(p->h)) {
-		p->alpha_star = 0.0;
-	} else {
-		double hs = 0.5 * p->h;
-		p->alpha_star = sqrt(3.0 * p->rho * (1 - p->nu * p->nu) / p->E) /
-				(16.0 * p->rho * hs * hs);
-	}
-	p->lambda_star = p->alpha_star * p->K * sqrt(p->V0) * pow(p->T, 1.5);
-	p->Rf_star = exp(-1.7191 * p->lambda_star);
-}
 
 static void test_constants(void)
 {
@@ -82,7 +55,7 @@ static void test_closed_form(double V0, double ts_ref, double pmax_ref)
 	struct anvil_params p;
 	struct anvil_result r;
 	struct anvil_err e;
-	fill_params(&p, 2.0, V0);
+	paper_params(&p, 2.0, V0);
 	anvil_result_init(&r, ANVIL_MODEL_HERTZ);
 	int st = anvil_hertz_run(&p, 0, &r, &e);
 	ok(st == ANVIL_OK, "hertz V0 = %g runs", V0);
@@ -100,7 +73,7 @@ static void test_closed_form(double V0, double ts_ref, double pmax_ref)
 
 	/* Zener on a half-space is the Hertz row. */
 	struct anvil_result z;
-	fill_params(&p, INFINITY, V0);
+	paper_params(&p, INFINITY, V0);
 	anvil_result_init(&z, ANVIL_MODEL_ZENER);
 	st = anvil_zener_run(&p, 0, &z, &e);
 	ok(st == ANVIL_OK, "zener on a half-space runs (%s)", st ? e.msg : "ok");
@@ -117,7 +90,7 @@ static void test_history(void)
 	struct anvil_result r;
 	struct anvil_err e;
 	const size_t n = 201;
-	fill_params(&p, 1.0, 10.0);
+	paper_params(&p, 1.0, 10.0);
 	anvil_result_init(&r, ANVIL_MODEL_HERTZ);
 	int st = anvil_hertz_run(&p, n, &r, &e);
 	ok(st == ANVIL_OK && r.hist.n == n, "hertz history of %zu samples", n);
@@ -149,7 +122,7 @@ static void test_errors(void)
 	struct anvil_params p;
 	struct anvil_result r;
 	struct anvil_err e;
-	fill_params(&p, 1.0, 10.0);
+	paper_params(&p, 1.0, 10.0);
 	anvil_result_init(&r, ANVIL_MODEL_HERTZ);
 	ok(anvil_hertz_run(NULL, 0, &r, &e) == ANVIL_EINVAL, "NULL params: EINVAL");
 	ok(anvil_hertz_run(&p, 0, NULL, NULL) == ANVIL_EINVAL, "NULL result: EINVAL");

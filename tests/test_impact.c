@@ -15,6 +15,7 @@
 #include "hertz.h"
 #include "impact.h"
 #include "params.h"
+#include "paper.h"
 #include "tap.h"
 
 static int rigid(void *ctx, double tau, double *val)
@@ -30,17 +31,6 @@ static int halfspace(void *ctx, double tau, double *val)
 	return anvil_halfspace_ramp(ctx, tau, val, NULL);
 }
 
-static void paper_params(struct anvil_params *p, double V0)
-{
-	struct anvil_scene sc;
-	anvil_scene_default(&sc);
-	sc.velocity = V0;
-	sc.thickness = INFINITY;
-	sc.thickness_per_r0 = 0;
-	struct anvil_err e;
-	if (anvil_params_init(p, &sc, &e))
-		diag("params: %s", e.msg);
-}
 
 static struct anvil_result run(const struct anvil_params *p, anvil_ramp_fn f, void *ctx,
 			       enum anvil_scheme scheme, double dt, int single)
@@ -59,7 +49,7 @@ static struct anvil_result run(const struct anvil_params *p, anvil_ramp_fn f, vo
 static void test_rigid(void)
 {
 	struct anvil_params p;
-	paper_params(&p, 10);
+	paper_params(&p, INFINITY, 10);
 	double ts = anvil_hertz_tau_s() * p.T;
 	double Pmax = p.K * pow(anvil_hertz_alpha_max() * p.T * p.V0, 1.5);
 	struct anvil_result r = run(&p, rigid, NULL, ANVIL_SCHEME_IMPLICIT, ts / 2000, 0);
@@ -80,7 +70,7 @@ static double order(double a, double b, double c)
 static void test_order(struct anvil_halfspace *hs)
 {
 	struct anvil_params p;
-	paper_params(&p, 10);
+	paper_params(&p, INFINITY, 10);
 	double dt = anvil_hertz_tau_s() * p.T / 200;
 	struct anvil_result r[3], q[3];
 	for (int i = 0; i < 3; i++) {

@@ -9,38 +9,10 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "paper.h"
 #include "tap.h"
 #include "zener.h"
 
-/* The paper's copper on steel, as src/core/params.c derives it. */
-static void fill_params(struct anvil_params *p, double h_r0, double V0)
-{
-	memset(p, 0, sizeof *p);
-	p->m1 = 0.0122;
-	p->r0 = 0.004;
-	p->V0 = V0;
-	p->E1 = 123e9;
-	p->nu1 = 0.34;
-	p->rho1 = 8960;
-	p->E = 209e9;
-	p->nu = 0.3;
-	p->rho = 7830;
-	p->h = isinf(h_r0) ? INFINITY : h_r0 * p->r0;
-	p->Estar = 1.0 / ((1 - p->nu1 * p->nu1) / p->E1 + (1 - p->nu * p->nu) / p->E);
-	p->K = 4.0 * p->Estar * sqrt(p->r0) / 3.0;
-	p->k0 = pow(p->K, -2.0 / 3.0);
-	p->T = pow(p->m1, 0.4) * pow(p->V0, -0.2) * pow(p->K, -0.4);
-	if (isinf(p->h)) {
-		p->alpha_star = 0.0;
-	} else {
-		/* Eq (8) with the half-thickness h* = h/2 (notes.md). */
-		double hs = 0.5 * p->h;
-		p->alpha_star = sqrt(3.0 * p->rho * (1 - p->nu * p->nu) / p->E) /
-				(16.0 * p->rho * hs * hs);
-	}
-	p->lambda_star = p->alpha_star * p->K * sqrt(p->V0) * pow(p->T, 1.5);
-	p->Rf_star = exp(-1.7191 * p->lambda_star);
-}
 
 /* One starred row of tables.tsv; the strings keep the printed digits. */
 struct row {
@@ -166,7 +138,7 @@ static void test_table(void)
 		struct anvil_params p;
 		struct anvil_result r;
 		struct anvil_err e;
-		fill_params(&p, w->h_r0, w->V0);
+		paper_params(&p, w->h_r0, w->V0);
 		anvil_result_init(&r, ANVIL_MODEL_ZENER);
 		int st = anvil_zener_run(&p, 0, &r, &e);
 		if (!ok(st == ANVIL_OK, "zener V0=%g h=%gr0 runs", w->V0, w->h_r0))
@@ -237,7 +209,7 @@ static void test_history(void)
 	struct anvil_result r;
 	struct anvil_err e;
 	const size_t n = 301;
-	fill_params(&p, 1.0, 10.0);
+	paper_params(&p, 1.0, 10.0);
 	anvil_result_init(&r, ANVIL_MODEL_ZENER);
 	int st = anvil_zener_run(&p, n, &r, &e);
 	if (!ok(st == ANVIL_OK && r.hist.n == n, "zener history of %zu samples", n))
@@ -281,7 +253,7 @@ static void test_errors(void)
 	/* lambda* = 1000: R_f ~ 1e-14, alpha creeps to 0 below the tolerance. */
 	ok(anvil_zener_solve(1000, 1e-8, &s, &e) == ANVIL_ENUM && e.msg[0],
 	   "lambda* = 1000: ENUM (%s)", e.msg);
-	fill_params(&p, 1.0, 10.0);
+	paper_params(&p, 1.0, 10.0);
 	anvil_result_init(&r, ANVIL_MODEL_ZENER);
 	p.lambda_star = -1.0;
 	ok(anvil_zener_run(&p, 10, &r, &e) == ANVIL_EINVAL && r.hist.n == 0,
