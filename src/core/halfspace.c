@@ -100,16 +100,15 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
-#include <gsl/gsl_roots.h>
 
 #include "halfspace.h"
+#include "material.h"
 
 enum {
 	HS_NMOM = 3,        /* moments per spectral range */
 	HS_MAXPANEL = 2048, /* per range: beyond it tol is out of reach */
 	HS_MAXDEPTH = 40,   /* bisection depth when building panels */
-	HS_CALLDEPTH = 12,  /* bisection depth inside one evaluation */
-	HS_ROOTITER = 200
+	HS_CALLDEPTH = 12   /* bisection depth inside one evaluation */
 };
 
 /* Shares of the tolerance eps = tol (1 - nu) (tol in units of the static
@@ -340,58 +339,6 @@ static double hs_full(const struct anvil_halfspace *hs, int range, int j, double
 	return rg->cum[j][rg->n];
 }
 
-/* ---- Rayleigh root ----------------------------------------------------- */
-
-/* The Rayleigh equation rationalised, in xi = (c/c2)^2, divided by xi:
- * xi^3 - 8 xi^2 + (24 - 16 kappa^2) xi - 16 (1 - kappa^2).  It is -16 (1 -
- * kappa^2) < 0 at 0 and 1 at 1, and its one root in (0,1) is the Rayleigh
- * root (there both sides of (2 - xi)^2 = 4 a1 a2 are positive). */
-static double hs_rayleigh_cubic(double xi, void *p)
-{
-	double k2 = *(const double *)p;
-	return ((xi - 8.0) * xi + (24.0 - 16.0 * k2)) * xi - 16.0 * (1.0 - k2);
-}
-
-static int hs_rayleigh(double k2, double *xi_out, struct anvil_err *err)
-{
-	gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-	if (!s)
-		return anvil_err_set(err, ANVIL_ENOMEM, "halfspace: out of memory");
-	double kk = k2;
-	gsl_function f = { hs_rayleigh_cubic, &kk };
-	int st = gsl_root_fsolver_set(s, &f, 0.0, 1.0), rc = ANVIL_ENUM;
-	for (int it = 0; st == GSL_SUCCESS && it < HS_ROOTITER; it++) {
-		st = gsl_root_fsolver_iterate(s);
-		if (st != GSL_SUCCESS)
-			break;
-		st = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
-					    0.0, 4.0 * DBL_EPSILON);
-		if (st == GSL_SUCCESS) {
-			rc = ANVIL_OK;
-			break;
-		}
-		if (st != GSL_CONTINUE)
-			break;
-		st = GSL_SUCCESS;
-	}
-	double xi = gsl_root_fsolver_root(s);
-	gsl_root_fsolver_free(s);
-	if (rc != ANVIL_OK)
-		return anvil_err_set(err, ANVIL_ENUM,
-				     "halfspace: Rayleigh root not found (%s)", gsl_strerror(st));
-	/* one Newton step on the cubic polishes the last bits */
-	double d = (3.0 * xi - 16.0) * xi + (24.0 - 16.0 * k2);
-	if (d != 0)
-		xi -= hs_rayleigh_cubic(xi, &kk) / d;
-	/* the unrationalised equation must hold too */
-	double res = (2.0 - xi) * (2.0 - xi) - 4.0 * sqrt(1.0 - k2 * xi) * sqrt(1.0 - xi);
-	if (!(xi > 0 && xi < 1) || !(fabs(res) < 1e-12))
-		return anvil_err_set(err, ANVIL_ENUM,
-				     "halfspace: bad Rayleigh root xi = %g (residual %g)", xi, res);
-	*xi_out = xi;
-	return ANVIL_OK;
-}
-
 /* ---- object ------------------------------------------------------------ */
 
 double anvil_halfspace_static(double nu)
@@ -441,7 +388,7 @@ struct anvil_halfspace *anvil_halfspace_alloc(double nu, double tol, struct anvi
 	hs->eps = tol * (1.0 - nu);
 
 	double xi = 0;
-	if (hs_rayleigh(hs->k2, &xi, err) != ANVIL_OK)
+	if (anvil_rayleigh_x(hs->k2, &xi, err) != ANVIL_OK)
 		goto fail;
 	hs->qr = sqrt(xi);
 	hs->tau_r = 1.0 / hs->qr;

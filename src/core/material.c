@@ -1,4 +1,5 @@
 /* material.c: the built-in materials and the constants derived from E, nu, rho. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 #include <strings.h>
@@ -81,52 +82,65 @@ double anvil_material_c2(const struct anvil_material *m)
 	return sqrt(anvil_material_mu(m) / m->rho);
 }
 
-/* The Rayleigh function in x = (cR/c2)^2, k2 = (c2/c1)^2, divided by x to
- * remove its trivial root x = 0: negative (2 k2 - 2) as x -> 0+, +1 at x = 1. */
-static double rayleigh(double x, void *params)
-{
-	double k2 = *(const double *)params;
-	return ((2 - x) * (2 - x) - 4 * sqrt(1 - x * k2) * sqrt(1 - x)) / x;
-}
-
-#define RAYLEIGH_XLO 1e-3 /* below the root for every -1 < nu < 0.5 (x > 0.47) */
-#define RAYLEIGH_EPSREL 1e-15
 #define RAYLEIGH_MAXITER 200
 
-/* Why Brent: the one root in (0, 1) is bracketed, and Brent's method cannot
- * leave a bracket, where Newton could step past x = 1 into imaginary square
- * roots; it converges superlinearly without derivatives.  The rationalised
- * cubic would need its spurious roots sorted out instead. */
+/* The Rayleigh equation rationalised, in xi = (c/c2)^2, divided by xi:
+ * xi^3 - 8 xi^2 + (24 - 16 kappa^2) xi - 16 (1 - kappa^2).  It is -16 (1 -
+ * kappa^2) < 0 at 0 and 1 at 1, and its one root in (0,1) is the Rayleigh
+ * root (there both sides of (2 - xi)^2 = 4 a1 a2 are positive). */
+static double rayleigh_cubic(double xi, void *p)
+{
+	double k2 = *(const double *)p;
+	return ((xi - 8.0) * xi + (24.0 - 16.0 * k2)) * xi - 16.0 * (1.0 - k2);
+}
+
+int anvil_rayleigh_x(double k2, double *xi_out, struct anvil_err *err)
+{
+	gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+	if (!s)
+		return anvil_err_set(err, ANVIL_ENOMEM, "Rayleigh speed: out of memory");
+	double kk = k2;
+	gsl_function f = { rayleigh_cubic, &kk };
+	int st = gsl_root_fsolver_set(s, &f, 0.0, 1.0), rc = ANVIL_ENUM;
+	for (int it = 0; st == GSL_SUCCESS && it < RAYLEIGH_MAXITER; it++) {
+		st = gsl_root_fsolver_iterate(s);
+		if (st != GSL_SUCCESS)
+			break;
+		st = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
+					    0.0, 4.0 * DBL_EPSILON);
+		if (st == GSL_SUCCESS) {
+			rc = ANVIL_OK;
+			break;
+		}
+		if (st != GSL_CONTINUE)
+			break;
+		st = GSL_SUCCESS;
+	}
+	double xi = gsl_root_fsolver_root(s);
+	gsl_root_fsolver_free(s);
+	if (rc != ANVIL_OK)
+		return anvil_err_set(err, ANVIL_ENUM,
+				     "Rayleigh speed: Rayleigh root not found (%s)", gsl_strerror(st));
+	/* one Newton step on the cubic polishes the last bits */
+	double d = (3.0 * xi - 16.0) * xi + (24.0 - 16.0 * k2);
+	if (d != 0)
+		xi -= rayleigh_cubic(xi, &kk) / d;
+	/* the unrationalised equation must hold too */
+	double res = (2.0 - xi) * (2.0 - xi) - 4.0 * sqrt(1.0 - k2 * xi) * sqrt(1.0 - xi);
+	if (!(xi > 0 && xi < 1) || !(fabs(res) < 1e-12))
+		return anvil_err_set(err, ANVIL_ENUM,
+				     "Rayleigh speed: bad Rayleigh root xi = %g (residual %g)", xi, res);
+	*xi_out = xi;
+	return ANVIL_OK;
+}
+
 double anvil_material_cr(const struct anvil_material *m)
 {
 	if (anvil_material_check(m, NULL) != ANVIL_OK)
 		return NAN;
-	double c1 = anvil_material_c1(m), c2 = anvil_material_c2(m);
-	double k2 = (c2 / c1) * (c2 / c1);
-	gsl_function f = {rayleigh, &k2};
-	double lo = RAYLEIGH_XLO, hi = 1.0, x = NAN;
-	/* Checked here so that gsl_root_fsolver_set never calls the GSL error
-	 * handler, whatever handler the front end installed. */
-	if (!(rayleigh(lo, &k2) < 0 && rayleigh(hi, &k2) > 0))
+	double c1 = anvil_material_c1(m), c2 = anvil_material_c2(m), x;
+	if (anvil_rayleigh_x((c2 / c1) * (c2 / c1), &x, NULL) != ANVIL_OK)
 		return NAN;
-	gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-	if (!s)
-		return NAN;
-	int status = gsl_root_fsolver_set(s, &f, lo, hi);
-	for (int i = 0; status == GSL_SUCCESS && i < RAYLEIGH_MAXITER; ++i) {
-		status = gsl_root_fsolver_iterate(s);
-		if (status != GSL_SUCCESS)
-			break;
-		lo = gsl_root_fsolver_x_lower(s);
-		hi = gsl_root_fsolver_x_upper(s);
-		status = gsl_root_test_interval(lo, hi, 0, RAYLEIGH_EPSREL);
-		if (status == GSL_SUCCESS) {
-			x = gsl_root_fsolver_root(s);
-			break;
-		}
-		status = GSL_SUCCESS;
-	}
-	gsl_root_fsolver_free(s);
 	return c2 * sqrt(x);
 }
 

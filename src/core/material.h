@@ -32,6 +32,11 @@ double anvil_material_c1(const struct anvil_material *m);     /* P-wave speed, m
 double anvil_material_c2(const struct anvil_material *m);     /* S-wave speed, m/s */
 double anvil_material_cr(const struct anvil_material *m);     /* Rayleigh speed, m/s */
 
+/* (c_R/c2)^2, the Rayleigh root, for k2 = (c2/c1)^2: Brent on the
+ * rationalised cubic, polished by Newton and checked against the
+ * unrationalised equation.  ANVIL_ENUM (message in err) if that fails. */
+int anvil_rayleigh_x(double k2, double *x, struct anvil_err *err);
+
 /* Back from wave speeds: sets E, nu and rho of m from c1, c2 and rho; the
  * speeds must give -1 < nu < 0.5, i.e. c2 > 0 and c1 > c2 sqrt(4/3).
  * ANVIL_EINVAL (message in err) when they do not. */
