@@ -20,6 +20,9 @@ static const struct command commands[] = {
 	{"accuracy", anvil_cmd_accuracy, "run a model at every accuracy level and check the targets"},
 	{"plot", anvil_cmd_plot, "draw a chart as PNG with gnuplot"},
 	{"tui", anvil_cmd_tui, "the interactive terminal interface"},
+	{"plan", anvil_cmd_plan, "how 'run' will compute a scene, and why (nothing is run)"},
+	{"field", anvil_cmd_field, "displacements and stresses inside the layer over time"},
+	{"map", anvil_cmd_map, "a displacement or stress over the layer at one instant"},
 };
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 

@@ -533,3 +533,61 @@ void anvil_green_kernel(double k, double complex s, double nu, double hh,
 double anvil_green_tau_end(const struct anvil_green *g) { return g->tau_end; }
 double anvil_green_abserr(const struct anvil_green *g) { return g->abserr; }
 size_t anvil_green_evals(const struct anvil_green *g) { return g->evals; }
+
+/* ---- export and import (the response cache, cache.c) ---- */
+
+void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s)
+{
+	*s = (struct anvil_green_samples){ .mode = g->mode, .hh = g->hh, .nu = g->nu,
+					   .tau_end = g->tau_end, .dtau = g->dtau,
+					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp };
+}
+
+/* The same checks a freshly computed response passes, so that a damaged
+ * file that slipped past its checksum cannot reach the solver. */
+static int samples_ok(const struct anvil_green_samples *s)
+{
+	if (!(s->nu > -1 && s->nu < 0.5) || !(s->tau_end > 0 && isfinite(s->tau_end)) ||
+	    !(s->dtau > 0 && isfinite(s->dtau)) || !(s->abserr >= 0 && isfinite(s->abserr)) ||
+	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
+	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) ||
+	    !s->ramp || s->n < 4 || s->n != (size_t)floor(s->tau_end / s->dtau) + 2 ||
+	    s->ramp[0] != 0.0)
+		return 0;
+	for (size_t j = 0; j < s->n; j++)
+		if (!isfinite(s->ramp[j]))
+			return 0;
+	return 1;
+}
+
+struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
+				       struct anvil_err *err)
+{
+	if (!samples_ok(s)) {
+		anvil_err_set(err, ANVIL_EINVAL, "layer response: inconsistent samples");
+		return NULL;
+	}
+	struct anvil_green *g = calloc(1, sizeof *g);
+	double *block = malloc(2 * s->n * sizeof *block);
+	if (!g || !block) {
+		free(g);
+		free(block);
+		anvil_err_set(err, ANVIL_ENOMEM, "layer response: out of memory");
+		return NULL;
+	}
+	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu,
+				   .kap2 = (1 - 2 * s->nu) / (2 * (1 - s->nu)), .tau_end = s->tau_end,
+				   .dtau = s->dtau, .n = s->n, .tau = block, .ramp = block + s->n,
+				   .abserr = s->abserr };
+	for (size_t j = 0; j < g->n; j++)
+		g->tau[j] = (double)j * g->dtau; /* as green_compute: the same bits */
+	memcpy(g->ramp, s->ramp, g->n * sizeof *g->ramp);
+	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
+	if (!g->interp || gsl_interp_init(g->interp, g->tau, g->ramp, g->n)) {
+		anvil_err_set(err, g->interp ? ANVIL_ENUM : ANVIL_ENOMEM,
+			      "layer response: cannot rebuild the interpolant");
+		anvil_green_free(g);
+		return NULL;
+	}
+	return g;
+}

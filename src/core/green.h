@@ -78,4 +78,22 @@ double anvil_green_abserr(const struct anvil_green *g);
 /* Number of kernel evaluations spent (for benchmarks). */
 size_t anvil_green_evals(const struct anvil_green *g);
 
+/* The sampled ramp response, to store it (cache.h) and read it back:
+ * ramp[j] at tau = j dtau, j < n, ramp[0] = 0, n = floor(tau_end/dtau) + 2. */
+struct anvil_green_samples {
+	enum anvil_green_mode mode;
+	double hh, nu, tau_end, dtau, abserr;
+	size_t n;
+	const double *ramp;
+};
+
+/* Fill s from g; s->ramp is borrowed from g (valid while g lives). */
+void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s);
+/* A response from samples (copied; the spline is rebuilt from them, so it
+ * evaluates to the bit as the exported one did).  Its evals count is 0.
+ * NULL with ANVIL_EINVAL for inconsistent samples (sizes, non-finite
+ * values, ramp[0] != 0), ANVIL_ENOMEM, ANVIL_ENUM. */
+struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
+				       struct anvil_err *err);
+
 #endif

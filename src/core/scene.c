@@ -51,6 +51,9 @@ static const char *const accuracy_names[ANVIL_ACC_COUNT] = {
 static const double accuracy_targets[ANVIL_ACC_COUNT] = {1e-2, 1e-3, 1e-4, 1e-5};
 static const char *const model_names[ANVIL_MODEL_COUNT] = {
 	"hertz", "zener", "layer", "halfspace"};
+static const char *const waves_names[ANVIL_WAVES_COUNT] = {
+	"auto", "layer", "halfspace", "none"};
+static const char *const field_names[ANVIL_FIELDMODE_COUNT] = {"off", "points", "map"};
 
 const char *anvil_accuracy_name(enum anvil_accuracy a)
 {
@@ -79,6 +82,32 @@ int anvil_model_parse(const char *name)
 {
 	for (int i = 0; name && i < ANVIL_MODEL_COUNT; ++i)
 		if (strcasecmp(name, model_names[i]) == 0)
+			return i;
+	return -1;
+}
+
+const char *anvil_waves_name(enum anvil_waves w)
+{
+	return (unsigned)w < ANVIL_WAVES_COUNT ? waves_names[w] : "unknown";
+}
+
+int anvil_waves_parse(const char *name)
+{
+	for (int i = 0; name && i < ANVIL_WAVES_COUNT; ++i)
+		if (strcasecmp(name, waves_names[i]) == 0)
+			return i;
+	return -1;
+}
+
+const char *anvil_fieldmode_name(enum anvil_fieldmode f)
+{
+	return (unsigned)f < ANVIL_FIELDMODE_COUNT ? field_names[f] : "unknown";
+}
+
+int anvil_fieldmode_parse(const char *name)
+{
+	for (int i = 0; name && i < ANVIL_FIELDMODE_COUNT; ++i)
+		if (strcasecmp(name, field_names[i]) == 0)
 			return i;
 	return -1;
 }
@@ -385,6 +414,13 @@ void anvil_scene_default(struct anvil_scene *sc)
 	memset(sc, 0, sizeof *sc);
 	for (int b = 0; b < 2; ++b)
 		bodies[b]->E = bodies[b]->nu = bodies[b]->rho = bodies[b]->yield = NAN;
+	/* Not in default_text, so that scenes written before [effects] and
+	 * [output] existed read as they did: every effect on, waves chosen by
+	 * the planner (which only drops what the accuracy allows), the table. */
+	sc->effects.waves = ANVIL_WAVES_AUTO;
+	sc->effects.plate = sc->effects.quasistatic = 1;
+	sc->effects.field = ANVIL_FIELDMODE_OFF;
+	sc->output.table = 1;
 	/* Cannot fail unless default_text is broken, which test_scene catches. */
 	if (anvil_scene_parse(sc, default_text, "default scene", NULL))
 		abort();
@@ -425,6 +461,10 @@ int anvil_scene_check(const struct anvil_scene *sc, struct anvil_err *err)
 	if (!sc->models || (sc->models & ~ANVIL_MODELS_ALL))
 		return anvil_err_set(err, ANVIL_EINVAL, "solver.models: must name models "
 				     "among hertz, zener, layer, halfspace (bits 0x%x)", sc->models);
+	if ((unsigned)sc->effects.waves >= ANVIL_WAVES_COUNT ||
+	    (unsigned)sc->effects.field >= ANVIL_FIELDMODE_COUNT)
+		return anvil_err_set(err, ANVIL_EINVAL, "effects: waves %d or field %d out of range",
+				     (int)sc->effects.waves, (int)sc->effects.field);
 	if (sc->ncustom < 0 || sc->ncustom > ANVIL_MAX_CUSTOM)
 		return anvil_err_set(err, ANVIL_EINVAL, "%d custom materials (at most %d)",
 				     sc->ncustom, ANVIL_MAX_CUSTOM);
@@ -443,6 +483,18 @@ int anvil_scene_check(const struct anvil_scene *sc, struct anvil_err *err)
 double anvil_scene_h(const struct anvil_scene *sc)
 {
 	return sc->thickness_per_r0 ? sc->thickness * sc->radius : sc->thickness;
+}
+
+unsigned anvil_scene_models(const struct anvil_scene *sc)
+{
+	unsigned m = sc->models & ANVIL_MODELS_ALL;
+	if (!sc->effects.quasistatic)
+		m &= ~(1u << ANVIL_MODEL_HERTZ);
+	if (!sc->effects.plate)
+		m &= ~(1u << ANVIL_MODEL_ZENER);
+	if (sc->effects.waves == ANVIL_WAVES_NONE)
+		m &= ~((1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE));
+	return m;
 }
 
 /* ---- writing ---- */

@@ -11,6 +11,10 @@
  *   [solver]    accuracy = draft|normal|fine|reference
  *               scheme = implicit|paper   dt = 0.16 us | auto
  *               models = hertz,zener,layer,halfspace (any subset)
+ *   [effects]   waves = auto|layer|halfspace|none   plate = on|off
+ *               quasistatic = on|off   field = off|points|map
+ *   [output]    table = on|off   histories = FILE|off   charts = DIR|off
+ *               field = FILE|off
  *   [material NAME]  E = ..  nu = ..  rho = ..  yield = ..  (a new material)
  *
  * '#' and ';' start comments.  Every key can also be set as SECTION.KEY
@@ -50,6 +54,46 @@ enum anvil_model {
 };
 
 #define ANVIL_MODELS_ALL ((1u << ANVIL_MODEL_COUNT) - 1u)
+
+/* How the anvil's waves are modelled in the layer and halfspace rows:
+ * auto lets the planner (plan.h) pick the cheapest model that meets the
+ * accuracy, layer and halfspace force one, none drops both rows. */
+enum anvil_waves {
+	ANVIL_WAVES_AUTO,
+	ANVIL_WAVES_LAYER,
+	ANVIL_WAVES_HALFSPACE,
+	ANVIL_WAVES_NONE,
+	ANVIL_WAVES_COUNT
+};
+
+/* The stress and displacement field inside the layer (the field module). */
+enum anvil_fieldmode {
+	ANVIL_FIELDMODE_OFF,
+	ANVIL_FIELDMODE_POINTS,
+	ANVIL_FIELDMODE_MAP,
+	ANVIL_FIELDMODE_COUNT
+};
+
+#define ANVIL_PATH_MAX 256
+
+/* [effects]: what physics the scene calls for.  plate and quasistatic
+ * switch the zener and hertz rows; waves = none drops layer and halfspace.
+ * Rows are run only if solver.models lists them too (anvil_scene_models). */
+struct anvil_effects {
+	enum anvil_waves waves;
+	int plate;       /* 1: Zener's thin plate (the zener row) */
+	int quasistatic; /* 1: quasi-static Hertz on a rigid layer (the hertz row) */
+	enum anvil_fieldmode field;
+};
+
+/* [output]: what `anvil run` writes; "" is off.  Paths are relative to the
+ * current directory; the command line's -o, --history, --png win. */
+struct anvil_output {
+	int table;                      /* 1: print the results */
+	char histories[ANVIL_PATH_MAX]; /* time histories, TSV */
+	char charts[ANVIL_PATH_MAX];    /* directory for PNG charts */
+	char field[ANVIL_PATH_MAX];     /* the field, when [effects] field is on */
+};
 #define ANVIL_MAX_CUSTOM 16
 #define ANVIL_TITLE_MAX 128
 
@@ -77,6 +121,8 @@ struct anvil_scene {
 	/* Materials defined by [material NAME] sections. */
 	int ncustom;
 	struct anvil_material custom[ANVIL_MAX_CUSTOM];
+	struct anvil_effects effects; /* defaults: auto, on, on, off */
+	struct anvil_output output;   /* defaults: table on, the rest off */
 };
 
 /* The embedded default scene (the paper's copper rod on a 1 r0 steel layer at
@@ -108,6 +154,11 @@ int anvil_scene_write(const struct anvil_scene *sc, FILE *out);
 /* Layer thickness in metres (INFINITY for a half-space). */
 double anvil_scene_h(const struct anvil_scene *sc);
 
+/* The models a run computes: solver.models less the rows [effects] turns
+ * off (hertz without quasistatic, zener without plate, layer and
+ * halfspace with waves = none).  A bit (1u << enum anvil_model) each. */
+unsigned anvil_scene_models(const struct anvil_scene *sc);
+
 /* Names <-> enums.  The parse functions return -1 for an unknown name. */
 const char *anvil_accuracy_name(enum anvil_accuracy a);
 int anvil_accuracy_parse(const char *name);
@@ -115,5 +166,9 @@ int anvil_accuracy_parse(const char *name);
 double anvil_accuracy_target(enum anvil_accuracy a);
 const char *anvil_model_name(enum anvil_model m);
 int anvil_model_parse(const char *name);
+const char *anvil_waves_name(enum anvil_waves w);
+int anvil_waves_parse(const char *name);
+const char *anvil_fieldmode_name(enum anvil_fieldmode f);
+int anvil_fieldmode_parse(const char *name);
 
 #endif

@@ -19,7 +19,7 @@
 #define OVERRIDE_SOURCE "overridden in the scene"
 
 static const char *const section_names[ANVIL_SEC_COUNT] = {
-	"scene", "impactor", "layer", "impact", "solver", "material"};
+	"scene", "impactor", "layer", "impact", "solver", "effects", "output", "material"};
 
 const char *anvil_scene_section_name(int sec)
 {
@@ -99,7 +99,7 @@ int anvil_scene_section_find(const char *name, struct anvil_err *err)
 	else
 		anvil_err_set(err, ANVIL_EPARSE,
 			      "unknown section '%s' (sections: scene, impactor, layer, "
-			      "impact, solver, material NAME)", name);
+			      "impact, solver, effects, output, material NAME)", name);
 	return -1;
 }
 
@@ -550,6 +550,111 @@ static int put_models(const void *base, const struct key *k, char *buf, size_t n
 	return 1;
 }
 
+/* ---- [effects] and [output] ---- */
+
+static int set_waves(struct anvil_scene *sc, void *base, const struct key *k,
+		     const char *value, int deferred, struct anvil_err *err)
+{
+	const char *names[ANVIL_WAVES_COUNT];
+	int w = anvil_waves_parse(value);
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (w < 0) {
+		for (int i = 0; i < ANVIL_WAVES_COUNT; ++i)
+			names[i] = anvil_waves_name((enum anvil_waves)i);
+		return choice_error(value, names, ANVIL_WAVES_COUNT, NULL, err);
+	}
+	sc->effects.waves = (enum anvil_waves)w;
+	return ANVIL_OK;
+}
+
+static int put_waves(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", anvil_waves_name(((const struct anvil_scene *)base)->effects.waves));
+	return 1;
+}
+
+static int set_field(struct anvil_scene *sc, void *base, const struct key *k,
+		     const char *value, int deferred, struct anvil_err *err)
+{
+	const char *names[ANVIL_FIELDMODE_COUNT];
+	int f = anvil_fieldmode_parse(value);
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (f < 0) {
+		for (int i = 0; i < ANVIL_FIELDMODE_COUNT; ++i)
+			names[i] = anvil_fieldmode_name((enum anvil_fieldmode)i);
+		return choice_error(value, names, ANVIL_FIELDMODE_COUNT, NULL, err);
+	}
+	sc->effects.field = (enum anvil_fieldmode)f;
+	return ANVIL_OK;
+}
+
+static int put_field(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", anvil_fieldmode_name(((const struct anvil_scene *)base)->effects.field));
+	return 1;
+}
+
+/* on|off switches: an int at k->off in the scene. */
+static const char *const switch_names[] = {"off", "on"};
+
+static int set_switch(struct anvil_scene *sc, void *base, const struct key *k,
+		      const char *value, int deferred, struct anvil_err *err)
+{
+	(void)sc;
+	(void)deferred;
+	for (int i = 0; i < 2; ++i) {
+		if (strcasecmp(value, switch_names[i]) == 0) {
+			*(int *)((char *)base + k->off) = i;
+			return ANVIL_OK;
+		}
+	}
+	return choice_error(value, switch_names, 2, NULL, err);
+}
+
+static int put_switch(const void *base, const struct key *k, char *buf, size_t n)
+{
+	snprintf(buf, n, "%s", switch_names[*(const int *)((const char *)base + k->off) != 0]);
+	return 1;
+}
+
+/* FILE|off: a char[ANVIL_PATH_MAX] at k->off in the scene, "" for off.
+ * The text must survive anvil_scene_write and a new parse, as a title. */
+static int set_path(struct anvil_scene *sc, void *base, const struct key *k,
+		    const char *value, int deferred, struct anvil_err *err)
+{
+	char *dst = (char *)base + k->off;
+	(void)sc;
+	(void)deferred;
+	if (!*value)
+		return anvil_err_set(err, ANVIL_EPARSE, "expected a file name or 'off'");
+	for (const char *p = value; *p; ++p) {
+		if (iscntrl((unsigned char)*p))
+			return anvil_err_set(err, ANVIL_EPARSE, "must be one line of text");
+		if ((*p == '#' || *p == ';') && isspace((unsigned char)p[-1]))
+			return anvil_err_set(err, ANVIL_EPARSE,
+					     "'%c' after a space would start a comment", *p);
+	}
+	if (strlen(value) >= ANVIL_PATH_MAX)
+		return anvil_err_set(err, ANVIL_EPARSE, "longer than %d characters",
+				     ANVIL_PATH_MAX - 1);
+	snprintf(dst, ANVIL_PATH_MAX, "%s", strcasecmp(value, "off") == 0 ? "" : value);
+	return ANVIL_OK;
+}
+
+static int put_path(const void *base, const struct key *k, char *buf, size_t n)
+{
+	const char *path = (const char *)base + k->off;
+	/* a file really called "off" is written so that it reads back as one */
+	snprintf(buf, n, "%s%s", strcasecmp(path, "off") == 0 ? "./" : "", *path ? path : "off");
+	return 1;
+}
+
 #define S(sec) ANVIL_SEC_##sec
 #define D(dim) ANVIL_DIM_##dim
 #define Q(sec, key, base, type, field, dim, rule)                                   \
@@ -561,6 +666,10 @@ static int put_models(const void *base, const struct key *k, char *buf, size_t n
 	Q(sec, key, BASE_BODY, struct anvil_body, field, dim, rule)
 #define FN(sec, key, base, fn) \
 	{S(sec), key, set_##fn, put_##fn, base, 0, ANVIL_DIM_NONE, RULE_ANY}
+/* An int or a char array of the scene, handled by set_/put_fn. */
+#define AT(sec, key, field, fn) \
+	{S(sec), key, set_##fn, put_##fn, BASE_SCENE, offsetof(struct anvil_scene, field), \
+	 ANVIL_DIM_NONE, RULE_ANY}
 /* E, nu, rho, yield: of a body (an override) or of a [material NAME]. */
 #define ELASTIC(sec, base, type)                                    \
 	Q(sec, "E", base, type, E, PRESSURE, POSITIVE),             \
@@ -583,6 +692,14 @@ static const struct key keys[] = {
 	FN(SOLVER, "scheme", BASE_SCENE, scheme),
 	FN(SOLVER, "dt", BASE_SCENE, dt),
 	FN(SOLVER, "models", BASE_SCENE, models),
+	FN(EFFECTS, "waves", BASE_SCENE, waves),
+	AT(EFFECTS, "plate", effects.plate, switch),
+	AT(EFFECTS, "quasistatic", effects.quasistatic, switch),
+	FN(EFFECTS, "field", BASE_SCENE, field),
+	AT(OUTPUT, "table", output.table, switch),
+	AT(OUTPUT, "histories", output.histories, path),
+	AT(OUTPUT, "charts", output.charts, path),
+	AT(OUTPUT, "field", output.field, path),
 	ELASTIC(MATERIAL, BASE_MATERIAL, struct anvil_material),
 };
 #define NKEYS ((int)(sizeof keys / sizeof keys[0]))

@@ -4,76 +4,52 @@
 #include <string.h>
 #include <time.h>
 
+#include "cache.h"
 #include "green.h"
 #include "halfspace.h"
 #include "hertz.h"
 #include "impact.h"
 #include "params.h"
+#include "plan.h"
 #include "solver.h"
 #include "zener.h"
 
-/* What each accuracy level spends.  Chosen from convergence studies on the
- * paper's ten cases (scripts/bench, tests/test_layer.c): each level's
- * outputs differ from the reference level's by well under its target.
- *   cycles: the layer correction's bandwidth omega_max times the contact
- *           time (dimensionless), so fast impacts get more frequencies;
- *   nsteps: time steps per Hertz contact time (the dt/2 pass doubles them);
- *   hs_tol: tolerance of the exact half-space response. */
-static const struct level {
-	double cycles, omega_min, hs_tol;
-	size_t nsteps; /* per Hertz contact time */
-} levels[ANVIL_ACC_COUNT] = {
-	{ 60.0, 1.5, 1e-6, 100 },    /* draft */
-	{ 120.0, 2.0, 1e-8, 400 },   /* normal */
-	{ 240.0, 4.0, 1e-10, 1000 }, /* fine */
-	{ 480.0, 8.0, 1e-12, 3000 }, /* reference */
-};
-
-#define CACHE_MAX 24
 /* Beyond these a run is refused with ANVIL_ETOL and a message, instead of
  * grinding for minutes: very thin layers (lambda* >> 1) have contacts
- * thousands of Hertz times long, where the thin-plate model applies. */
-#define MAX_STEPS 40000
-#define MAX_TERMS 20000
-
-/* A cached response: the exact half-space (per nu and tolerance) or a layer
- * correction (per h/r0, nu, level), each made once and shared by every
- * impact that needs it ("plan once, execute many times"). */
-struct entry {
-	int is_corr;
-	double hh, nu, tol, omega, tau_end;
-	enum anvil_accuracy acc;
-	struct anvil_halfspace *hs;
-	struct anvil_green *corr;
-	unsigned long used;
-};
+ * thousands of Hertz times long, where the thin-plate model applies.
+ * (The accuracy levels' settings are in plan.c, which prices them.) */
+#define MAX_STEPS ANVIL_MAX_STEPS
+#define MAX_TERMS ANVIL_MAX_TERMS
 
 struct anvil_solver {
 	anvil_progress_fn progress;
 	void *progress_ctx;
-	struct entry cache[CACHE_MAX];
-	int ncache;
-	unsigned long clock;
+	/* the responses, each made once and shared by every impact that needs
+	 * it ("plan once, execute many times") */
+	struct anvil_cache *cache;
+	unsigned long layer_computed;
+	size_t layer_evals;
 };
 
 struct anvil_solver *anvil_solver_alloc(void)
 {
-	return calloc(1, sizeof(struct anvil_solver));
-}
-
-static void entry_free(struct entry *e)
-{
-	anvil_halfspace_free(e->hs);
-	anvil_green_free(e->corr);
-	memset(e, 0, sizeof *e);
+	char dir[4096];
+	struct anvil_solver *s = calloc(1, sizeof *s);
+	if (s && !(s->cache = anvil_cache_alloc())) {
+		free(s);
+		return NULL;
+	}
+	/* A directory name too long to use leaves the cache in memory. */
+	if (s)
+		anvil_cache_set_dir(s->cache, anvil_cache_default_dir(dir, sizeof dir), NULL);
+	return s;
 }
 
 void anvil_solver_free(struct anvil_solver *s)
 {
 	if (!s)
 		return;
-	for (int i = 0; i < s->ncache; i++)
-		entry_free(&s->cache[i]);
+	anvil_cache_free(s->cache);
 	free(s);
 }
 
@@ -84,6 +60,25 @@ void anvil_solver_set_progress(struct anvil_solver *s, anvil_progress_fn fn,
 	s->progress_ctx = ctx;
 }
 
+int anvil_solver_set_cache_dir(struct anvil_solver *s, const char *dir, struct anvil_err *err)
+{
+	return anvil_cache_set_dir(s->cache, dir, err);
+}
+
+void anvil_solver_set_warn(struct anvil_solver *s, anvil_warn_fn fn, void *ctx)
+{
+	anvil_cache_set_warn(s->cache, fn, ctx);
+}
+
+const struct anvil_cache *anvil_solver_cache(const struct anvil_solver *s) { return s->cache; }
+
+void anvil_solver_stats(const struct anvil_solver *s, struct anvil_solver_stats *st)
+{
+	st->layer_computed = s->layer_computed;
+	st->layer_evals = s->layer_evals;
+	anvil_cache_stats(s->cache, &st->cache);
+}
+
 static double wall_seconds(void)
 {
 	struct timespec ts;
@@ -91,76 +86,49 @@ static double wall_seconds(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* A free cache slot (the least recently used one when full). */
-static struct entry *slot(struct anvil_solver *s)
-{
-	if (s->ncache < CACHE_MAX)
-		return &s->cache[s->ncache++];
-	struct entry *old = &s->cache[0];
-	for (int i = 1; i < CACHE_MAX; i++)
-		if (s->cache[i].used < old->used)
-			old = &s->cache[i];
-	entry_free(old);
-	return old;
-}
-
-static const struct anvil_halfspace *get_halfspace(struct anvil_solver *s, double nu,
-						   double tol, struct anvil_err *err)
-{
-	for (int i = 0; i < s->ncache; i++) {
-		struct entry *e = &s->cache[i];
-		if (!e->is_corr && e->hs && e->nu == nu && e->tol <= tol) {
-			e->used = ++s->clock;
-			return e->hs;
-		}
-	}
-	struct anvil_halfspace *hs = anvil_halfspace_alloc(nu, tol, err);
-	if (!hs)
-		return NULL;
-	struct entry *e = slot(s);
-	*e = (struct entry){ .nu = nu, .tol = tol, .hs = hs, .used = ++s->clock };
-	return hs;
-}
-
-/* The layer correction covering [0, tau_end] with bandwidth omega (a cached
- * one with a longer window and at least that bandwidth will do, unless
- * exact: the coarse twin used for the error estimate must be what it says). */
+/* The layer correction covering [0, tau_end] with bandwidth index
+ * omega_idx (a cached one with a longer window and at least that bandwidth
+ * will do, unless exact: the coarse twin used for the error estimate must
+ * be what it says).  A new one gets its window rounded up to the cache's
+ * grid, so that nearby scenes find it. */
 static const struct anvil_green *get_corr(struct anvil_solver *s, double hh, double nu,
-					  enum anvil_accuracy acc, double omega,
+					  enum anvil_accuracy acc, int omega_idx,
 					  double tau_end, int exact, struct anvil_err *err)
 {
-	for (int i = 0; i < s->ncache; i++) {
-		struct entry *e = &s->cache[i];
-		if (e->is_corr && e->hh == hh && e->nu == nu && e->acc == acc &&
-		    e->tau_end >= tau_end && (exact ? e->omega == omega : e->omega >= omega)) {
-			e->used = ++s->clock;
-			return e->corr;
-		}
-	}
+	struct anvil_cache_key key = { hh, nu, acc, omega_idx };
+	const struct anvil_green *g = anvil_cache_find(s->cache, &key, tau_end, exact, NULL);
+	if (g)
+		return g;
 	struct anvil_green_settings gs;
 	anvil_green_settings(acc, &gs);
-	gs.omega_max = omega;
-	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, nu, tau_end,
-						  &gs, s->progress, s->progress_ctx, err);
-	if (!g)
+	gs.omega_max = anvil_cache_grid(omega_idx);
+	double tau_q = anvil_cache_grid(anvil_cache_grid_up(tau_end));
+	struct anvil_green *ng = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, nu, tau_q,
+						   &gs, s->progress, s->progress_ctx, err);
+	if (!ng)
 		return NULL;
-	struct entry *e = slot(s);
-	*e = (struct entry){ .is_corr = 1, .hh = hh, .nu = nu, .acc = acc, .omega = omega,
-			     .tau_end = tau_end, .corr = g, .used = ++s->clock };
-	return g;
+	s->layer_computed++;
+	s->layer_evals += anvil_green_evals(ng);
+	return anvil_cache_add(s->cache, &key, ng);
 }
 
-/* The anvil's ramp response: exact half-space plus the layer correction. */
+/* The anvil's ramp response: exact half-space plus the layer correction,
+ * or (quasi-static anvil, no hs) the static compliance times tau. */
 struct response {
 	const struct anvil_halfspace *hs;
 	const struct anvil_green *corr;
+	double stat;
 };
 
 static int response_ramp(void *ctx, double tau, double *val)
 {
 	const struct response *rs = ctx;
 	double a, b = 0;
-	int st = anvil_halfspace_ramp(rs->hs, tau, &a, NULL);
+	int st = ANVIL_OK;
+	if (rs->hs)
+		st = anvil_halfspace_ramp(rs->hs, tau, &a, NULL);
+	else
+		a = rs->stat * fmax(tau, 0.0);
 	if (!st && rs->corr)
 		st = anvil_green_ramp(rs->corr, tau, &b);
 	*val = a + b;
@@ -178,6 +146,19 @@ static void add_green_error(struct anvil_result *r, const struct anvil_result *c
 	r->Vs_err += fabs(r->Vs - c->Vs);
 	r->Rf_err += fabs(r->Rf - c->Rf);
 	r->Ea_err += fabs(r->Ea - c->Ea);
+}
+
+/* Add a model's estimated relative deviation d from the row's full model
+ * (the planner's) to each error estimate.  E_a = m1 (V0^2 - V_s^2)/2 moves
+ * by m1 V_s^2 d when V_s moves by d V_s. */
+static void add_model_error(struct anvil_result *r, const struct anvil_params *p, double d)
+{
+	r->ts_err += d * r->ts;
+	r->tmax_err += d * r->tmax;
+	r->Pmax_err += d * r->Pmax;
+	r->Vs_err += d * fabs(r->Vs);
+	r->Rf_err += d * fabs(r->Rf);
+	r->Ea_err += d * p->m1 * fmax(r->Vs * r->Vs, d * p->V0 * p->V0);
 }
 
 /* The scene's accuracy target against the error estimates: P_max and t_s
@@ -202,21 +183,23 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 }
 
 struct waves {
-	double hh, kappa, tau_s, omega; /* tau_s: contact time estimate */
-	const struct level *lev;
+	struct anvil_wave_job job;
+	double kappa;
 	struct response rs;
 	struct anvil_impact_opts io;
 };
 
-/* One coupled run with the window grown until the contact fits in it. */
+/* One coupled run with the window grown until the contact fits in it.
+ * omega (for the refusal) and omega_idx (the cache's grid) describe the
+ * layer correction's bandwidth. */
 static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 			const struct anvil_params *p, struct waves *wv, double omega,
-			int exact, struct anvil_result *r, struct anvil_err *err)
+			int omega_idx, int exact, struct anvil_result *r, struct anvil_err *err)
 {
 	int st = ANVIL_ETOL;
 	for (int attempt = 0; attempt < 6 && st == ANVIL_ETOL; attempt++) {
-		double tau_end = 1.4 * wv->tau_s * (double)(1 << attempt) + 2.0;
-		int need = isfinite(wv->hh) && 2.0 * wv->hh * wv->kappa < tau_end;
+		double tau_end = anvil_wave_window(&wv->job, attempt);
+		int need = isfinite(wv->job.hh) && 2.0 * wv->job.hh * wv->kappa < tau_end;
 		double terms = omega * 2.0 * tau_end / M_PI;
 		double dt = wv->io.dt > 0 ? wv->io.dt : wv->io.dt_auto;
 		double steps = tau_end * p->r0 / p->c2 / dt;
@@ -233,7 +216,8 @@ static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 					     "layer: the contact lasts over %.3g us (lambda* = %.3g), too long for the transform solver (%.0f terms); the thin-plate model 'zener' applies here",
 					     tau_end * p->r0 / p->c2 * 1e6, p->lambda_star, terms);
 		if (need) {
-			wv->rs.corr = get_corr(s, wv->hh, p->nu, sc->accuracy, omega, tau_end, exact, err);
+			wv->rs.corr = get_corr(s, wv->job.hh, p->nu, sc->accuracy, omega_idx, tau_end,
+					       exact, err);
 			if (!wv->rs.corr)
 				return err ? err->status : ANVIL_ENUM;
 		}
@@ -247,71 +231,118 @@ static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 	return st;
 }
 
-static void waves_note(struct anvil_result *r, const struct anvil_params *p,
-		       const struct waves *wv)
+/* The coupled run for the anvil computed by method (LAYER, HALFSPACE or
+ * STATIC), with the layer correction's error estimate when it is used. */
+static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
+		     const struct anvil_params *p, enum anvil_method method, size_t nhist,
+		     struct anvil_result *r, int *used_corr, struct anvil_err *err)
 {
-	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(wv->hh))
+	struct waves wv = { .kappa = p->c2 / p->c1 };
+	double ts_static = 0, pmax;
+	if (method == ANVIL_METHOD_STATIC && anvil_plan_static(p, &ts_static, &pmax))
+		return anvil_err_set(err, ANVIL_ENUM, "static: the contact time estimate failed");
+	anvil_wave_job(p, sc, method == ANVIL_METHOD_LAYER, ts_static, &wv.job);
+	wv.io = (struct anvil_impact_opts){ .scheme = sc->scheme, .dt = sc->dt,
+					    .dt_auto = wv.job.dt, .max_steps = MAX_STEPS,
+					    .nhist = nhist };
+	if (sc->dt > 0.25 * wv.job.ts)
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
+				     sc->dt * 1e6, wv.job.ts * 1e6);
+	if (method == ANVIL_METHOD_STATIC) {
+		wv.rs.stat = anvil_halfspace_static(p->nu);
+	} else if (!(wv.rs.hs = anvil_cache_halfspace(s->cache, p->nu, wv.job.hs_tol, err))) {
+		return err ? err->status : ANVIL_ENUM;
+	}
+	int st = waves_impact(s, sc, p, &wv, wv.job.omega, wv.job.omega_idx, 0, r, err);
+	*used_corr = wv.rs.corr != NULL;
+	if (st || !wv.rs.corr)
+		return st;
+	struct anvil_result coarse;
+	anvil_result_init(&coarse, r->model);
+	wv.io.nhist = 0;
+	st = waves_impact(s, sc, p, &wv, 0.5 * wv.job.omega,
+			  wv.job.omega_idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
+	anvil_result_free(&coarse);
+	if (!st)
+		add_green_error(r, &coarse);
+	return st;
+}
+
+/* What the result says about how it was computed. */
+static void waves_note(struct anvil_result *r, const struct anvil_params *p,
+		       const struct anvil_plan_row *row, enum anvil_method method, int corr)
+{
+	double t_refl = 2.0 * p->h / p->c1 * 1e6;
+	if (method == ANVIL_METHOD_STATIC)
+		snprintf(r->note, sizeof r->note,
+			 "quasi-static anvil (Hertz + static patch compliance): waves would change the results by ~%.2g%%, within the target; errors include it",
+			 100 * row->model_err);
+	else if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h))
 		snprintf(r->note, sizeof r->note, "elastic half-space (exact response)");
-	else if (!wv->rs.corr)
+	else if (method == ANVIL_METHOD_HALFSPACE && row->why == ANVIL_WHY_SMALL_PLATE)
+		snprintf(r->note, sizeof r->note,
+			 "half-space response: reflections return at 2h/c1 = %.3g us, during the contact, but change the results by ~%.2g%%, within the target; errors include it",
+			 t_refl, 100 * row->model_err);
+	else if (method == ANVIL_METHOD_HALFSPACE && r->ts > 2.0 * p->h / p->c1)
+		snprintf(r->note, sizeof r->note,
+			 "half-space response (effects.waves = halfspace): reflections return at 2h/c1 = %.3g us, during the contact: not the layer",
+			 t_refl);
+	else if (!corr)
 		snprintf(r->note, sizeof r->note,
 			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
-			 2.0 * p->h / p->c1 * 1e6, r->ts * 1e6);
+			 t_refl, r->ts * 1e6);
 }
 
-/* Contact time estimate (s): Zener's plate model for a layer, Hertz for a
- * half-space.  When Zener's ODE cannot finish (lambda* >> 1, the impactor
- * then slows like exp(-t/(m1 alpha*)) = exp(-t/(lambda* T))), a few of
- * those decay times. */
-static double contact_estimate(const struct anvil_params *p, int layer, double t_hertz)
+/* How the scene wants row m (LAYER or HALFSPACE) computed: the planner's
+ * choice with waves = auto or a forced half-space, else the row's own
+ * model.  An explicit request for a row [effects] switches off is run as
+ * the row's own model. */
+static int choose(const struct anvil_scene *sc, enum anvil_model m, const struct anvil_params *p,
+		  struct anvil_plan_row *row, struct anvil_err *err)
 {
-	struct anvil_zener_sol zs;
-	double lam = layer ? p->lambda_star : 0.0;
-	if (anvil_zener_solve(lam, 1e-8, &zs, NULL) == ANVIL_OK && isfinite(zs.tau_s))
-		return fmax(zs.tau_s * p->T, t_hertz);
-	return fmax(3.0 * lam * p->T, t_hertz);
+	int layer = m == ANVIL_MODEL_LAYER && isfinite(p->h);
+	*row = (struct anvil_plan_row){ .exact = 1, .why = ANVIL_WHY_OWN_MODEL,
+					.method = layer ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE };
+	int planned = (sc->effects.waves == ANVIL_WAVES_AUTO && sc->scheme != ANVIL_SCHEME_PAPER) ||
+		      (sc->effects.waves == ANVIL_WAVES_HALFSPACE && layer);
+	if (!planned)
+		return ANVIL_OK;
+	struct anvil_plan pl;
+	int st = anvil_plan_make(sc, NULL, &pl, err);
+	if (!st)
+		*row = pl.row[m];
+	return st;
 }
 
-static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
+static int run_anvil(struct anvil_solver *s, const struct anvil_scene *sc,
 		     const struct anvil_params *p, size_t nhist, struct anvil_result *r,
 		     struct anvil_err *err)
 {
-	struct waves wv = { .lev = &levels[sc->accuracy], .kappa = p->c2 / p->c1 };
-	int layer = r->model == ANVIL_MODEL_LAYER && isfinite(p->h);
-	double t_hertz = anvil_hertz_tau_s() * p->T;
-	double ts = contact_estimate(p, layer, t_hertz);
-	double tchar = fmin(ts, t_hertz); /* sets the bandwidth and the step */
-	int st;
-	wv.hh = layer ? p->h / p->r0 : INFINITY;
-	wv.tau_s = ts * p->c2 / p->r0;
-	wv.omega = fmax(wv.lev->omega_min, wv.lev->cycles / (tchar * p->c2 / p->r0));
-	wv.io = (struct anvil_impact_opts){ .scheme = sc->scheme, .dt = sc->dt,
-					    .dt_auto = tchar / (double)wv.lev->nsteps,
-					    .max_steps = MAX_STEPS, .nhist = nhist };
-	if (sc->dt > 0.25 * ts)
-		return anvil_err_set(err, ANVIL_EINVAL,
-				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
-				     sc->dt * 1e6, ts * 1e6);
-	wv.rs.hs = get_halfspace(s, p->nu, wv.lev->hs_tol, err);
-	if (!wv.rs.hs)
-		return err ? err->status : ANVIL_ENUM;
-	st = waves_impact(s, sc, p, &wv, wv.omega, 0, r, err);
+	struct anvil_plan_row row;
+	int st = choose(sc, r->model, p, &row, err);
 	if (st)
 		return st;
-	if (wv.rs.corr) {
-		struct anvil_result coarse;
-		anvil_result_init(&coarse, r->model);
-		wv.io.nhist = 0;
-		st = waves_impact(s, sc, p, &wv, 0.5 * wv.omega, 1, &coarse, err);
-		anvil_result_free(&coarse);
-		if (st)
-			return st;
-		add_green_error(r, &coarse);
+	enum anvil_method method = row.method;
+	int corr = 0;
+	st = run_waves(s, sc, p, method, nhist, r, &corr, err);
+	/* Causality made the half-space exact only if the contact really ended
+	 * before the reflection came back: else the layer after all. */
+	if (!st && row.why == ANVIL_WHY_LATE_REFLECT && !(r->ts < 2.0 * p->h / p->c1)) {
+		row = (struct anvil_plan_row){ .exact = 1, .method = ANVIL_METHOD_LAYER };
+		method = ANVIL_METHOD_LAYER;
+		st = run_waves(s, sc, p, method, nhist, r, &corr, err);
 	}
-	if (!layer) { /* Zener's plate parameter has no meaning for a half-space */
+	if (st)
+		return st;
+	if (!row.exact && row.why != ANVIL_WHY_FORCED)
+		add_model_error(r, p, row.model_err);
+	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h)) {
+		/* Zener's plate parameter has no meaning for a half-space */
 		r->lambda_star = 0.0;
 		r->Rf_star = 1.0;
 	}
-	waves_note(r, p, &wv);
+	waves_note(r, p, &row, method, corr);
 	return sc->scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, sc->accuracy, err);
 }
 
@@ -334,7 +365,7 @@ int anvil_solver_run(struct anvil_solver *s, const struct anvil_scene *sc,
 		break;
 	case ANVIL_MODEL_LAYER:
 	case ANVIL_MODEL_HALFSPACE:
-		st = run_waves(s, sc, &p, nhist, r, err);
+		st = run_anvil(s, sc, &p, nhist, r, err);
 		break;
 	default:
 		st = anvil_err_set(err, ANVIL_EINVAL, "unknown model %d", (int)m);

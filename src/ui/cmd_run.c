@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/plan.h"
 #include "ui/commands.h"
 #include "ui/common.h"
 #include "ui/output.h"
@@ -34,7 +35,7 @@ static void run_usage(FILE *f)
 	      "      --history FILE   write the time histories of every model as TSV\n"
 	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
 	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
-	      "  -v, --verbose        print the resolved scene and timings on stderr\n"
+	      "  -v, --verbose        print the resolved scene, the plan and timings on stderr\n"
 	      "  -q, --quiet          no progress or informational messages\n",
 	      f);
 }
@@ -167,6 +168,13 @@ static const char *model_message(enum anvil_model m, const struct anvil_err *err
 	return buf;
 }
 
+/* The solver's warnings (a corrupt cache file ignored...) are not errors. */
+static void run_warn(void *ctx, const char *msg)
+{
+	(void)ctx;
+	cli_error("warning: %s", msg);
+}
+
 static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 		      struct anvil_result *res, int *n, int *tol)
 {
@@ -179,10 +187,11 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 		return EXIT_FAIL;
 	}
 	anvil_solver_set_progress(s, run_progress_cb, &prog);
+	anvil_solver_set_warn(s, run_warn, NULL);
 	run_catch_signals(1);
 	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
 		struct anvil_err err = {0};
-		if (!(sc->models & (1u << m)))
+		if (!(anvil_scene_models(sc) & (1u << m)))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
 		int st = anvil_solver_run(s, sc, (enum anvil_model)m, nhist, &res[*n], &err);
@@ -240,7 +249,7 @@ static int run_write(const struct anvil_scene *sc, const struct run_opts *o,
 		st = run_fill(out, o->out, out_results(out->f, fmt, sc, res, n));
 	if (!st && o->history)
 		st = cli_out_commit(hist);
-	if (!st && !to_file)
+	if (!st && !to_file && sc->output.table)
 		st = out_results(out->f, fmt, sc, res, n);
 	if (!st)
 		st = cli_out_commit(out);
@@ -264,7 +273,33 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 	return EXIT_OK;
 }
 
-static int run_scene(const struct run_opts *o)
+/* -v: how the planner will compute the scene, on stderr. */
+static int run_plan(const struct anvil_scene *sc)
+{
+	struct anvil_plan pl;
+	struct anvil_err err = {0};
+	struct anvil_solver *s = anvil_solver_alloc(); /* for its cache only */
+	int st = s ? anvil_plan_make(sc, anvil_solver_cache(s), &pl, &err) : ANVIL_ENOMEM;
+	anvil_solver_free(s);
+	if (st) {
+		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));
+		return EXIT_FAIL;
+	}
+	fputs("# plan\n", stderr);
+	anvil_plan_print(stderr, &pl);
+	return EXIT_OK;
+}
+
+/* The scene's [output] for what the command line leaves unset. */
+static void run_output(struct run_opts *o, const struct anvil_scene *sc)
+{
+	if (!o->history && sc->output.histories[0])
+		o->history = sc->output.histories;
+	if (!o->png && sc->output.charts[0])
+		o->png = sc->output.charts;
+}
+
+static int run_scene(struct run_opts *o)
 {
 	struct anvil_scene sc;
 	struct anvil_result res[ANVIL_MODEL_COUNT];
@@ -273,12 +308,13 @@ static int run_scene(const struct run_opts *o)
 	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);
 	if (st)
 		return cli_exit_code(st);
-	if (!(sc.models & ANVIL_MODELS_ALL)) {
-		cli_error("no model to run (set solver.models or use -m)");
+	if (!anvil_scene_models(&sc)) {
+		cli_error("no model to run (set solver.models or use -m; [effects] may switch them off)");
 		return EXIT_USAGE;
 	}
-	if (o->verbose && anvil_scene_write(&sc, stderr))
+	if (o->verbose && (anvil_scene_write(&sc, stderr) || run_plan(&sc)))
 		return EXIT_FAIL;
+	run_output(o, &sc);
 	/* Open the outputs first: a bad path fails before minutes of work. */
 	if (cli_out_open(&out, o->out))
 		return EXIT_FAIL;

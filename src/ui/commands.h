@@ -4,11 +4,20 @@
 #ifndef ANVIL_UI_COMMANDS_H
 #define ANVIL_UI_COMMANDS_H
 
+#include <stdio.h>
+
 int anvil_cmd_run(int argc, char **argv);       /* src/ui/cmd_run.c */
 int anvil_cmd_table(int argc, char **argv);     /* src/ui/cmd_table.c */
 int anvil_cmd_materials(int argc, char **argv); /* src/ui/cmd_materials.c */
 int anvil_cmd_accuracy(int argc, char **argv);  /* src/ui/cmd_accuracy.c */
 int anvil_cmd_plot(int argc, char **argv);      /* src/ui/cmd_plot.c */
 int anvil_cmd_tui(int argc, char **argv);       /* src/ui/tui.c */
+int anvil_cmd_plan(int argc, char **argv);      /* src/ui/cmd_plan.c */
+int anvil_cmd_field(int argc, char **argv);     /* src/ui/cmd_field.c */
+int anvil_cmd_map(int argc, char **argv);       /* src/ui/cmd_field.c */
+
+/* The plan as `anvil plan` prints it (also for `anvil run -v`). */
+struct anvil_plan;
+void anvil_plan_print(FILE *f, const struct anvil_plan *pl); /* src/ui/cmd_plan.c */
 
 #endif

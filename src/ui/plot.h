@@ -196,6 +196,59 @@ int plot_render(const char *script, size_t len, const char *png_path);
 int plot_png(const struct plot_chart *c, const struct plot_opts *o,
 	     const char *png_path, const char *script_path);
 
+/* ---- heat maps (`anvil map`) ------------------------------------------------
+ *
+ * A quantity over the (r, z) half-plane at one instant, z (depth) drawn
+ * downwards, with the wave fronts of that instant drawn over it. */
+
+#define PLOT_FRONT_POINTS 48
+#define PLOT_MAX_FRONTS 8
+
+/* The kinds of wave front, each with its own line. */
+enum plot_front_kind { PLOT_FRONT_P, PLOT_FRONT_S, PLOT_FRONT_PP, PLOT_FRONT_SS,
+		       PLOT_FRONT_R, PLOT_FRONT_KIND_COUNT };
+
+/* A wave front: a polyline in (r, z), metres, with a legend label. */
+struct plot_front {
+	enum plot_front_kind kind;
+	char label[PLOT_LABEL_MAX]; /* anvil's own text, enhanced */
+	size_t n;
+	double r[PLOT_FRONT_POINTS], z[PLOT_FRONT_POINTS];
+};
+
+struct plot_heatmap {
+	char title[PLOT_TITLE_MAX];   /* drawn noenhanced */
+	char cblabel[PLOT_LABEL_MAX]; /* colour bar, anvil's own text, enhanced */
+	size_t nr, nz;
+	double r_lo, r_hi, z_lo, z_hi; /* the grid's extent, m */
+	const double *v;   /* nz x nr values in the colour bar's unit, row by
+			      row in z (borrowed); NaN: not drawn */
+	int diverging;     /* signed quantity: colours symmetric about 0 */
+	int nfronts;
+	struct plot_front fronts[PLOT_MAX_FRONTS];
+	char note[PLOT_TITLE_MAX];   /* a line under the map (enhanced), or "" */
+};
+
+/* The fronts at time t (s) of waves leaving the loaded patch (a disk of
+ * radius r0 on z = 0): P (speed c1) and S (c2), each the envelope of the
+ * spheres from the patch (flat under it, a quarter circle around its rim),
+ * their reflections from the bottom face z = h (none for h = INFINITY),
+ * and the Rayleigh front on the surface at r = r0 + cR t.  Only fronts that
+ * cross the map's extent are added; the note says how far c1 t, c2 t and
+ * cR t have come. */
+void plot_heatmap_fronts(struct plot_heatmap *hm, double t, double r0, double c1,
+			 double c2, double cR, double h);
+
+/* The gnuplot script of a heat map (data inline, PNG to standard output,
+ * as plot_write).  ANVIL_EINVAL when there is no finite value, ANVIL_EIO. */
+int plot_heatmap_write(FILE *f, const struct plot_heatmap *hm,
+		       const struct plot_opts *o);
+
+/* Script to script_path (if not NULL, "-" standard output) and PNG to
+ * png_path (if not NULL), as plot_png.  0, or 1 with the error printed. */
+int plot_heatmap_png(const struct plot_heatmap *hm, const struct plot_opts *o,
+		     const char *png_path, const char *script_path);
+
 /* Write the charts of one run (histories of every model in res that has
  * them: force, velocity, deflection) into directory dir as PNG files.
  * The paths written are listed, one per line, into paths (may be NULL).

@@ -1,0 +1,134 @@
+/* cache.h: layer responses made once and kept ("plan once, execute many").
+ *
+ * Once made dimensionless (green.h) the layer's centre response depends only
+ * on h/r0, Poisson's ratio and the accuracy level, plus the window
+ * [0, tau_end] and the bandwidth omega it was computed for.  A response
+ * with a longer window and at least the bandwidth serves any impact that
+ * needs less, so a change of velocity, mass or impactor material re-runs
+ * without recomputing it.  To make that happen often, windows and
+ * bandwidths are rounded up to a geometric grid (ANVIL_CACHE_STEPS points
+ * per octave: at most 19 % more than asked, 9 % on average).
+ *
+ * Two levels:
+ *   memory  a least-recently-used table of ANVIL_CACHE_SLOTS responses,
+ *           layer corrections and exact half-spaces;
+ *   disk    optional: one file per (h/r0, nu, level, omega) in a directory
+ *           (anvil_cache_default_dir: $XDG_CACHE_HOME/anvil), written
+ *           atomically (a temporary file renamed into place) so that
+ *           concurrent runs never see half a file.  A file that fails its
+ *           checks (size, checksum, samples) is ignored with a warning and
+ *           replaced; one from another format or anvil version is ignored
+ *           quietly and replaced.
+ *
+ * The file: a 112-byte header (struct in cache.c: magic "ANVILRSP", format
+ * version, byte-order mark, anvil version, the key h/r0, nu, level, omega
+ * and its grid index, the window tau_end, the sample step, the error
+ * estimate, the sample count and an FNV-1a 64-bit checksum of header and
+ * samples), then the ramp samples as native doubles.  A file is only read
+ * on a machine with the same byte order and double format.
+ *
+ * One cache is used from one thread at a time (the solver's). */
+#ifndef ANVIL_CACHE_H
+#define ANVIL_CACHE_H
+
+#include <stddef.h>
+
+#include "scene.h"
+#include "status.h"
+
+struct anvil_green;     /* green.h */
+struct anvil_halfspace; /* halfspace.h */
+
+#define ANVIL_CACHE_STEPS 4  /* grid points per octave */
+#define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
+#define ANVIL_CACHE_FORMAT 1 /* disk format version */
+
+/* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
+ * value is >= x > 0. */
+double anvil_cache_grid(int idx);
+int anvil_cache_grid_up(double x);
+
+/* What a layer correction depends on (green.h's dimensionless form). */
+struct anvil_cache_key {
+	double hh, nu;           /* h/r0, Poisson's ratio */
+	enum anvil_accuracy acc; /* the inversion settings' level */
+	int omega_idx;           /* bandwidth omega = anvil_cache_grid(omega_idx) */
+};
+
+/* Where a response came from. */
+enum anvil_cache_where { ANVIL_CACHE_NONE, ANVIL_CACHE_MEMORY, ANVIL_CACHE_DISK };
+
+struct anvil_cache_stats {
+	unsigned long mem_hits, disk_hits, misses;
+	unsigned long disk_writes;   /* files written */
+	unsigned long disk_corrupt;  /* files ignored with a warning */
+	unsigned long disk_stale;    /* other format or anvil version: ignored */
+	unsigned long disk_failures; /* files that could not be written */
+};
+
+/* A warning for the user ("cache: FILE: bad checksum; ignored"); the
+ * cache never prints. */
+typedef void (*anvil_warn_fn)(void *ctx, const char *msg);
+
+struct anvil_cache;
+
+/* An empty cache, memory only.  NULL when out of memory. */
+struct anvil_cache *anvil_cache_alloc(void);
+void anvil_cache_free(struct anvil_cache *c); /* NULL is a no-op */
+
+/* Use directory dir (created when missing, mode 0700) for the disk level;
+ * NULL or "" turns the disk level off.  The directory is only touched when
+ * a response is looked up or stored.  ANVIL_EINVAL for a name too long,
+ * ANVIL_ENOMEM. */
+int anvil_cache_set_dir(struct anvil_cache *c, const char *dir, struct anvil_err *err);
+/* The directory in use, or NULL when the disk level is off. */
+const char *anvil_cache_dir(const struct anvil_cache *c);
+void anvil_cache_set_warn(struct anvil_cache *c, anvil_warn_fn fn, void *ctx);
+void anvil_cache_stats(const struct anvil_cache *c, struct anvil_cache_stats *st);
+
+/* The default directory from the environment into buf: "" (disk caching
+ * off) when ANVIL_NO_CACHE is set to anything but "" or "0", else
+ * $XDG_CACHE_HOME/anvil (an absolute XDG_CACHE_HOME only, as the XDG spec
+ * says), else $HOME/.cache/anvil, else "".  Returns buf. */
+char *anvil_cache_default_dir(char *buf, size_t n);
+
+/* The exact half-space response for nu at tolerance tol or better, made
+ * and kept in memory on first use (it costs well under a millisecond).
+ * NULL with err set as anvil_halfspace_alloc does. */
+const struct anvil_halfspace *anvil_cache_halfspace(struct anvil_cache *c, double nu, double tol,
+						    struct anvil_err *err);
+
+/* A layer correction for key covering [0, tau_end]: one with at least the
+ * key's bandwidth (exactly it when exact: the coarse twin of an error
+ * estimate must be what it says), from memory, else from disk (then kept
+ * in memory).  NULL on a miss.  *where (may be NULL) says which. */
+const struct anvil_green *anvil_cache_find(struct anvil_cache *c, const struct anvil_cache_key *key,
+					   double tau_end, int exact, enum anvil_cache_where *where);
+/* Whether find would succeed, without loading anything (for the planner's
+ * cost estimate): ANVIL_CACHE_MEMORY, _DISK (a file of the right name and
+ * a large enough window; its checks come when it is read) or _NONE. */
+enum anvil_cache_where anvil_cache_probe(const struct anvil_cache *c,
+					 const struct anvil_cache_key *key, double tau_end,
+					 int exact);
+/* Keep g (the cache takes it over) under key, evicting the least recently
+ * used response when full, and write it to disk when the disk level is on
+ * (a failure there is a warning, not an error).  Returns g. */
+const struct anvil_green *anvil_cache_add(struct anvil_cache *c, const struct anvil_cache_key *key,
+					  struct anvil_green *g);
+
+/* The disk format, for the cache itself and for tests. */
+/* The file for key in dir ("DIR/corr-LEVEL-HASH.bin") into buf; ANVIL_EINVAL
+ * when it does not fit. */
+int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *buf, size_t n);
+/* Write g for key to path atomically (a temporary file beside it, flushed
+ * and synced, renamed over path).  ANVIL_EIO with the reason in err. */
+int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
+		      const struct anvil_green *g, struct anvil_err *err);
+/* Read the response stored at path for key.  NULL with err:
+ * ANVIL_ENOTFOUND (no file), ANVIL_EPARSE (another format or anvil
+ * version, or another key: ignore quietly), ANVIL_EIO (corrupt: short,
+ * bad checksum or samples; warn), ANVIL_ENOMEM. */
+struct anvil_green *anvil_cache_read(const char *path, const struct anvil_cache_key *key,
+				     struct anvil_err *err);
+
+#endif

@@ -1,0 +1,214 @@
+/* plan.h: which effects a scene needs, and the cheapest way to get them.
+ *
+ * Before anything expensive runs, the planner estimates from closed forms
+ * and one small ODE the physics that decides what matters:
+ *   - the contact time (Hertz, Zener's plate, and the quasi-static anvil:
+ *     Hertz plus the anvil's static compliance under the patch);
+ *   - when the bottom reflection returns, 2h/c1;
+ *   - the fraction of the impact energy radiated as elastic waves into a
+ *     half-space (Hunter 1957; the form used is derived in plan.c);
+ *   - how much the layer's bending changes P_max, t_s and R_f (Zener);
+ *   - the Hertz contact pressure, alpha_A, h/r0 for the warnings;
+ *   - what the wave solver will cost (a model of its work, calibrated on
+ *     the machine in scripts/bench).
+ * With waves = auto it then picks, for the layer and halfspace rows, the
+ * cheapest of
+ *   static     quasi-static: Hertz plus the static patch compliance
+ *              3 (1 - nu^2) / (4 E r0) P (the exact late-time response of a
+ *              half-space), no waves;
+ *   halfspace  the exact half-space response, no reflections;
+ *   layer      the half-space plus the layer correction (green.h),
+ * whose estimated deviation from the row's full model, times a safety
+ * factor ANVIL_PLAN_SAFETY, is within the scene's accuracy target.  A
+ * half-space is exact for a layer when the reflection returns after the
+ * contact (causality: the correction is zero before 2h/c1); the solver
+ * checks that against the computed t_s and falls back to the layer if not.
+ *
+ * It warns when the scene needs what anvil does not model: yielding (the
+ * Hertz mean pressure against 1.1 Y of the softer body), a super-seismic
+ * phase (alpha_A > 0.1), thin-plate theory out of its range (plate on,
+ * h/r0 > 1), a scene the layer solver will refuse, a forced half-space
+ * that is not exact.
+ *
+ * The planner never prints: it fills a struct anvil_plan (decisions, the
+ * reason code of each, the figures behind it, costs, warnings) and the
+ * front ends format it (anvil plan, anvil run -v). */
+#ifndef ANVIL_PLAN_H
+#define ANVIL_PLAN_H
+
+#include "cache.h"
+#include "params.h"
+#include "scene.h"
+#include "status.h"
+
+/* The wave solver refuses a run needing more (it would grind for minutes):
+ * very thin layers have contacts thousands of Hertz times long. */
+#define ANVIL_MAX_STEPS 40000
+#define ANVIL_MAX_TERMS 20000
+/* An approximation is taken when its estimated deviation times this is
+ * within the accuracy target.  On a grid of 405 scenes (three material
+ * pairs, h from r0 to inf, V0 from 1 cm/s to 100 m/s, three accuracies)
+ * the actual deviation from the full model was at most 1.05 times the
+ * estimate (tests/test_plan.c keeps a sample of them); the rest of the
+ * factor leaves room for the numerical error. */
+#define ANVIL_PLAN_SAFETY 3.0
+
+/* ---- the wave solver's numerical job (shared with solver.c) ---- */
+
+struct anvil_wave_job {
+	double hh;       /* h/r0; INFINITY for a half-space (no correction) */
+	double ts;       /* contact time estimate, s */
+	double tau_s;    /* the same in tau = t c2/r0 */
+	double omega;    /* bandwidth of the layer correction (dimensionless) */
+	int omega_idx;   /* the cache grid index that covers it */
+	double dt;       /* time step, s (the scene's or the level's) */
+	double hs_tol;   /* tolerance of the exact half-space response */
+	double nsteps;   /* steps per contact time the level asks for */
+};
+
+/* The job for scene sc (params p) when the anvil is a layer (layer = 1 and
+ * h finite) or a half-space (with ts the contact time to plan for: 0 for
+ * the usual Hertz/Zener estimate). */
+void anvil_wave_job(const struct anvil_params *p, const struct anvil_scene *sc, int layer,
+		    double ts, struct anvil_wave_job *j);
+/* The response window of attempt a (0, 1, ...): 1.4 tau_s 2^a + 2. */
+double anvil_wave_window(const struct anvil_wave_job *j, int attempt);
+
+/* ---- decisions ---- */
+
+enum anvil_method {
+	ANVIL_METHOD_SKIP,      /* not computed (unused in a plan's rows) */
+	ANVIL_METHOD_HERTZ,     /* quasi-static Hertz, rigid layer */
+	ANVIL_METHOD_ZENER,     /* Zener's thin plate */
+	ANVIL_METHOD_STATIC,    /* quasi-static Hertz plus the static patch compliance */
+	ANVIL_METHOD_HALFSPACE, /* the exact half-space response */
+	ANVIL_METHOD_LAYER,     /* the half-space plus the layer correction */
+	ANVIL_METHOD_COUNT
+};
+const char *anvil_method_name(enum anvil_method m);
+
+/* Why a row is computed the way it is; anvil_plan_why_text() says it in
+ * words. */
+enum anvil_plan_why {
+	ANVIL_WHY_NOT_ASKED,    /* not in solver.models */
+	ANVIL_WHY_EFFECT_OFF,   /* [effects] switches it off */
+	ANVIL_WHY_OWN_MODEL,    /* hertz, zener: their own closed form or ODE */
+	ANVIL_WHY_FORCED,       /* waves = layer or halfspace, or scheme = paper */
+	ANVIL_WHY_IS_HALFSPACE, /* h = inf: the layer is the half-space */
+	ANVIL_WHY_LATE_REFLECT, /* reflection after the contact: half-space exact */
+	ANVIL_WHY_SMALL_PLATE,  /* reflections during contact, bending small */
+	ANVIL_WHY_SMALL_WAVES,  /* radiated energy below the target: quasi-static */
+	ANVIL_WHY_NEEDS_LAYER,  /* reflections return during the contact and matter */
+	ANVIL_WHY_NEEDS_WAVES,  /* the radiated energy matters */
+	ANVIL_WHY_COUNT
+};
+const char *anvil_plan_why_text(enum anvil_plan_why w);
+
+/* The figures the planner computes; anvil_plan_fig_info() names them. */
+enum anvil_fig {
+	ANVIL_FIG_TARGET,    /* the accuracy target (relative) */
+	ANVIL_FIG_H_R0,      /* h/r0 */
+	ANVIL_FIG_T_HERTZ,   /* Hertz contact time 3.21807 T, s */
+	ANVIL_FIG_T_STATIC,  /* contact time of the quasi-static anvil, s */
+	ANVIL_FIG_T_ZENER,   /* contact time of Zener's plate, s */
+	ANVIL_FIG_T_REFLECT, /* 2h/c1, s */
+	ANVIL_FIG_RADIATED,  /* radiated fraction of the impact energy (half-space) */
+	ANVIL_FIG_BENDING,   /* relative change of P_max, t_s, R_f by bending (Zener) */
+	ANVIL_FIG_LAMBDA,    /* Zener's lambda* */
+	ANVIL_FIG_ALPHA_A,   /* the super-seismic parameter alpha_A */
+	ANVIL_FIG_P_MAX,     /* Hertz peak force, N */
+	ANVIL_FIG_A_HERTZ,   /* Hertz contact radius sqrt(r0 alpha_max), m */
+	ANVIL_FIG_P_MEAN,    /* mean contact pressure P_max / (pi a^2), Pa */
+	ANVIL_FIG_YIELD,     /* 1.1 Y of the softer body, Pa; 0 when unknown */
+	ANVIL_FIG_STEPS,     /* time steps of a wave run (first window) */
+	ANVIL_FIG_TERMS,     /* Fourier terms of the layer correction */
+	ANVIL_FIG_COUNT
+};
+
+enum anvil_fig_unit {
+	ANVIL_UNIT_NONE,     /* a plain number */
+	ANVIL_UNIT_FRACTION, /* a fraction (shown as per cent) */
+	ANVIL_UNIT_TIME,     /* s */
+	ANVIL_UNIT_FORCE,    /* N */
+	ANVIL_UNIT_LENGTH,   /* m */
+	ANVIL_UNIT_PRESSURE  /* Pa */
+};
+
+struct anvil_fig_info {
+	const char *name; /* short symbol: "2h/c1", "t_s(static)" */
+	const char *what; /* a few words */
+	enum anvil_fig_unit unit;
+};
+const struct anvil_fig_info *anvil_plan_fig_info(enum anvil_fig f);
+
+#define ANVIL_PLAN_NFIG 4
+
+/* How one row (model) of the results is computed.  Every row has a
+ * method, the one the solver uses when asked for that model; run says
+ * whether `anvil run` computes it (off says why not). */
+struct anvil_plan_row {
+	int run;
+	enum anvil_plan_why off;  /* ANVIL_WHY_NOT_ASKED or _EFFECT_OFF when !run */
+	enum anvil_method method;
+	enum anvil_plan_why why;
+	int exact;          /* the method is the row's model to its numerical accuracy */
+	double model_err;   /* estimated relative deviation from the row's model (0: exact) */
+	double cost;        /* estimated seconds for this method */
+	double cost_full;   /* estimated seconds for the row's full model */
+	enum anvil_cache_where cached; /* the layer response: found where (NONE: to compute) */
+	int nfig;
+	enum anvil_fig fig[ANVIL_PLAN_NFIG]; /* the figures behind the decision */
+};
+
+enum anvil_plan_warn {
+	ANVIL_WARN_YIELD,        /* the Hertz pressure exceeds the yield onset */
+	ANVIL_WARN_YIELD_UNKNOWN,/* no yield stress known: plasticity not checked */
+	ANVIL_WARN_SUPERSEISMIC, /* alpha_A > 0.1 */
+	ANVIL_WARN_PLATE_RANGE,  /* Zener with h/r0 > 1 (or a half-space) */
+	ANVIL_WARN_REFUSE,       /* the layer solver will refuse the scene */
+	ANVIL_WARN_NOT_EXACT,    /* waves = halfspace with reflections during contact */
+	ANVIL_WARN_FIELD,        /* a field is asked for: the field module's job */
+	ANVIL_WARN_COUNT
+};
+const char *anvil_plan_warn_text(enum anvil_plan_warn w);
+
+#define ANVIL_PLAN_MAXWARN ANVIL_WARN_COUNT
+#define ANVIL_PLAN_YIELD_ONSET 1.1 /* p_m = 1.1 Y at first yield (Johnson 1985, sec. 6.2) */
+#define ANVIL_PLAN_ALPHA_A_MAX 0.1 /* alpha_A above this is not small (paper, sec. 4) */
+
+struct anvil_plan_warning {
+	enum anvil_plan_warn kind;
+	int nfig;
+	enum anvil_fig fig[ANVIL_PLAN_NFIG];
+};
+
+struct anvil_plan {
+	double fig[ANVIL_FIG_COUNT];
+	struct anvil_plan_row row[ANVIL_MODEL_COUNT]; /* by enum anvil_model */
+	int nwarn;
+	struct anvil_plan_warning warn[ANVIL_PLAN_MAXWARN];
+	char softer[ANVIL_NAME_MAX]; /* the body that yields first ("" if unknown) */
+	enum anvil_waves waves;      /* the scene's setting */
+	enum anvil_fieldmode field;  /* the scene's setting */
+	double cost;                 /* estimated seconds for the rows run */
+};
+
+/* Plan scene sc.  cache (may be NULL) is probed, never changed, to price
+ * responses already made.  Returns ANVIL_OK, or ANVIL_EINVAL (with err) for
+ * a scene that fails its checks. */
+int anvil_plan_make(const struct anvil_scene *sc, const struct anvil_cache *cache,
+		    struct anvil_plan *pl, struct anvil_err *err);
+
+/* The pieces, for the solver and for tests. */
+/* Fraction of the impact energy radiated into an elastic half-space during
+ * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
+double anvil_plan_radiated(const struct anvil_params *p);
+/* xi(nu): the real part of the centre mobility of a point force on a
+ * half-space is xi omega^2 / (rho c2^3) at low frequency. */
+double anvil_plan_xi(double nu);
+/* Contact time and peak force of the quasi-static anvil (Hertz plus the
+ * static patch compliance), from its energy integral.  ANVIL_ENUM when the
+ * quadrature fails. */
+int anvil_plan_static(const struct anvil_params *p, double *ts, double *pmax);
+
+#endif

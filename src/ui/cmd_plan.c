@@ -1,0 +1,260 @@
+/* cmd_plan.c: `anvil plan`, what the planner (src/core/plan.h) decides for
+ * a scene and why: the estimates it made, how each row of `anvil run` will
+ * be computed with its reason, figures and estimated cost, and the
+ * warnings.  Nothing is run.  anvil_plan_print() also serves `anvil run -v`. */
+#include <getopt.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/plan.h"
+#include "ui/commands.h"
+#include "ui/common.h"
+#include "ui/output.h"
+
+struct plan_opts {
+	const char *scene;
+	char *models; /* "solver.models=..." built from -m, owned */
+	int format;
+	struct cli_sets sets;
+};
+
+static void plan_usage(FILE *f)
+{
+	fputs("usage: anvil plan [SCENE] [-s KEY=VALUE]... [-m MODELS] [--format table|tsv]\n"
+	      "Show how 'anvil run' will compute the scene, without running it: the\n"
+	      "physical estimates, each model's method with its reason, figures and\n"
+	      "estimated cost, and warnings about effects anvil does not model.\n"
+	      "  -s, --set KEY=VALUE  change a scene key, e.g. -s effects.waves=auto\n"
+	      "  -m, --models LIST    models, e.g. layer,halfspace (as -s solver.models=)\n"
+	      "  -f, --format FORMAT  table (default) or tsv (one record per line:\n"
+	      "                       figure, row, warning, total)\n",
+	      f);
+}
+
+static const struct option plan_longopts[] = {
+	{"set", required_argument, NULL, 's'},
+	{"models", required_argument, NULL, 'm'},
+	{"format", required_argument, NULL, 'f'},
+	{"help", no_argument, NULL, 'h'},
+	{NULL, 0, NULL, 0}};
+
+/* ---- numbers with units, for people ---- */
+
+/* A figure in the unit people read it in: us, kN, mm, MPa, %. */
+static char *fig_text(char *buf, size_t n, enum anvil_fig_unit u, double x)
+{
+	static const struct {
+		double scale;
+		const char *unit;
+	} units[] = {
+		[ANVIL_UNIT_NONE] = {1, ""},     [ANVIL_UNIT_FRACTION] = {100, " %"},
+		[ANVIL_UNIT_TIME] = {1e6, " us"}, [ANVIL_UNIT_FORCE] = {1e-3, " kN"},
+		[ANVIL_UNIT_LENGTH] = {1e3, " mm"}, [ANVIL_UNIT_PRESSURE] = {1e-6, " MPa"},
+	};
+	if (isnan(x) || isinf(x))
+		snprintf(buf, n, "%s", isnan(x) ? "-" : "inf");
+	else
+		snprintf(buf, n, "%.4g%s", x * units[u].scale, units[u].unit);
+	return buf;
+}
+
+static char *cost_text(char *buf, size_t n, double s)
+{
+	if (s < 1e-3)
+		snprintf(buf, n, "%.3g us", s * 1e6);
+	else if (s < 1)
+		snprintf(buf, n, "%.3g ms", s * 1e3);
+	else
+		snprintf(buf, n, "%.3g s", s);
+	return buf;
+}
+
+static void fig_list(FILE *f, const struct anvil_plan *pl, const enum anvil_fig *fig, int nfig)
+{
+	char v[48];
+	for (int i = 0; i < nfig; i++) {
+		const struct anvil_fig_info *fi = anvil_plan_fig_info(fig[i]);
+		fprintf(f, "%s%s = %s", i ? ", " : "      ", fi->name,
+			fig_text(v, sizeof v, fi->unit, pl->fig[fig[i]]));
+	}
+	if (nfig)
+		fputc('\n', f);
+}
+
+/* ---- the table ---- */
+
+static void print_estimates(FILE *f, const struct anvil_plan *pl)
+{
+	char v[48];
+	fputs("estimates\n", f);
+	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
+		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
+		if (i == ANVIL_FIG_YIELD && !(pl->fig[i] > 0))
+			continue;
+		fprintf(f, "  %-12s %-12s %s%s%s\n", fi->name, fig_text(v, sizeof v, fi->unit, pl->fig[i]),
+			fi->what, i == ANVIL_FIG_YIELD ? ": " : "", i == ANVIL_FIG_YIELD ? pl->softer : "");
+	}
+}
+
+static const char *cached_text(enum anvil_cache_where w)
+{
+	return w == ANVIL_CACHE_MEMORY ? "in memory" : w == ANVIL_CACHE_DISK ? "on disk" : "to compute";
+}
+
+static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *r,
+		      const struct anvil_plan *pl)
+{
+	char c[32], full[32], e[48];
+	if (!r->run) {
+		fprintf(f, "  %-10s not run: %s\n", anvil_model_name(m), anvil_plan_why_text(r->off));
+		return;
+	}
+	fprintf(f, "  %-10s %-10s %-18s ~%s", anvil_model_name(m), anvil_method_name(r->method),
+		r->exact ? "exact" : (snprintf(e, sizeof e, "within ~%.2g %%", 100 * r->model_err), e),
+		cost_text(c, sizeof c, r->cost));
+	if (r->cost_full > 1.5 * r->cost)
+		fprintf(f, "  (%s model: ~%s, %.0fx)", anvil_model_name(m),
+			cost_text(full, sizeof full, r->cost_full), r->cost_full / r->cost);
+	if (r->method == ANVIL_METHOD_LAYER && m == ANVIL_MODEL_LAYER && r->cost_full > 0)
+		fprintf(f, "  [layer response %s]", cached_text(r->cached));
+	fprintf(f, "\n      %s\n", anvil_plan_why_text(r->why));
+	fig_list(f, pl, r->fig, r->nfig);
+}
+
+void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
+{
+	char c[32], full[32];
+	double cost_full = 0;
+	print_estimates(f, pl);
+	fprintf(f, "\nmodels (effects.waves = %s)\n", anvil_waves_name(pl->waves));
+	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
+		print_row(f, (enum anvil_model)m, &pl->row[m], pl);
+		cost_full += pl->row[m].run ? pl->row[m].cost_full : 0.0;
+	}
+	fprintf(f, "estimated cost: ~%s (full models: ~%s)\n", cost_text(c, sizeof c, pl->cost),
+		cost_text(full, sizeof full, cost_full));
+	if (pl->field != ANVIL_FIELDMODE_OFF)
+		fprintf(f, "field: %s\n", anvil_fieldmode_name(pl->field));
+	if (pl->nwarn)
+		fputs("\nwarnings\n", f);
+	for (int i = 0; i < pl->nwarn; i++) {
+		const struct anvil_plan_warning *w = &pl->warn[i];
+		fprintf(f, "  %s%s%s%s\n", anvil_plan_warn_text(w->kind),
+			w->kind == ANVIL_WARN_YIELD ? " (" : "", w->kind == ANVIL_WARN_YIELD ? pl->softer : "",
+			w->kind == ANVIL_WARN_YIELD ? ")" : "");
+		fig_list(f, pl, w->fig, w->nfig);
+	}
+}
+
+/* ---- tsv ---- */
+
+/* One record per line, SI values: "figure NAME VALUE", "row MODEL RUN
+ * METHOD EXACT MODEL_ERR COST COST_FULL CACHED WHY", "warning KIND",
+ * "total COST". */
+static void print_tsv(FILE *f, const struct anvil_plan *pl)
+{
+	static const char *const warn_names[ANVIL_WARN_COUNT] = {
+		"yield", "yield-unknown", "superseismic", "plate-range", "refuse", "not-exact", "field"};
+	char v[40];
+	for (int i = 0; i < ANVIL_FIG_COUNT; i++)
+		fprintf(f, "figure\t%s\t%s\n", anvil_plan_fig_info((enum anvil_fig)i)->name,
+			out_num(v, pl->fig[i], NULL));
+	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
+		const struct anvil_plan_row *r = &pl->row[m];
+		fprintf(f, "row\t%s\t%d\t%s\t%d\t%.6g\t%.6g\t%.6g\t%s\t%s\n",
+			anvil_model_name((enum anvil_model)m), r->run, anvil_method_name(r->method),
+			r->exact, r->model_err, r->cost, r->cost_full, cached_text(r->cached),
+			anvil_plan_why_text(r->run ? r->why : r->off));
+	}
+	for (int i = 0; i < pl->nwarn; i++)
+		fprintf(f, "warning\t%s\n", warn_names[pl->warn[i].kind]);
+	fprintf(f, "total\t%.6g\n", pl->cost);
+}
+
+/* ---- the command ---- */
+
+static int plan_option(struct plan_opts *o, int c, char **argv)
+{
+	size_t n;
+	switch (c) {
+	case 's':
+		return cli_sets_add(&o->sets, optarg) ? EXIT_FAIL : -1;
+	case 'm':
+		n = strlen(optarg) + sizeof "solver.models=";
+		free(o->models);
+		if (!(o->models = malloc(n)))
+			return EXIT_FAIL;
+		snprintf(o->models, n, "solver.models=%s", optarg);
+		return -1;
+	case 'f':
+		o->format = out_format_parse("plan", optarg, OUT_ALLOW(OUT_TABLE) | OUT_ALLOW(OUT_TSV));
+		return o->format < 0 ? EXIT_USAGE : -1;
+	case 'h':
+		plan_usage(stdout);
+		return EXIT_OK;
+	}
+	return out_getopt_error("plan", c, argv);
+}
+
+/* -1 to go on, else the exit code. */
+static int plan_parse(int argc, char **argv, struct plan_opts *o)
+{
+	int c, code;
+	opterr = 0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, ":s:m:f:h", plan_longopts, NULL)) != -1)
+		if ((code = plan_option(o, c, argv)) >= 0)
+			return code;
+	if (optind < argc)
+		o->scene = argv[optind++];
+	if (optind < argc)
+		return out_usage("plan", "unexpected argument '%s'", argv[optind]);
+	if (o->models && cli_sets_add(&o->sets, o->models))
+		return EXIT_FAIL;
+	return -1;
+}
+
+static int plan_scene(const struct plan_opts *o)
+{
+	struct anvil_scene sc;
+	struct anvil_plan pl;
+	struct anvil_err err = {0};
+	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);
+	if (st)
+		return cli_exit_code(st);
+	/* a solver only for its cache: the plan says which responses are there */
+	struct anvil_solver *s = anvil_solver_alloc();
+	if (!s) {
+		cli_error("out of memory");
+		return EXIT_FAIL;
+	}
+	st = anvil_plan_make(&sc, anvil_solver_cache(s), &pl, &err);
+	anvil_solver_free(s);
+	if (st) {
+		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));
+		return cli_exit_code(st);
+	}
+	if (o->format == OUT_TSV) {
+		print_tsv(stdout, &pl);
+	} else {
+		fprintf(stdout, "%s\n", sc.title[0] ? sc.title : "scene");
+		anvil_plan_print(stdout, &pl);
+	}
+	if (fflush(stdout) != 0 || ferror(stdout)) {
+		cli_error("standard output: write failed");
+		return EXIT_FAIL;
+	}
+	return EXIT_OK;
+}
+
+int anvil_cmd_plan(int argc, char **argv)
+{
+	struct plan_opts o = {0};
+	int code = plan_parse(argc, argv, &o);
+	if (code < 0)
+		code = plan_scene(&o);
+	cli_sets_free(&o.sets);
+	free(o.models);
+	return code;
+}
