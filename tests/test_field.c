@@ -26,6 +26,7 @@
 
 #include "field.h"
 #include "field_kernel.h"
+#include "kernel.h"
 #include "tap.h"
 
 typedef double complex cplx;
@@ -142,7 +143,7 @@ static double static_integrand(double k, void *vp)
 {
 	const struct sq *p = vp;
 	double o[FK_COUNT], j0 = gsl_sf_bessel_J0(k * p->r), j1 = gsl_sf_bessel_J1(k * p->r);
-	double j1r = p->r > 0 ? j1 / p->r : 0.5 * k, zh = anvil_fk_zhat(k);
+	double j1r = p->r > 0 ? j1 / p->r : 0.5 * k, zh = anvil_kernel_zhat(k);
 	anvil_fk_static(k, p->z, NU, o);
 	switch (p->h) {
 	case HS_U: return zh * o[FK_U] * k * j1;

@@ -42,6 +42,7 @@
 
 #include "field.h"
 #include "field_kernel.h"
+#include "kernel.h"
 
 typedef double complex cplx;
 
@@ -703,7 +704,7 @@ static void node_row_sums(struct mapjob *m, size_t iz, size_t it, const double *
 static int node_hankel(struct mapjob *m, double k, double wk, double wgs, size_t p,
 		       size_t nza)
 {
-	double zh = anvil_fk_zhat(k), b[JK_COUNT];
+	double zh = anvil_kernel_zhat(k), b[JK_COUNT];
 	for (size_t ir = 0; ir < m->nr; ir++) {
 		if (bessel_at(k, m->r_lo + m->dr * (double)ir, zh, b))
 			return ANVIL_ENUM;
@@ -971,7 +972,7 @@ static void points_static(struct ptjob *j, double k, size_t p, double wk, double
 
 static int points_node(struct ptjob *j, double k, double wk, double wgs, size_t p)
 {
-	double zh = anvil_fk_zhat(k);
+	double zh = anvil_kernel_zhat(k);
 	for (size_t i = 0; i < j->npt; i++)
 		if (j->npan[i] > p && bessel_at(k, j->r[i], zh, j->jf + i * JK_COUNT))
 			return ANVIL_ENUM;

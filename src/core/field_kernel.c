@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "field_kernel.h"
+#include "kernel.h"
 
 typedef double complex cplx;
 
@@ -11,50 +12,6 @@ const int anvil_fk_of_hs[HS_COUNT] = {
 	[HS_U] = FK_U, [HS_UR] = FK_U, [HS_KU] = FK_U, [HS_W] = FK_W,
 	[HS_SZZ] = FK_SZZ, [HS_SRZ] = FK_SRZ, [HS_LAM] = FK_LAM,
 };
-
-double anvil_fk_zhat(double k)
-{
-	if (k < 0.1) {
-		double a = k * k;
-		return (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 +
-			a * a * a * a / 1330560.0) / (2.0 * M_PI);
-	}
-	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
-}
-
-/* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
-static cplx cexpm1_(cplx z)
-{
-	double x = creal(z), y = cimag(z), s = sin(0.5 * y);
-	return (expm1(x) * cos(y) - 2.0 * s * s) + I * (exp(x) * sin(y));
-}
-
-/* The Rayleigh function R = gamma^2 - X, X = 4 k^2 alpha1 alpha2, as in
- * green.c: rationalised, R = b Q / (gamma^2 + X) with the k^8 terms of Q
- * cancelled by hand, where that is the larger denominator (the plain form
- * loses every digit at large k); the plain form near the rationalised
- * one's spurious root gamma^2 + X = 0. */
-static cplx rayleigh(double a, cplx b, double kap2, cplx gam, cplx X)
-{
-	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
-		 8.0 * a * b * b + b * b * b;
-	cplx g2X = gam * gam + X, g2mX = gam * gam - X;
-	return cabs(g2mX) >= cabs(g2X) ? g2mX : b * Q / g2X;
-}
-
-/* t2 - t1 with t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j): written
- * through exp(-hh (alpha2 - alpha1)) - 1 where E1 and E2 are close (their
- * difference would cancel), directly where they are not (the ratio could
- * overflow where Re(alpha2 - alpha1) < 0). */
-static cplx tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx E1,
-		  cplx E2, cplx p1, cplx p2)
-{
-	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
-	cplx dal = (1.0 - kap2) * b / (al1 + al2);
-	if (cabs(hh * dal) < 1.0)
-		return 2.0 * E1 * (-cexpm1_(-hh * dal)) / (p1 * p2);
-	return 2.0 * (E1 - E2) / (p1 * p2);
-}
 
 /* The boundary conditions split into parts symmetric and antisymmetric about
  * the mid-plane: with S_j = A_j + B_j, D_j = A_j - B_j they are two 2x2
@@ -70,7 +27,7 @@ void anvil_fk_coef(double k, cplx s, double kap2, double hh, struct anvil_fk_coe
 	double a = k * k;
 	cplx b = s * s;
 	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b), gam = 2.0 * a + b;
-	cplx X = 4.0 * a * al1 * al2, R = rayleigh(a, b, kap2, gam, X);
+	cplx X = 4.0 * a * al1 * al2, R = anvil_kernel_rayleigh(a, b, kap2, gam, X);
 	c->k = k;
 	c->b = b;
 	c->al1 = al1;
@@ -82,11 +39,11 @@ void anvil_fk_coef(double k, cplx s, double kap2, double hh, struct anvil_fk_coe
 		c->B1 = c->B2 = 0.0;
 		return;
 	}
-	cplx m1 = -cexpm1_(-hh * al1), m2 = -cexpm1_(-hh * al2); /* 1 - E_j */
+	cplx m1 = -anvil_kernel_expm1(-hh * al1), m2 = -anvil_kernel_expm1(-hh * al2); /* 1 - E_j */
 	cplx E1 = cexp(-hh * al1), E2 = cexp(-hh * al2);
 	cplx p1 = 2.0 - m1, p2 = 2.0 - m2;                       /* 1 + E_j */
 	cplx t1 = m1 / p1, t2 = m2 / p2, u1 = 2.0 * E1 / p1;
-	cplx d = tdiff(al1, al2, b, kap2, hh, E1, E2, p1, p2), Xd = X * d;
+	cplx d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, E1, E2, p1, p2), Xd = X * d;
 	cplx den1 = t2 * R + Xd, den2 = t1 * R - Xd, dd = den1 * den2;
 	cplx S1 = -gam * t2 / (p1 * den1), D1 = -gam / (p1 * den2);
 	cplx S2 = -2.0 * k * al1 / (p2 * den2), D2 = -2.0 * k * al1 * t1 / (p2 * den1);

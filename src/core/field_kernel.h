@@ -45,9 +45,6 @@ struct anvil_fk_coef {
 	double complex A1, B1, A2, B2;
 };
 
-/* Hankel transform of the Hertz patch (eq 32) with r0 = 1, series for
- * small k where the closed form cancels. */
-double anvil_fk_zhat(double k);
 
 /* The coefficients at (k, s), Re s > 0, kap2 = kappa^2. */
 void anvil_fk_coef(double k, double complex s, double kap2, double hh,

@@ -9,6 +9,7 @@
 #include <gsl/gsl_interp.h>
 
 #include "green.h"
+#include "kernel.h"
 
 typedef double complex cplx;
 
@@ -23,9 +24,10 @@ struct anvil_green {
 	size_t evals;
 };
 
-/* Settings per accuracy level.  The figures were chosen by convergence
- * studies (scripts/bench, tests/test_green.c): each level's ramp response
- * differs from the next finer one by less than the level's target. */
+/* Settings per accuracy level.  The solver replaces omega_max by a
+ * bandwidth scaled to the contact time (solver.c); c0T, tol and ktail stand.
+ * tests/test_layer.c shows each level meeting its target on the paper's
+ * cases, and tests/test_green.c that c0T = 8 and 13 agree. */
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs)
 {
 	static const struct anvil_green_settings table[ANVIL_ACC_COUNT] = {
@@ -38,41 +40,25 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
 	*gs = table[acc < ANVIL_ACC_COUNT ? acc : ANVIL_ACC_NORMAL];
 }
 
-/* Hankel transform of the Hertz patch with r0 = 1 (eq 32).  Its closed form
- * cancels catastrophically for small k: use the Taylor series there. */
-static double zhat(double k)
-{
-	if (k < 0.1) {
-		double a = k * k;
-		return (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 +
-			a * a * a * a / 1330560.0) / (2.0 * M_PI);
-	}
-	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
-}
-
-/* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
-static cplx cexpm1_(cplx z)
-{
-	double x = creal(z), y = cimag(z), s = sin(0.5 * y);
-	return (expm1(x) * cos(y) - 2.0 * s * s) + I * (exp(x) * sin(y));
-}
-
-/* The kernels, units mu = c2 = rho = 1 (see the derivation in
- * doc/derivation.md and green.h).  With a = k^2, b = s^2:
+/* The kernels, units mu = c2 = rho = 1.  With a = k^2, b = s^2:
  *   alpha_j = sqrt(a + kappa_j^2 b), gamma = 2a + b, X = 4 a alpha1 alpha2,
  *   R = gamma^2 - X = b Q / (gamma^2 + X)           (rationalised: the k^8
  *   terms cancel exactly, so Q is expanded by hand and loses no digits;
  *   used where |gamma^2 + X| > |gamma^2 - X|, the plain form elsewhere),
  *   W_hs = alpha1 b / R = alpha1 (gamma^2 + X) / Q.
  * The free layer, split into parts symmetric and antisymmetric about its
- * mid-plane (half-thickness H), with t_j = tanh(alpha_j H):
+ * mid-plane (half-thickness H, zeta from the mid-plane; potentials
+ * phi = A cosh(alpha1 zeta), psi = B sinh(alpha2 zeta) for the symmetric
+ * part, sinh/cosh for the antisymmetric one; each part's conditions on the
+ * loaded face are a 2x2 system), with t_j = tanh(alpha_j H):
  *   W = (alpha1 b / 2) [ t1 t2 / (gamma^2 t2 - X t1) + 1 / (gamma^2 t1 - X t2) ]
  * which agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2)
  * to rounding (checked in tests/test_green.c).  Its difference from W_hs,
  * written with u1 = 1 - t1 and d = t2 - t1 (both O(exp(-2 alpha H)), so the
  * difference is formed without cancellation):
  *   W - W_hs = (W_hs/2) [ (R u1 + X d)/(t1 R - X d) - (t2 R u1 + X d)/(t2 R + X d) ].
- * Every exponential is exp(-2 alpha H) with Re alpha >= 0: nothing overflows. */
+ * Every exponential is exp(-2 alpha H) with Re alpha >= 0, and d comes from
+ * anvil_kernel_tdiff: nothing overflows. */
 struct kern {
 	double kap2, H;
 	cplx s, b;
@@ -85,22 +71,11 @@ static cplx w_halfspace(const struct kern *p, double k, cplx *al1_out, cplx *al2
 	cplx b = p->b;
 	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b);
 	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
-	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
-		 8.0 * a * b * b + b * b * b;
-	cplx g2X = gam * gam + X, g2mX = gam * gam - X;
 	*al1_out = al1;
 	*al2_out = al2;
 	*X_out = X;
-	/* The rationalised form cancels nothing at large k but is 0/0 where
-	 * gamma^2 + X = 0 (the spurious root that rationalising brings in, which
-	 * can sit on the integration path); the plain form is exact there.  Use
-	 * whichever denominator is the larger. */
-	if (cabs(g2mX) >= cabs(g2X)) {
-		*R_out = g2mX;
-		return al1 * b / g2mX;
-	}
-	*R_out = b * Q / g2X;
-	return al1 * g2X / Q;
+	*R_out = anvil_kernel_rayleigh(a, b, kap2, gam, X);
+	return al1 * b / *R_out;
 }
 
 static cplx kern_layer_corr(const struct kern *p, double k)
@@ -108,16 +83,13 @@ static cplx kern_layer_corr(const struct kern *p, double k)
 	cplx al1, al2, R, X;
 	cplx whs = w_halfspace(p, k, &al1, &al2, &R, &X);
 	double H = p->H;
-	cplx m1 = -cexpm1_(-2.0 * H * al1), m2 = -cexpm1_(-2.0 * H * al2);
+	cplx m1 = -anvil_kernel_expm1(-2.0 * H * al1), m2 = -anvil_kernel_expm1(-2.0 * H * al2);
 	cplx t1 = m1 / (2.0 - m1), t2 = m2 / (2.0 - m2);
 	/* E1 itself, not 1 - m1: that would leave rounding noise (1e-16) where
-	 * E1 is 1e-23, and the noise is then multiplied by
-	 * exp(-2H (alpha2 - alpha1)), which grows where Re(alpha2 - alpha1) < 0. */
-	cplx E1 = cexp(-2.0 * H * al1);
+	 * E1 is 1e-23, later multiplied by a large exp(-2H (alpha2 - alpha1)). */
+	cplx E1 = cexp(-2.0 * H * al1), E2 = cexp(-2.0 * H * al2);
 	cplx u1 = 2.0 * E1 / (2.0 - m1);
-	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
-	cplx dal = (1.0 - p->kap2) * p->b / (al1 + al2);
-	cplx d = 2.0 * E1 * (-cexpm1_(-2.0 * H * dal)) / ((2.0 - m1) * (2.0 - m2));
+	cplx d = anvil_kernel_tdiff(al1, al2, p->b, p->kap2, 2.0 * H, E1, E2, 2.0 - m1, 2.0 - m2);
 	cplx Xd = X * d;
 	return 0.5 * whs * ((R * u1 + Xd) / (t1 * R - Xd) - (t2 * R * u1 + Xd) / (t2 * R + Xd));
 }
@@ -140,9 +112,9 @@ static cplx integrand(struct quad *q, double k)
 	if (q->mode == ANVIL_GREEN_HALFSPACE) {
 		cplx al1, al2, R, X;
 		cplx whs = w_halfspace(&q->kp, k, &al1, &al2, &R, &X);
-		return (k * whs - 0.5 / (1.0 - q->kp.kap2)) * zhat(k);
+		return (k * whs - 0.5 / (1.0 - q->kp.kap2)) * anvil_kernel_zhat(k);
 	}
-	return kern_layer_corr(&q->kp, k) * zhat(k) * k;
+	return kern_layer_corr(&q->kp, k) * anvil_kernel_zhat(k) * k;
 }
 
 static double part(double k, void *vq)

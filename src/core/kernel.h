@@ -1,0 +1,33 @@
+/* kernel.h: pieces of the layer's transformed kernels shared by the centre
+ * response (green.c) and the field at depth (field_kernel.c).  Internal to
+ * the core.  Units mu = rho = c2 = r0 = 1; a = k^2, b = s^2,
+ * alpha_j = sqrt(a + kappa_j^2 b), gamma = 2a + b, X = 4 a alpha1 alpha2. */
+#ifndef ANVIL_KERNEL_H
+#define ANVIL_KERNEL_H
+
+#include <complex.h>
+
+/* Hankel transform of the Hertz patch (eq 32) with r0 = 1; its Taylor
+ * series for small k, where the closed form cancels catastrophically. */
+double anvil_kernel_zhat(double k);
+
+/* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
+double complex anvil_kernel_expm1(double complex z);
+
+/* The Rayleigh function R = gamma^2 - X.  Rationalised, R = b Q /
+ * (gamma^2 + X) with the k^8 terms of Q cancelled by hand, where that is the
+ * larger denominator (the plain form loses every digit at large k); the
+ * plain form near the rationalised one's spurious root gamma^2 + X = 0,
+ * which can sit on the integration path (a 0/0 there). */
+double complex anvil_kernel_rayleigh(double a, double complex b, double kap2,
+				     double complex gam, double complex X);
+
+/* t2 - t1, t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j), p_j = 1 + E_j:
+ * through exp(-hh (alpha2 - alpha1)) - 1 where E1 and E2 are close (their
+ * difference would cancel), directly where they are not (there the ratio
+ * can overflow while E1 underflows: 0 * inf). */
+double complex anvil_kernel_tdiff(double complex al1, double complex al2, double complex b,
+				  double kap2, double hh, double complex E1, double complex E2,
+				  double complex p1, double complex p2);
+
+#endif
