@@ -158,7 +158,8 @@ static void finish(struct pass *s, const struct anvil_params *p, double a_n, dou
 struct end_ctx {
 	const struct ctx *c;
 	const struct pass *s;
-	size_t n; /* steps taken: nodes 0 .. n-1 */
+	size_t n;  /* steps taken: nodes 0 .. n-1 */
+	double *R; /* scratch: R(j dt + d), j = 0 .. n */
 };
 
 static double alpha_end(double d, void *vp)
@@ -167,31 +168,31 @@ static double alpha_end(double d, void *vp)
 	const struct anvil_params *p = e->c->p;
 	const double *P = e->s->P, dt = e->s->dt;
 	size_t k = e->n - 1; /* the last node with P > 0 */
-	double t1 = (double)k * dt, tau = t1 + d, mom = 0, w = 0, R0, R1, R2;
+	double t1 = (double)k * dt, tau = t1 + d, mom = 0, w = 0, *R = e->R;
+	/* every response needed is R at j dt + d: k + 2 evaluations, not 3k */
+	for (size_t j = 0; j <= k + 1; j++)
+		ramp_at(e->c, (double)j * dt + d, &R[j]);
 	for (size_t m = 1; m < k; m++) {
-		double tm = (double)m * dt;
-		mom += P[m] * dt * (tau - tm);
-		ramp_at(e->c, tau - tm + dt, &R0);
-		ramp_at(e->c, tau - tm, &R1);
-		ramp_at(e->c, tau - tm - dt, &R2);
-		w += P[m] * (R0 - 2.0 * R1 + R2) / dt;
+		mom += P[m] * dt * (tau - (double)m * dt);
+		w += P[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
 	}
 	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	ramp_at(e->c, d + dt, &R0);
-	ramp_at(e->c, d, &R1);
-	w += P[k] * (R0 / dt - R1 * (1.0 / dt + 1.0 / d));
+	w += P[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
 	return p->V0 * tau - mom / p->m1 - w;
 }
 
 static int finish_exact(const struct ctx *c, struct pass *s, double impulse)
 {
-	struct end_ctx e = { c, s, s->n };
+	struct end_ctx e = { c, s, s->n, malloc((s->n + 2) * sizeof(double)) };
 	gsl_function f = { alpha_end, &e };
 	gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
 	double lo = 1e-9 * s->dt, hi = s->dt, d = hi;
-	if (!rs)
+	if (!rs || !e.R) {
+		gsl_root_fsolver_free(rs);
+		free(e.R);
 		return ANVIL_ENOMEM;
+	}
 	int st = gsl_root_fsolver_set(rs, &f, lo, hi);
 	for (int i = 0; !st && i < 100; i++) {
 		st = gsl_root_fsolver_iterate(rs);
@@ -202,6 +203,7 @@ static int finish_exact(const struct ctx *c, struct pass *s, double impulse)
 			break;
 	}
 	gsl_root_fsolver_free(rs);
+	free(e.R);
 	if (st)
 		return ANVIL_ENUM;
 	size_t k = s->n - 1;

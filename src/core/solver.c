@@ -20,6 +20,7 @@
  * (The accuracy levels' settings are in plan.c, which prices them.) */
 #define MAX_STEPS ANVIL_MAX_STEPS
 #define MAX_TERMS ANVIL_MAX_TERMS
+#define MAX_REFINE 2 /* bandwidth doublings when the target is missed */
 
 struct anvil_solver {
 	anvil_progress_fn progress;
@@ -254,18 +255,28 @@ static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
 	} else if (!(wv.rs.hs = anvil_cache_halfspace(s->cache, p->nu, wv.job.hs_tol, err))) {
 		return err ? err->status : ANVIL_ENUM;
 	}
-	int st = waves_impact(s, sc, p, &wv, wv.job.omega, wv.job.omega_idx, 0, r, err);
-	*used_corr = wv.rs.corr != NULL;
-	if (st || !wv.rs.corr)
-		return st;
-	struct anvil_result coarse;
-	anvil_result_init(&coarse, r->model);
-	wv.io.nhist = 0;
-	st = waves_impact(s, sc, p, &wv, 0.5 * wv.job.omega,
-			  wv.job.omega_idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
-	anvil_result_free(&coarse);
-	if (!st)
-		add_green_error(r, &coarse);
+	/* The layer correction's error is measured by halving its bandwidth;
+	 * when that estimate misses the target, the bandwidth doubles (twice at
+	 * most): convergence in it is fast, the estimate conservative. */
+	int st = ANVIL_OK;
+	for (int refine = 0; refine <= MAX_REFINE; refine++) {
+		double omega = wv.job.omega * (double)(1 << refine);
+		int idx = wv.job.omega_idx + refine * ANVIL_CACHE_STEPS;
+		wv.io.nhist = nhist;
+		st = waves_impact(s, sc, p, &wv, omega, idx, 0, r, err);
+		*used_corr = wv.rs.corr != NULL;
+		if (st || !wv.rs.corr)
+			return st;
+		struct anvil_result coarse;
+		anvil_result_init(&coarse, r->model);
+		wv.io.nhist = 0;
+		st = waves_impact(s, sc, p, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
+		if (!st)
+			add_green_error(r, &coarse);
+		anvil_result_free(&coarse);
+		if (st || sc->scheme == ANVIL_SCHEME_PAPER || check_target(r, sc->accuracy, NULL) == ANVIL_OK)
+			break;
+	}
 	return st;
 }
 
