@@ -186,6 +186,7 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 struct waves {
 	struct anvil_wave_job job;
 	double kappa;
+	double tau_end; /* the window of the last run */
 	struct response rs;
 	struct anvil_impact_opts io;
 };
@@ -226,6 +227,7 @@ static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 		anvil_result_free(r);
 		anvil_result_init(r, m);
 		st = anvil_impact_run(p, response_ramp, &wv->rs, tau_end, &wv->io, r, err);
+		wv->tau_end = tau_end;
 		if (st == ANVIL_ETOL && !isnan(r->ts))
 			break;
 	}
@@ -275,6 +277,10 @@ static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
 			add_green_error(r, &coarse);
 		anvil_result_free(&coarse);
 		if (st || sc->scheme == ANVIL_SCHEME_PAPER || check_target(r, sc->accuracy, NULL) == ANVIL_OK)
+			break;
+		/* a refinement the solver would refuse is not tried: the result
+		 * stands, and run_anvil says it missed the target */
+		if (4.0 * omega * wv.tau_end / M_PI > MAX_TERMS)
 			break;
 	}
 	return st;
