@@ -27,6 +27,7 @@
 #include "field.h"
 #include "field_kernel.h"
 #include "kernel.h"
+#include "direct_bc.h"
 #include "tap.h"
 
 typedef double complex cplx;
@@ -35,38 +36,14 @@ typedef double complex cplx;
 
 /* ---- the kernels ------------------------------------------------------- */
 
-/* D1..D4 of the paper's ch/sh form from the four boundary conditions
- * (sigma_zz(0) = -1, sigma_rz(0) = 0, sigma_zz(h) = sigma_rz(h) = 0;
- * gamma = 2k^2 + s^2, mu = c2 = 1), then eqs (23)-(26) and the dilatation
- * at depth z. */
+/* The fields at depth z from the direct solve (direct_bc.h): eqs (23)-(26)
+ * and the dilatation. */
 static void direct(double k, cplx s, double h, double z, cplx out[FK_COUNT])
 {
 	double kap2 = (1 - 2 * NU) / (2 * (1 - NU));
 	cplx a1 = csqrt(k * k + kap2 * s * s), a2 = csqrt(k * k + s * s), g = 2 * k * k + s * s;
-	gsl_matrix_complex *A = gsl_matrix_complex_alloc(4, 4);
-	gsl_vector_complex *b = gsl_vector_complex_calloc(4), *x = gsl_vector_complex_alloc(4);
-	gsl_permutation *perm = gsl_permutation_alloc(4);
-	for (int row = 0; row < 4; row++) {
-		double zz = row < 2 ? 0.0 : h;
-		cplx c1 = ccosh(a1 * zz), s1 = csinh(a1 * zz) / a1, c2 = ccosh(a2 * zz), s2 = csinh(a2 * zz) / a2;
-		cplx m[4];
-		if (row % 2 == 0) { /* sigma_zz, eq (25) */
-			m[0] = g * c1; m[1] = g * s1; m[2] = 2 * k * a2 * a2 * s2; m[3] = 2 * k * c2;
-		} else { /* sigma_rz, eq (26) */
-			m[0] = -2 * k * a1 * a1 * s1; m[1] = -2 * k * c1; m[2] = -g * c2; m[3] = -g * s2;
-		}
-		for (int j = 0; j < 4; j++)
-			gsl_matrix_complex_set(A, (size_t)row, (size_t)j, gsl_complex_rect(creal(m[j]), cimag(m[j])));
-	}
-	gsl_vector_complex_set(b, 0, gsl_complex_rect(-1, 0));
-	int sign;
-	gsl_linalg_complex_LU_decomp(A, perm, &sign);
-	gsl_linalg_complex_LU_solve(A, perm, b, x);
 	cplx D[4];
-	for (int j = 0; j < 4; j++) {
-		gsl_complex v = gsl_vector_complex_get(x, (size_t)j);
-		D[j] = GSL_REAL(v) + I * GSL_IMAG(v);
-	}
+	direct_bc(k, s, NU, h, D);
 	cplx C1 = ccosh(a1 * z), S1 = csinh(a1 * z) / a1, C2 = ccosh(a2 * z), S2 = csinh(a2 * z) / a2;
 	out[FK_U] = -(D[0] * k * C1 + D[1] * k * S1 + D[2] * a2 * a2 * S2 + D[3] * C2);
 	out[FK_W] = D[0] * a1 * a1 * S1 + D[1] * C1 + D[2] * k * C2 + D[3] * k * S2;
@@ -74,10 +51,6 @@ static void direct(double k, cplx s, double h, double z, cplx out[FK_COUNT])
 	out[FK_SRZ] = -(D[0] * 2 * k * a1 * a1 * S1 + D[1] * 2 * k * C1 + D[2] * g * C2 + D[3] * g * S2);
 	/* lambda e = lambda kappa^2 s^2 phi (the paper's sigma_tt^LH0, eq 29) */
 	out[FK_LAM] = (1 / kap2 - 2) * kap2 * s * s * (D[0] * C1 + D[1] * S1);
-	gsl_matrix_complex_free(A);
-	gsl_vector_complex_free(b);
-	gsl_vector_complex_free(x);
-	gsl_permutation_free(perm);
 }
 
 static double kernel_dev(const cplx *a, const cplx *b)

@@ -12,48 +12,20 @@
 #include <stdlib.h>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_complex_math.h>
-#include <gsl/gsl_linalg.h>
 
 #include "green.h"
 #include "halfspace.h"
+#include "direct_bc.h"
 #include "tap.h"
 
 typedef double complex cplx;
 
-/* w(0) of the free layer by solving for D1..D4 of eqs (24)-(26) directly:
- * sigma_zz(0) = -1, sigma_rz(0) = 0, sigma_zz(h) = sigma_rz(h) = 0, with
- * gamma = 2k^2 + s^2 (mu = c2 = 1). */
+/* w(0) of the free layer from the direct solve (eq 24 at z = 0). */
 static cplx direct_w(double k, cplx s, double nu, double h)
 {
-	double kap2 = (1 - 2 * nu) / (2 * (1 - nu));
-	cplx a1 = csqrt(k * k + kap2 * s * s), a2 = csqrt(k * k + s * s), g = 2 * k * k + s * s;
-	gsl_matrix_complex *A = gsl_matrix_complex_alloc(4, 4);
-	gsl_vector_complex *b = gsl_vector_complex_calloc(4), *x = gsl_vector_complex_alloc(4);
-	gsl_permutation *perm = gsl_permutation_alloc(4);
-	for (int row = 0; row < 4; row++) {
-		double z = row < 2 ? 0.0 : h;
-		cplx c1 = ccosh(a1 * z), s1 = csinh(a1 * z) / a1, c2 = ccosh(a2 * z), s2 = csinh(a2 * z) / a2;
-		cplx m[4];
-		if (row % 2 == 0) { /* sigma_zz, eq (25) */
-			m[0] = g * c1; m[1] = g * s1; m[2] = 2 * k * a2 * a2 * s2; m[3] = 2 * k * c2;
-		} else { /* sigma_rz, eq (26) */
-			m[0] = -2 * k * a1 * a1 * s1; m[1] = -2 * k * c1; m[2] = -g * c2; m[3] = -g * s2;
-		}
-		for (int j = 0; j < 4; j++)
-			gsl_matrix_complex_set(A, (size_t)row, (size_t)j, gsl_complex_rect(creal(m[j]), cimag(m[j])));
-	}
-	gsl_vector_complex_set(b, 0, gsl_complex_rect(-1, 0));
-	int sign;
-	gsl_linalg_complex_LU_decomp(A, perm, &sign);
-	gsl_linalg_complex_LU_solve(A, perm, b, x);
-	gsl_complex d2 = gsl_vector_complex_get(x, 1), d3 = gsl_vector_complex_get(x, 2);
-	cplx w = (GSL_REAL(d2) + I * GSL_IMAG(d2)) + k * (GSL_REAL(d3) + I * GSL_IMAG(d3));
-	gsl_matrix_complex_free(A);
-	gsl_vector_complex_free(b);
-	gsl_vector_complex_free(x);
-	gsl_permutation_free(perm);
-	return w;
+	cplx D[4];
+	direct_bc(k, s, nu, h, D);
+	return D[1] + k * D[2];
 }
 
 static void test_kernel(void)
