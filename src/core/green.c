@@ -10,6 +10,7 @@
 
 #include "green.h"
 #include "kernel.h"
+#include "material.h"
 
 typedef double complex cplx;
 
@@ -239,22 +240,6 @@ static int adapt(struct quad *q, struct heap *h, double kband, double kend, doub
 	return err <= eps ? ANVIL_OK : ANVIL_ETOL;
 }
 
-/* Dimensionless Rayleigh speed c_R/c2: root of the Rayleigh function
- * (2 - x)^2 = 4 sqrt(1 - kappa^2 x) sqrt(1 - x), x = (c_R/c2)^2, by
- * bisection (a few lines; monotone on (0, 1), no bracketing subtleties). */
-static double rayleigh_speed(double kap2)
-{
-	double lo = 1e-6, hi = 1.0 - 1e-15;
-	for (int i = 0; i < 200; i++) {
-		double x = 0.5 * (lo + hi);
-		double f = (2 - x) * (2 - x) - 4 * sqrt(1 - kap2 * x) * sqrt(1 - x);
-		if (f > 0)
-			hi = x;
-		else
-			lo = x;
-	}
-	return sqrt(0.5 * (lo + hi));
-}
 
 /* The k-integral at one s = c0 + i omega, to absolute error eps.  The
  * Lamb-mode poles lie within about c0/c_group of the real k axis for k up
@@ -329,7 +314,10 @@ static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0,
 			   const struct plate *pl, cplx *spec, double *qerr,
 			   anvil_progress_fn progress, void *ctx)
 {
-	double cr = rayleigh_speed(q->kp.kap2);
+	double xr, cr;
+	if (anvil_rayleigh_x(q->kp.kap2, &xr, NULL))
+		return ANVIL_ENUM;
+	cr = sqrt(xr); /* c_R/c2 */
 	double scale = 3.0 / (16.0 * (1.0 - q->kp.kap2)) * tau_end; /* half-space ramp */
 	double amp = exp(c0 * tau_end) / Tp;  /* series -> time at tau_end */
 	double epsF = gs->tol * scale / (amp * (double)(M + 1));

@@ -461,17 +461,25 @@ static double hs_psi(const struct anvil_halfspace *hs, double tau)
 /* Rounding of a bracket built from terms of size mag, in step units. */
 #define HS_ROUND(mag) (16.0 * DBL_EPSILON * (mag))
 
+/* What step and ramp return: 3/8 of the bracket b (the patch's Abel
+ * projection at a = 0), its error from the quadrature (e) and from rounding
+ * in sums of magnitude mag; NaN for a failed status. */
+static int hs_result(int st, double b, double e, double mag, double *val, double *abserr)
+{
+	int failed = st == ANVIL_ENUM || st == ANVIL_EINVAL;
+	*val = failed ? NAN : 0.375 * b;
+	if (abserr)
+		*abserr = failed ? NAN : 0.375 * (e + HS_ROUND(mag));
+	return st;
+}
+
 int anvil_halfspace_step(const struct anvil_halfspace *hs, double tau, double *val,
 			 double *abserr)
 {
 	double b, e = 0, mag;
 	int st = ANVIL_OK;
-	if (!(tau >= 0) || !isfinite(tau)) {
-		*val = NAN;
-		if (abserr)
-			*abserr = NAN;
-		return ANVIL_EINVAL;
-	}
+	if (!(tau >= 0) || !isfinite(tau))
+		return hs_result(ANVIL_EINVAL, 0, 0, 0, val, abserr);
 	double t2 = tau * tau, k = hs->kappa, qr2 = hs->qr * hs->qr;
 	if (tau >= hs->tau_r) {
 		b = 1.0 - hs->nu;
@@ -495,16 +503,7 @@ int anvil_halfspace_step(const struct anvil_halfspace *hs, double tau, double *v
 		b = -hs->ar * qr2 * t2 - t2 * full - hs->h0 * (tau - t2 / k) - c;
 		mag = fabs(hs->ar) * qr2 * t2 + t2 * fabs(full) + fabs(hs->h0) * tau + fabs(c);
 	}
-	if (st == ANVIL_ENUM) {
-		*val = NAN;
-		if (abserr)
-			*abserr = NAN;
-		return st;
-	}
-	*val = 0.375 * b;
-	if (abserr)
-		*abserr = 0.375 * (e + HS_ROUND(mag));
-	return st;
+	return hs_result(st, b, e, mag, val, abserr);
 }
 
 int anvil_halfspace_ramp(const struct anvil_halfspace *hs, double tau, double *val,
@@ -512,12 +511,8 @@ int anvil_halfspace_ramp(const struct anvil_halfspace *hs, double tau, double *v
 {
 	double b, e = 0, mag;
 	int st = ANVIL_OK;
-	if (!(tau >= 0) || !isfinite(tau)) {
-		*val = NAN;
-		if (abserr)
-			*abserr = NAN;
-		return ANVIL_EINVAL;
-	}
+	if (!(tau >= 0) || !isfinite(tau))
+		return hs_result(ANVIL_EINVAL, 0, 0, 0, val, abserr);
 	double t2 = tau * tau, t3 = t2 * tau, k = hs->kappa, qr2 = hs->qr * hs->qr;
 	double omn = 1.0 - hs->nu;
 	if (tau >= k) {
@@ -544,14 +539,5 @@ int anvil_halfspace_ramp(const struct anvil_halfspace *hs, double tau, double *v
 		b = -hs->ar * qr2 * t3 / 3.0 - (t3 / 3.0) * full - (hs->h0 / 3.0) * (t2 - t3 / k) + c;
 		mag = fabs(hs->ar) * qr2 * t3 + t3 * fabs(full) + fabs(hs->h0) * t2 + fabs(c);
 	}
-	if (st == ANVIL_ENUM) {
-		*val = NAN;
-		if (abserr)
-			*abserr = NAN;
-		return st;
-	}
-	*val = 0.375 * b;
-	if (abserr)
-		*abserr = 0.375 * (e + HS_ROUND(mag));
-	return st;
+	return hs_result(st, b, e, mag, val, abserr);
 }
