@@ -4,8 +4,8 @@
 #include <unistd.h>
 
 #include "config.h"
-#include "ui/commands.h"
-#include "ui/common.h"
+#include "commands.h"
+#include "common.h"
 
 struct command {
 	const char *name;

@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "tap.h"
-#include "ui/plot.h"
+#include "plot.h"
 
 #define NPTS 5
 

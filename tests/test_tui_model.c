@@ -5,10 +5,10 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "core/material.h"
+#include "material.h"
 #include "tap.h"
-#include "ui/tui_model.h"
-#include "ui/tui_plot.h"
+#include "tui_model.h"
+#include "tui_plot.h"
 
 /* ---- canvas ---- */
 

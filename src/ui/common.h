@@ -9,8 +9,8 @@
 
 #include <stdio.h>
 
-#include "core/scene.h"
-#include "core/solver.h"
+#include "scene.h"
+#include "solver.h"
 
 enum { EXIT_OK = 0, EXIT_FAIL = 1, EXIT_USAGE = 2 };
 

@@ -10,11 +10,11 @@
 #include <string.h>
 #include <strings.h>
 
-#include "core/params.h"
-#include "core/zener.h"
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/plot.h"
+#include "params.h"
+#include "zener.h"
+#include "commands.h"
+#include "common.h"
+#include "plot.h"
 
 /* Samples kept per history: smooth at any PNG size anvil allows. */
 #define PLOT_NHIST 400

@@ -18,9 +18,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/zener.h"
-#include "ui/common.h"
-#include "ui/plot.h"
+#include "zener.h"
+#include "common.h"
+#include "plot.h"
 
 #ifndef ANVIL_GNUPLOT
 #define ANVIL_GNUPLOT "gnuplot"

@@ -5,9 +5,9 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
 
 #define NTHICK 5
 #define NROWS 11

@@ -7,10 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plan.h"
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
+#include "plan.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
 
 struct plan_opts {
 	const char *scene;

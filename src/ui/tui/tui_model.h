@@ -19,9 +19,9 @@
 
 #include <stddef.h>
 
-#include "core/result.h"
-#include "core/scene.h"
-#include "core/status.h"
+#include "result.h"
+#include "scene.h"
+#include "status.h"
 
 /* Keys beyond ASCII.  Plain characters ('k', 'H', ':' ...) are themselves. */
 enum tui_key {

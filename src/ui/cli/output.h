@@ -12,8 +12,8 @@
 
 #include <stdio.h>
 
-#include "core/result.h"
-#include "core/scene.h"
+#include "result.h"
+#include "scene.h"
 
 enum out_format { OUT_TABLE, OUT_TSV, OUT_CSV, OUT_JSON };
 #define OUT_ALLOW(f) (1u << (f))

@@ -4,9 +4,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
 
 struct acc_opts {
 	const char *scene, *model;

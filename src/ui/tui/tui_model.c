@@ -7,7 +7,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "core/material.h"
+#include "material.h"
 #include "tui_model.h"
 
 const enum anvil_model tui_model_order[ANVIL_MODEL_COUNT] = {

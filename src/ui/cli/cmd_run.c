@@ -7,11 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/plan.h"
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
-#include "ui/plot.h"
+#include "plan.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
+#include "plot.h"
 
 /* Samples per model in --history and the charts. */
 #define RUN_NHIST 400

@@ -10,13 +10,13 @@
 #include <string.h>
 #include <strings.h>
 
-#include "core/field.h"
-#include "core/params.h"
-#include "core/units.h"
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
-#include "ui/plot.h"
+#include "field.h"
+#include "params.h"
+#include "units.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
+#include "plot.h"
 
 /* Time samples of `anvil field` over the contact. */
 #define FIELD_SAMPLES 201

@@ -2,10 +2,10 @@
  * speeds that decide how a layer answers an impact. */
 #include <getopt.h>
 
-#include "core/material.h"
-#include "ui/commands.h"
-#include "ui/common.h"
-#include "ui/output.h"
+#include "material.h"
+#include "commands.h"
+#include "common.h"
+#include "output.h"
 
 static void materials_usage(FILE *f)
 {

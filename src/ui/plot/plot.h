@@ -22,8 +22,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "core/result.h"
-#include "core/scene.h"
+#include "result.h"
+#include "scene.h"
 
 /* The charts `anvil plot KIND` draws (the paper's figures in brackets). */
 enum plot_kind {

@@ -5,7 +5,7 @@
 #include <unistd.h>
 
 #include "output.h"
-#include "ui/common.h"
+#include "common.h"
 
 static const char *const format_names[] = {"table", "tsv", "csv", "json"};
 #define NFORMATS ((int)(sizeof format_names / sizeof format_names[0]))
