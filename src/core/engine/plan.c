@@ -7,27 +7,17 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_gamma.h>
 
+#include "accuracy.h"
 #include "green.h"
 #include "hertz.h"
+#include "kernel.h"
+#include "material.h"
 #include "plan.h"
 #include "zener.h"
 
-/* What each accuracy level spends (moved here from solver.c so that the
- * planner prices exactly what the solver does).  Chosen from convergence
- * studies on the paper's ten cases (scripts/bench, tests/test_layer.c):
- *   cycles: the layer correction's bandwidth omega_max times the contact
- *           time (dimensionless), so fast impacts get more frequencies;
- *   nsteps: time steps per Hertz contact time (the dt/2 pass doubles them);
- *   hs_tol: tolerance of the exact half-space response. */
-static const struct level {
-	double cycles, omega_min, hs_tol;
-	double nsteps; /* per Hertz contact time */
-} levels[ANVIL_ACC_COUNT] = {
-	{ 60.0, 1.5, 1e-6, 100 },    /* draft */
-	{ 120.0, 2.0, 1e-8, 400 },   /* normal */
-	{ 240.0, 4.0, 1e-10, 1000 }, /* fine */
-	{ 480.0, 8.0, 1e-12, 3000 }, /* reference */
-};
+/* What each accuracy level spends (cycles, omega_min, nsteps, hs_tol) is in
+ * the one table of levels, base/accuracy.c, so that the planner prices
+ * exactly what the solver does. */
 
 /* ---- the wave solver's job ---- */
 
@@ -54,7 +44,9 @@ static double layer_hh(const struct anvil_scene *sc, const struct anvil_params *
 void anvil_wave_job(const struct anvil_params *p, const struct anvil_scene *sc, int layer,
 		    double ts, struct anvil_wave_job *j)
 {
-	const struct level *lev = &levels[sc->accuracy < ANVIL_ACC_COUNT ? sc->accuracy : 1];
+	const struct anvil_level *lev = anvil_level(sc->accuracy);
+	if (!lev)
+		lev = anvil_level(ANVIL_ACC_NORMAL);
 	double t_hertz = anvil_hertz_tau_s() * p->T;
 	int lay = layer && isfinite(p->h);
 	if (!(ts > 0))
@@ -136,7 +128,7 @@ double anvil_plan_xi(double nu)
 	if (!(nu > -1 && nu < 0.5))
 		return NAN;
 	/* X = 3 is past the Rayleigh pole (q_R = c2/c_R < 1.15 for any nu) */
-	struct xi_ctx c = { (1 - 2 * nu) / (2 * (1 - nu)), 3.0 };
+	struct xi_ctx c = { anvil_kappa2(nu), 3.0 };
 	gsl_function f = { xi_integrand, &c };
 	double im, abserr;
 	gsl_integration_workspace *w = gsl_integration_workspace_alloc(200);
@@ -203,7 +195,7 @@ static double qs_amax(double c)
 
 int anvil_plan_static(const struct anvil_params *p, double *ts, double *pmax)
 {
-	double C = 3.0 * (1.0 - p->nu * p->nu) / (4.0 * p->E * p->r0);
+	double C = anvil_patch_compliance(p->E, p->nu, p->r0);
 	struct qs q = { C * p->K * sqrt(p->T * p->V0), 0 };
 	q.am = qs_amax(q.c);
 	gsl_function f = { qs_integrand, &q };
@@ -237,7 +229,7 @@ static double bending(const struct anvil_params *p)
 		return INFINITY;
 	double dP = fabs(pow(zs.alpha_max / hz.alpha_max, 1.5) - 1.0);
 	double dt = fabs(zs.tau_s / hz.tau_s - 1.0), dR = 1.0 - zs.rf;
-	double C = 3.0 * (1.0 - p->nu * p->nu) / (4.0 * p->E * p->r0);
+	double C = anvil_patch_compliance(p->E, p->nu, p->r0);
 	double amax = hz.alpha_max * p->T * p->V0;
 	double refl = p->r0 / (2.0 * p->h) * C * p->K * sqrt(amax);
 	return fmax(fmax(dP, dt), fmax(dR, refl));
@@ -284,8 +276,7 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 	double M = ceil(omega * Tp / M_PI), w0 = fmin(1.0, 2.0 / hh);
 	for (double n = 0; n <= M; n++) {
 		double om = n * M_PI / Tp, wabs = hypot(om, c0);
-		double kflex = pow(6.0 * (1.0 - nu) * wabs * wabs / (hh * hh), 0.25);
-		double kband = 1.6 * fmax(om / cr, kflex) + 3.0;
+		double kband = anvil_kband(om, wabs, nu, hh, cr);
 		double kend = fmax(kband, sqrt(pow(L / hh, 2) + om * om));
 		panels += ceil(kband / w0) + ceil((kend - kband) / 4.0);
 	}

@@ -40,9 +40,11 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_bessel.h>
 
+#include "accuracy.h"
 #include "field.h"
 #include "field_kernel.h"
 #include "kernel.h"
+#include "material.h"
 
 typedef double complex cplx;
 
@@ -109,7 +111,7 @@ static unsigned hs_needed(unsigned quantities)
 
 /* ---- accuracy levels ------------------------------------------------------- */
 
-/* Per level, from convergence studies against runs at the reference
+/* The field's columns of the accuracy table (base/accuracy.c).  Per level, from convergence studies against runs at the reference
  * level with three times its bandwidth and a window of 3 t_last (25 x 25
  * maps of every stress over 3 r0 x h at t_max/2, t_max and t_s, for h = r0,
  * 0.5 r0 and the half-space; tests/test_field.c keeps normal against
@@ -137,14 +139,8 @@ static unsigned hs_needed(unsigned quantities)
  *   ktail: how far past the band the k-integral goes where z -> 0 (the
  *     remainder decays like k^-(5/2) there; twice as far moves nothing);
  *   L: exp(-L) ends the integral where e^{-kz} decays first. */
-static const struct flevel {
-	double cycles, omega_min, tw, c0t, band_w, ktail, L;
-} flevels[ANVIL_ACC_COUNT] = {
-	{120.0, 1.5, 1.25, 5.0, 10.0, 10.0, 14.0}, /* draft */
-	{240.0, 2.0, 1.25, 5.0, 8.0, 15.0, 18.0},  /* normal */
-	{480.0, 4.0, 1.5, 5.0, 6.0, 30.0, 23.0},   /* fine */
-	{960.0, 8.0, 1.5, 5.5, 4.0, 60.0, 28.0},   /* reference */
-};
+#define FLEVEL(acc) (&anvil_level(acc)->field)
+typedef struct anvil_field_level flevel_t;
 
 /* ---- the object ------------------------------------------------------------ */
 
@@ -188,7 +184,7 @@ struct anvil_field *anvil_field_alloc(const struct anvil_params *p, const double
 	memcpy(copy, P, n * sizeof *copy);
 	*f = (struct anvil_field){
 		.r0 = p->r0, .mu = p->mu, .c2 = p->c2, .nu = p->nu,
-		.kap2 = (1 - 2 * p->nu) / (2 * (1 - p->nu)), .hh = p->h / p->r0,
+		.kap2 = anvil_kappa2(p->nu), .hh = p->h / p->r0,
 		.cr = p->cR / p->c2, .acc = acc, .P = copy, .nP = n,
 		.dtau = dt * p->c2 / p->r0, .load_rel = isfinite(load_rel) ? fabs(load_rel) : 0.0,
 	};
@@ -276,7 +272,7 @@ static cplx load_transform(const struct anvil_field *f, cplx s)
 	return d * sx * sx * sum;
 }
 
-static int window_init(const struct anvil_field *f, const struct flevel *lv, double tau_hi,
+static int window_init(const struct anvil_field *f, const flevel_t *lv, double tau_hi,
 		       struct window *w)
 {
 	double omega = fmax(lv->omega_min, lv->cycles / f->tau_load);
@@ -409,15 +405,13 @@ static double kgrid_tail_factor(const struct kgrid *g, double z)
 	return (g->kb + g->ktail) / (1.5 * g->wt);
 }
 
-static int kgrid_init(struct kgrid *g, const struct anvil_field *f, const struct flevel *lv,
+static int kgrid_init(struct kgrid *g, const struct anvil_field *f, const flevel_t *lv,
 		      const struct window *w, double rmax)
 {
 	double nu = f->nu, om = w->omega;
-	/* the A0 mode's wavenumber at omega (thin plate) when it exceeds omega/c_R */
-	double kflex = isfinite(f->hh) ? pow(6.0 * (1.0 - nu) * om * om / (f->hh * f->hh), 0.25) : 0;
 	/* no wider than a few pole distances, nor than J(k r_max) allows */
 	double wb = fmin(fmin(1.0, lv->band_w * w->c0 * sqrt(f->kap2)), 8.0 / (1.0 + rmax));
-	g->kb = 1.6 * fmax(om / f->cr, kflex) + 3.0;
+	g->kb = anvil_kband(om, om, nu, f->hh, f->cr);
 	g->wt = fmin(2.0, 8.0 / (1.0 + rmax));
 	g->ktail = lv->ktail;
 	g->L = lv->L;
@@ -843,7 +837,7 @@ static int check_grid(const struct anvil_field *f, const struct anvil_field_grid
 }
 
 /* A map at the settings of level lv (the peak search locates at draft). */
-static int field_map(struct anvil_field *f, const struct flevel *lv, size_t nt, const double *t,
+static int field_map(struct anvil_field *f, const flevel_t *lv, size_t nt, const double *t,
 		     const struct anvil_field_grid *g, unsigned quantities,
 		     struct anvil_fval *out, struct anvil_err *err)
 {
@@ -883,7 +877,7 @@ int anvil_field_map(struct anvil_field *f, size_t nt, const double *t,
 		    const struct anvil_field_grid *g, unsigned quantities,
 		    struct anvil_fval *out, struct anvil_err *err)
 {
-	return field_map(f, &flevels[f->acc], nt, t, g, quantities, out, err);
+	return field_map(f, FLEVEL(f->acc), nt, t, g, quantities, out, err);
 }
 
 /* ---- points: few places, many times --------------------------------------- */
@@ -1061,9 +1055,9 @@ int anvil_field_points(struct anvil_field *f, size_t npt, const double *r,
 		return st;
 	struct ptjob j = {.f = f, .npt = npt};
 	double *tau = malloc(nt * sizeof *tau);
-	st = tau ? window_init(f, &flevels[f->acc], tau_hi, &j.w) : ANVIL_ENOMEM;
+	st = tau ? window_init(f, FLEVEL(f->acc), tau_hi, &j.w) : ANVIL_ENOMEM;
 	if (!st)
-		st = kgrid_init(&j.g, f, &flevels[f->acc], &j.w, rmax);
+		st = kgrid_init(&j.g, f, FLEVEL(f->acc), &j.w, rmax);
 	if (!st)
 		st = ptjob_alloc(&j);
 	for (size_t i = 0; !st && i < npt; i++) {
@@ -1101,7 +1095,7 @@ struct peak_cell {
 
 /* A map over instants t[0..nt) and grid g; its largest von Mises into pk
  * when it beats pk's (cell: the grid's spacing, for the refinement). */
-static int peak_pass(struct anvil_field *f, const struct flevel *lv, size_t nt, const double *t,
+static int peak_pass(struct anvil_field *f, const flevel_t *lv, size_t nt, const double *t,
 		     const struct anvil_field_grid *g, struct anvil_field_peak *pk,
 		     struct peak_cell *cell, struct anvil_err *err)
 {
@@ -1138,7 +1132,7 @@ static void around(double x, double d, double lo, double hi, double *a, double *
 static int peak_coarse(struct anvil_field *f, struct anvil_field_peak *pk,
 		       struct peak_cell *cell, struct anvil_err *err)
 {
-	const struct flevel *lv = &flevels[ANVIL_ACC_DRAFT];
+	const flevel_t *lv = FLEVEL(ANVIL_ACC_DRAFT);
 	double h = anvil_field_h(f), r0 = f->r0, tl = anvil_field_t_load(f), t[PEAK_NT];
 	double znear = isfinite(h) ? fmin(h, PEAK_NEAR * r0) : PEAK_NEAR * r0;
 	size_t nz = (size_t)ceil(8.0 * znear / r0) + 1;
@@ -1173,7 +1167,7 @@ int anvil_field_peak(struct anvil_field *f, double yield, struct anvil_field_pea
 	for (int i = 0; i < PEAK_FINE; i++)
 		tf[i] = t0 + (t1 - t0) * i / (PEAK_FINE - 1);
 	pk->vm = -1;
-	st = peak_pass(f, &flevels[f->acc], PEAK_FINE, tf, &g, pk, &cell, err);
+	st = peak_pass(f, FLEVEL(f->acc), PEAK_FINE, tf, &g, pk, &cell, err);
 	pk->yield = yield > 0 ? yield : 0.0;
 	pk->exceeded = pk->yield > 0 && pk->vm > pk->yield;
 	return st;

@@ -184,3 +184,13 @@ int anvil_material_check(const struct anvil_material *m, struct anvil_err *err)
 				     "material '%s': yield = %g Pa is not >= 0", name, m->yield);
 	return ANVIL_OK;
 }
+
+double anvil_kappa2(double nu)
+{
+	return (1 - 2 * nu) / (2 * (1 - nu));
+}
+
+double anvil_patch_compliance(double E, double nu, double r0)
+{
+	return 3.0 * (1.0 - nu * nu) / (4.0 * E * r0);
+}

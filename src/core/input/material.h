@@ -35,6 +35,14 @@ double anvil_material_cr(const struct anvil_material *m);     /* Rayleigh speed,
 /* (c_R/c2)^2, the Rayleigh root, for k2 = (c2/c1)^2: Brent on the
  * rationalised cubic, polished by Newton and checked against the
  * unrationalised equation.  ANVIL_ENUM (message in err) if that fails. */
+/* kappa^2 = (c2/c1)^2 = (1 - 2 nu) / (2 (1 - nu)): the one place it is
+ * written. */
+double anvil_kappa2(double nu);
+/* The static centre compliance w/P of a Hertz-shaped pressure of radius r0
+ * on a half-space, 3 (1 - nu^2) / (4 E r0) (Johnson 1985, sec. 3.4; the
+ * late-time limit of the half-space response, halfspace.h, where it is
+ * 3 (1 - nu) / 8 in units 1/(mu r0)). */
+double anvil_patch_compliance(double E, double nu, double r0);
 int anvil_rayleigh_x(double k2, double *x, struct anvil_err *err);
 
 /* Back from wave speeds: sets E, nu and rho of m from c1, c2 and rho; the

@@ -45,33 +45,11 @@ static const char default_text[] =
 
 /* ---- names ---- */
 
-static const char *const accuracy_names[ANVIL_ACC_COUNT] = {
-	"draft", "normal", "fine", "reference"};
-/* The documented target relative error of P_max, t_s and R_f per level. */
-static const double accuracy_targets[ANVIL_ACC_COUNT] = {1e-2, 1e-3, 1e-4, 1e-5};
 static const char *const model_names[ANVIL_MODEL_COUNT] = {
 	"hertz", "zener", "layer", "halfspace"};
 static const char *const waves_names[ANVIL_WAVES_COUNT] = {
 	"auto", "layer", "halfspace", "none"};
 static const char *const field_names[ANVIL_FIELDMODE_COUNT] = {"off", "points", "map"};
-
-const char *anvil_accuracy_name(enum anvil_accuracy a)
-{
-	return (unsigned)a < ANVIL_ACC_COUNT ? accuracy_names[a] : "unknown";
-}
-
-int anvil_accuracy_parse(const char *name)
-{
-	for (int i = 0; name && i < ANVIL_ACC_COUNT; ++i)
-		if (strcasecmp(name, accuracy_names[i]) == 0)
-			return i;
-	return -1;
-}
-
-double anvil_accuracy_target(enum anvil_accuracy a)
-{
-	return (unsigned)a < ANVIL_ACC_COUNT ? accuracy_targets[a] : NAN;
-}
 
 const char *anvil_model_name(enum anvil_model m)
 {

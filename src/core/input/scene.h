@@ -29,16 +29,9 @@
 
 #include <stdio.h>
 
+#include "accuracy.h"
 #include "material.h"
 #include "status.h"
-
-enum anvil_accuracy {
-	ANVIL_ACC_DRAFT,
-	ANVIL_ACC_NORMAL,
-	ANVIL_ACC_FINE,
-	ANVIL_ACC_REFERENCE,
-	ANVIL_ACC_COUNT
-};
 
 enum anvil_scheme {
 	ANVIL_SCHEME_IMPLICIT, /* second order, the default */
@@ -160,10 +153,6 @@ double anvil_scene_h(const struct anvil_scene *sc);
 unsigned anvil_scene_models(const struct anvil_scene *sc);
 
 /* Names <-> enums.  The parse functions return -1 for an unknown name. */
-const char *anvil_accuracy_name(enum anvil_accuracy a);
-int anvil_accuracy_parse(const char *name);
-/* The documented target relative error of P_max, t_s and R_f at a level. */
-double anvil_accuracy_target(enum anvil_accuracy a);
 const char *anvil_model_name(enum anvil_model m);
 int anvil_model_parse(const char *name);
 const char *anvil_waves_name(enum anvil_waves w);

@@ -5,6 +5,7 @@
 
 #include "field_kernel.h"
 #include "kernel.h"
+#include "material.h"
 
 typedef double complex cplx;
 
@@ -70,7 +71,7 @@ void anvil_fk_at(const struct anvil_fk_coef *c, double kap2, cplx e1, cplx f1, c
 
 void anvil_fk_eval(double k, cplx s, double nu, double hh, double z, cplx out[FK_COUNT])
 {
-	double kap2 = (1 - 2 * nu) / (2 * (1 - nu));
+	double kap2 = anvil_kappa2(nu);
 	struct anvil_fk_coef c;
 	anvil_fk_coef(k, s, kap2, hh, &c);
 	int layer = isfinite(hh);

@@ -8,6 +8,7 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_interp.h>
 
+#include "accuracy.h"
 #include "green.h"
 #include "kernel.h"
 #include "material.h"
@@ -25,20 +26,16 @@ struct anvil_green {
 	size_t evals;
 };
 
-/* Settings per accuracy level.  The solver replaces omega_max by a
- * bandwidth scaled to the contact time (solver.c); c0T, tol and ktail stand.
- * tests/test_layer.c shows each level meeting its target on the paper's
- * cases, and tests/test_green.c that c0T = 8 and 13 agree. */
+/* The level's inversion settings (base/accuracy.h); the bandwidth
+ * omega_max is the caller's, scaled to the contact time (engine/plan.c),
+ * and is left 0 here. */
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs)
 {
-	static const struct anvil_green_settings table[ANVIL_ACC_COUNT] = {
-		/* c0T  omega_max tol  ktail */
-		{ 9.0, 12.0, 1e-5, 1e-8 },   /* draft */
-		{ 10.0, 24.0, 1e-6, 1e-10 }, /* normal */
-		{ 11.0, 48.0, 1e-7, 1e-12 }, /* fine */
-		{ 12.0, 96.0, 1e-8, 1e-14 }, /* reference */
-	};
-	*gs = table[acc < ANVIL_ACC_COUNT ? acc : ANVIL_ACC_NORMAL];
+	const struct anvil_level *lv = anvil_level(acc);
+	if (!lv)
+		lv = anvil_level(ANVIL_ACC_NORMAL);
+	*gs = (struct anvil_green_settings){ .c0T = lv->green_c0T, .omega_max = 0.0,
+					     .tol = lv->green_tol, .ktail = lv->green_ktail };
 }
 
 /* The kernels, units mu = c2 = rho = 1.  With a = k^2, b = s^2:
@@ -253,8 +250,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	double nu_ = (1 - 2 * q->kp.kap2) / (2 * (1 - q->kp.kap2));
 	double wabs = hypot(omega, creal(q->kp.s));
 	int hs = q->mode == ANVIL_GREEN_HALFSPACE;
-	double kflex = hs ? 0 : pow(6.0 * (1.0 - nu_) * wabs * wabs / (hh * hh), 0.25);
-	double kband = 1.6 * fmax(omega / cr, kflex) + 3.0;
+	double kband = anvil_kband(omega, wabs, nu_, hs ? INFINITY : hh, cr);
 	double L = -log(ktail);
 	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
 			 : fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
@@ -445,7 +441,7 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 	g->mode = mode;
 	g->hh = hh;
 	g->nu = nu;
-	g->kap2 = (1 - 2 * nu) / (2 * (1 - nu));
+	g->kap2 = anvil_kappa2(nu);
 	g->tau_end = tau_end;
 	int st = green_compute(g, gs, progress, ctx);
 	if (st) {
@@ -484,7 +480,7 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 void anvil_green_kernel(double k, double complex s, double nu, double hh,
 			double complex *layer, double complex *halfspace)
 {
-	struct kern p = { .kap2 = (1 - 2 * nu) / (2 * (1 - nu)), .H = 0.5 * hh, .s = s, .b = s * s };
+	struct kern p = { .kap2 = anvil_kappa2(nu), .H = 0.5 * hh, .s = s, .b = s * s };
 	cplx al1, al2, R, X;
 	*halfspace = w_halfspace(&p, k, &al1, &al2, &R, &X);
 	*layer = *halfspace + kern_layer_corr(&p, k);
@@ -536,7 +532,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 		return NULL;
 	}
 	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu,
-				   .kap2 = (1 - 2 * s->nu) / (2 * (1 - s->nu)), .tau_end = s->tau_end,
+				   .kap2 = anvil_kappa2(s->nu), .tau_end = s->tau_end,
 				   .dtau = s->dtau, .n = s->n, .tau = block, .ramp = block + s->n,
 				   .abserr = s->abserr };
 	for (size_t j = 0; j < g->n; j++)

@@ -380,7 +380,7 @@ struct anvil_halfspace *anvil_halfspace_alloc(double nu, double tol, struct anvi
 	}
 	hs->nu = nu;
 	hs->tol = tol;
-	hs->k2 = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+	hs->k2 = anvil_kappa2(nu);
 	hs->kappa = sqrt(hs->k2);
 	hs->cc2 = (1.0 - hs->k2) / hs->k2; /* 1/kappa^2 - 1 */
 	hs->cc = sqrt(hs->cc2);

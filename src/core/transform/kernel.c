@@ -37,3 +37,9 @@ cplx anvil_kernel_tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx
 		return 2.0 * E1 * (-anvil_kernel_expm1(-hh * dal)) / (p1 * p2);
 	return 2.0 * (E1 - E2) / (p1 * p2);
 }
+
+double anvil_kband(double omega, double wabs, double nu, double hh, double cr)
+{
+	double kflex = isfinite(hh) ? pow(6.0 * (1.0 - nu) * wabs * wabs / (hh * hh), 0.25) : 0.0;
+	return 1.6 * fmax(omega / cr, kflex) + 3.0;
+}

@@ -30,4 +30,14 @@ double complex anvil_kernel_tdiff(double complex al1, double complex al2, double
 				  double kap2, double hh, double complex E1, double complex E2,
 				  double complex p1, double complex p2);
 
+/* The band of wavenumbers that holds the Lamb-mode poles at angular
+ * frequency omega (units c2 = r0 = 1): 1.6 max(omega/c_R, k_flex) + 3, with
+ * k_flex = (6 (1 - nu) wabs^2 / hh^2)^(1/4) the thin plate's flexural (A0)
+ * wavenumber at |s| = wabs (0 for hh = inf).  The poles sit below the
+ * slower of the Rayleigh and flexural waves; 1.6 and 3 leave room for the
+ * pole band's width (green.c: results do not move when both grow).  One
+ * rule for the centre response (green.c), the field (field.c) and the
+ * planner's cost model (plan.c). */
+double anvil_kband(double omega, double wabs, double nu, double hh, double cr);
+
 #endif
