@@ -15,14 +15,11 @@
 #include <stddef.h>
 
 #include "cache.h"
+#include "progress.h"
 #include "result.h"
 #include "scene.h"
 #include "status.h"
 
-/* Progress report: fraction in [0,1] of the current job, what is a short
- * phrase ("layer response h = 2 r0").  Return non-zero to cancel: the
- * running call then returns ANVIL_ECANCEL. */
-typedef int (*anvil_progress_fn)(void *ctx, double fraction, const char *what);
 
 struct anvil_solver;
 

@@ -26,8 +26,8 @@
 #include <complex.h>
 #include <stddef.h>
 
-#include "scene.h"
-#include "solver.h"
+#include "accuracy.h"
+#include "progress.h"
 #include "status.h"
 
 enum anvil_green_mode {
