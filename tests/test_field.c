@@ -495,6 +495,40 @@ static void test_errors(struct impact *m)
 	anvil_field_free(NULL);
 }
 
+/* Issue 13: a depth of 1e-200 r0 is the surface (z^2 underflowed in the
+ * closed-form static field: NaN everywhere), and a radius that would need
+ * more k panels than size_t holds is refused, not looped over. */
+static void test_tiny_depth(struct impact *m)
+{
+	enum { NT = 5 };
+	double r[2] = {0, 0}, z[2] = {0, 1e-200 * m->r0}, t[NT], worst = 0, hs0[HS_COUNT], hs1[HS_COUNT];
+	struct anvil_fval v[2 * NT];
+	int fin = 1, st;
+	for (int i = 0; i < NT; i++)
+		t[i] = m->r.ts * (i + 1) / (NT + 1.0);
+	st = anvil_field_points(m->f, 2, r, z, NT, t, v, NULL);
+	for (int i = 0; !st && i < NT; i++)
+		for (int q = 0; q < ANVIL_FQ_COUNT; q++) {
+			fin &= isfinite(v[NT + i].v[q]) && isfinite(v[NT + i].err[q]);
+			worst = fmax(worst, fabs(v[NT + i].v[q] - v[i].v[q]) /
+					     (anvil_fq_is_stress(q) ? m->p0max : 1e-4));
+		}
+	ok(!st && fin && worst < 1e-12, "z = 1e-200 r0 on the axis: finite and the surface's values (%.1e)",
+	   worst);
+	anvil_fk_static_field(NU, 0, 1e-200, hs1);
+	anvil_fk_static_field(NU, 0, 0, hs0);
+	worst = 0;
+	for (int h = 0; h < HS_COUNT; h++)
+		worst = fmax(worst, isfinite(hs1[h]) ? fabs(hs1[h] - hs0[h]) : INFINITY);
+	ok(worst < 1e-15, "static field at z = 1e-200 r0 = at z = 0 (%.1e)", worst);
+	cplx c = anvil_kernel_cmplx(2.0, -0.0);
+	ok(creal(c) == 2.0 && cimag(c) == 0 && signbit(cimag(c)), "anvil_kernel_cmplx keeps -0.0 (the cut's side)");
+	struct anvil_err e = {0};
+	double far = 1e12 * m->r0, z0 = 0, t0 = m->r.tmax;
+	ok(anvil_field_points(m->f, 1, &far, &z0, 1, &t0, v, &e) == ANVIL_EINVAL && strstr(e.msg, "bounds"),
+	   "r = 1e12 r0: refused, not computed for ever (%s)", e.msg);
+}
+
 int main(void)
 {
 	struct impact m;
@@ -508,6 +542,7 @@ int main(void)
 		test_yield(&m);
 		test_levels(&m);
 		test_errors(&m);
+		test_tiny_depth(&m);
 		impact_free(&m);
 	} else {
 		ok(0, "the paper's impact with a history");

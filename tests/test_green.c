@@ -10,9 +10,15 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <gsl/gsl_errno.h>
 
+#include <gsl/gsl_integration.h>
+
+#include "durbin.h"
+#include "field_kernel.h"
+#include "gk21.h"
 #include "green.h"
 #include "halfspace.h"
 #include "direct_bc.h"
@@ -214,10 +220,155 @@ static void test_plate_limit(void)
 	anvil_green_free(g);
 }
 
+/* One boundary-condition solve: the centre response's kernel is the
+ * field's w at z = 0 (the potentials of layer_bc), to rounding. */
+static void test_one_solve(void)
+{
+	const double ks[] = { 0.01, 0.4, 1.3, 3.0, 40.0 }, hs[] = { 0.3, 1.0, 2.0, 30.0, INFINITY };
+	const cplx ss[] = { 0.3 + 0.1 * I, 0.1 + 2.0 * I, 1.0 + 5.0 * I, 0.05 + 0.9 * I };
+	double worst = 0;
+	/* the potentials' sum alpha1 (B1 E1 - A1) + k (A2 + B2 E2) cancels to
+	 * O(1/k) from terms O(k): about k^2 eps */
+	for (int i = 0; i < 5; i++)
+		for (int j = 0; j < 5; j++)
+			for (int l = 0; l < 4; l++) {
+				cplx lay, hsp, f[FK_COUNT];
+				anvil_green_kernel(ks[i], ss[l], 0.3, hs[j], &lay, &hsp);
+				anvil_fk_eval(ks[i], ss[l], 0.3, hs[j], 0.0, f);
+				worst = fmax(worst, cabs(lay - f[FK_W]) / cabs(lay) / fmax(1.0, ks[i] * ks[i]));
+			}
+	ok(worst < 1e-14, "centre kernel = the field's w(z = 0) from the same solve (worst rel. %.1e k^2)",
+	   worst);
+}
+
+/* The inversion: F(s) = 1/(s + 1)^3 is t^2 e^{-t}/2.  Unfiltered by FFT, and
+ * the filtered weights (the field's), both against the exact function: the
+ * truncated series errs by about (1/T') sum_{n>M} |F_n| ~ T'^2/(2 pi^3 M^2)
+ * e^{c0 t} = 4e-5 e^{c0 t} here, aliasing by e^{-2 c0 T'} = 2e-9.  The
+ * number of terms is bounded. */
+static void test_durbin(void)
+{
+	struct anvil_durbin d;
+	enum { M = 400 };
+	static cplx F[M + 1], a[M + 1];
+	double out[64], worst = 0, wworst = 0;
+	int st = anvil_durbin_init(&d, 20.0, 0.5, M * M_PI / 20.0, 16);
+	for (size_t n = 0; !st && n <= d.M; n++) {
+		cplx s = anvil_durbin_s(&d, n);
+		F[n] = 1.0 / ((s + 1.0) * (s + 1.0) * (s + 1.0));
+	}
+	size_t N = anvil_durbin_fft_size(&d, 0);
+	st = st ? st : anvil_durbin_fft(&d, F, N, out, 64);
+	for (int j = 1; !st && j < 64; j++) {
+		double t = j * 2.0 * d.Tp / (double)N;
+		worst = fmax(worst, fabs(out[j] - 0.5 * t * t * exp(-t)));
+	}
+	for (double t = 0.5; !st && t < 10; t += 0.5) {
+		double v = 0;
+		anvil_durbin_weights(&d, t, d.M, F, a, 1);
+		for (size_t n = 0; n <= d.M; n++)
+			v += creal(a[n]);
+		wworst = fmax(wworst, fabs(v - 0.5 * t * t * exp(-t)) * exp(-d.c0 * t));
+	}
+	ok(!st && d.M == M && worst < 1e-4 && wworst < 1e-4,
+	   "Durbin: 1/(s+1)^3 -> t^2 e^-t/2, by FFT (%.1e) and by the filtered weights (%.1e e^{c0 t})",
+	   worst, wworst);
+	ok(anvil_durbin_init(&d, 1e300, 1e-300, 10.0, 0) == ANVIL_EINVAL &&
+	   anvil_durbin_init(&d, 1e6, 1e-5, 1e6, 0) == ANVIL_EINVAL,
+	   "Durbin: more than ANVIL_DURBIN_M_MAX terms refused");
+}
+
+static cplx eix(double x, void *ctx)
+{
+	(void)ctx;
+	return cexp(I * x);
+}
+
+static cplx cosc(double x, void *ctx)
+{
+	(void)ctx;
+	return cos(x);
+}
+
+static double cosx(double x, void *ctx)
+{
+	(void)ctx;
+	return cos(x);
+}
+
+/* The one hand-written Gauss-Kronrod rule is QUADPACK's qk21: the same
+ * value and error estimate as GSL's for the real part. */
+static void test_gk21(void)
+{
+	cplx v;
+	double e, r, er, ra, rs;
+	gsl_function f = { cosx, NULL };
+	anvil_gk21_complex(cosc, NULL, 0.0, 30.0, &v, &e);
+	gsl_integration_qk21(&f, 0.0, 30.0, &r, &er, &ra, &rs);
+	ok(fabs(creal(v) - r) <= 1e-15 * fabs(r) && fabs(e - er) <= 1e-14 * er && er > 1e-6,
+	   "gk21 = GSL's qk21 (value %.1e, estimate %.1e apart)", fabs(creal(v) - r), fabs(e - er));
+	anvil_gk21_complex(eix, NULL, 0.0, 1.0, &v, &e);
+	cplx exact = (cexp(I) - 1.0) / I;
+	ok(cabs(v - exact) < 1e-15 && e < 1e-13, "gk21: int_0^1 e^{ix} dx to rounding (%.1e, est. %.1e)",
+	   cabs(v - exact), e);
+}
+
+/* Issue 13: the importer checks sizes before any cast and the samples'
+ * plausibility, so that a crafted file with a valid checksum is refused. */
+static void test_import(void)
+{
+	struct setup su = { .hh = 2, .nu = 0.3, .tau_end = 12 }; /* 2 tau_refl = 4.3 */
+	struct anvil_green *g = make(&su, 6, 0);
+	struct anvil_green_samples s, x;
+	struct anvil_err e;
+	anvil_green_export(g, &s);
+	double *r = malloc(s.n * sizeof *r);
+	struct anvil_green *h = anvil_green_import(&s, &e);
+	ok(h != NULL, "a computed response imports");
+	anvil_green_free(h);
+	for (size_t j = 0; j < s.n; j++)
+		r[j] = 0;
+	x = s;
+	x.ramp = r;
+	ok(!anvil_green_import(&x, &e) && e.status == ANVIL_EINVAL, "all-zero samples: refused (%s)", e.msg);
+	for (size_t j = 0; j < s.n; j++)
+		r[j] = s.ramp[j];
+	r[(size_t)(1.0 / s.dtau)] += 10 * s.abserr; /* at tau = 1, before 2h/c1 = 2.1 */
+	ok(!anvil_green_import(&x, &e), "motion before the reflection returns: refused");
+	r[(size_t)(1.0 / s.dtau)] = s.ramp[(size_t)(1.0 / s.dtau)];
+	r[0] = 1e-3;
+	ok(!anvil_green_import(&x, &e), "ramp[0] != 0: refused");
+	r[0] = 0;
+	r[s.n / 2] = NAN;
+	ok(!anvil_green_import(&x, &e), "a NaN sample: refused");
+	r[s.n / 2] = s.ramp[s.n / 2];
+	x.abserr = 0;
+	ok(!anvil_green_import(&x, &e), "abserr = 0: refused");
+	x = s;
+	x.tau_end = 1e300;
+	ok(!anvil_green_import(&x, &e) && strstr(e.msg, "sizes"), "tau_end = 1e300: refused before any cast");
+	x = s;
+	x.n++;
+	ok(!anvil_green_import(&x, &e), "n inconsistent with tau_end/dtau: refused");
+	x = s;
+	x.dtau *= 1.5;
+	ok(!anvil_green_import(&x, &e), "dtau off the FFT grid: refused");
+	x = s;
+	x.dtau = x.tau_end / 4e6;
+	x.n = 4000002;
+	ok(!anvil_green_import(&x, &e), "more samples than the bound (2^21 + 2): refused");
+	free(r);
+	anvil_green_free(g);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
 	test_kernel();
+	test_one_solve();
+	test_durbin();
+	test_gk21();
+	test_import();
 	test_causality();
 	test_reference();
 	test_settings_agree();

@@ -9,7 +9,7 @@
  *   (e^{c0 tau}/T') sum_{n<=M} g_n sigma_n Re[ Phat(s_n) e^{i w_n tau}
  *        int_0^kend (K(k,z,s_n) - K_st(k,z)) Z^H(k) k J(kr) dk ]
  * (Durbin, s_n = c0 + i w_n, w_n = n pi/T', g_0 = 1/2, g_n = 1, sigma_n the
- * spectral filter, see filter()), where
+ * spectral filter, see durbin_weights()), where
  * Phat is the exact Laplace transform of the piecewise-linear P(t): this is
  * the Duhamel convolution (13)-(14) done in the transform domain, exact for
  * that P.  For stresses it is the same as eq (36) (the step response
@@ -251,7 +251,7 @@ static double load_at(const struct anvil_field *f, double tau)
 /* ---- the Bromwich line ---------------------------------------------------- */
 
 struct window {
-	double Tp, c0;  /* half period T', abscissa c0 */
+	struct anvil_durbin dl; /* the line: half period T', abscissa c0, terms 0..M */
 	double omega;   /* highest frequency summed */
 	size_t M, Mh;   /* terms n = 0..M; the coarse twin n = 0..Mh (2M/3) */
 	cplx *s, *Phat; /* M + 1 each, one block */
@@ -277,98 +277,48 @@ static int window_init(const struct anvil_field *f, const flevel_t *lv, double t
 {
 	double omega = fmax(lv->omega_min, lv->cycles / f->tau_load);
 	tau_hi = fmax(tau_hi, 4.0 * f->dtau);
-	w->Tp = lv->tw * tau_hi;
-	w->c0 = lv->c0t / tau_hi;
-	w->M = (size_t)ceil(omega * w->Tp / M_PI);
-	if (w->M < 16)
-		w->M = 16;
+	/* at least 16 terms; at most ANVIL_DURBIN_M_MAX (a load so long that it
+	 * needs more is refused, not summed for ever) */
+	if (anvil_durbin_init(&w->dl, lv->tw * tau_hi, lv->c0t / tau_hi, omega, 16))
+		return ANVIL_EINVAL;
+	w->M = w->dl.M;
 	/* the twin at 2/3 of the band: at 1/2 its smoothing in time, amplified
 	 * by e^{c0 t}, made the estimates up to 1000 times the error (thin
 	 * layers); at 3/4 it agreed with the series too often by chance */
 	w->Mh = 2 * w->M / 3;
-	w->omega = (double)w->M * M_PI / w->Tp;
+	w->omega = anvil_durbin_omega(&w->dl);
 	w->s = malloc(2 * (w->M + 1) * sizeof *w->s);
 	if (!w->s)
 		return ANVIL_ENOMEM;
 	w->Phat = w->s + w->M + 1;
 	for (size_t n = 0; n <= w->M; n++) {
-		w->s[n] = w->c0 + I * ((double)n * M_PI / w->Tp);
+		w->s[n] = anvil_durbin_s(&w->dl, n);
 		w->Phat[n] = load_transform(f, w->s[n]);
 	}
 	return ANVIL_OK;
 }
 
-/* The spectral filter exp(-36 eta^8), eta = n/nmax (Vandeven's exponential
- * filter; Gottlieb and Hesthaven, J. Comput. Appl. Math. 128, 2001): a
- * sharply truncated series spreads the error of the load's t^(3/2)
+/* The series is filtered (anvil_durbin_filter, Vandeven's exp(-36 eta^8)):
+ * a sharply truncated series spreads the error of the load's t^(3/2)
  * singularities over the whole window as Gibbs tails, which the e^{c0 t}
- * of the inversion then amplifies; the filter keeps it near the
- * singular instants.  Against a reference with the unfiltered series at
- * three times the bandwidth and twice the window, the maps' error at half
- * the time of the peak force fell from 1.7e-3 to 1e-4 of the peak stress
- * (h = r0) and from 1.6e-3 to 4e-6 (half-space); at the end of the load
- * itself it stays near 5e-4.  36 makes the last term's weight e^-36, the
- * rounding level. */
-#define FILTER_A 36.0
-
-static double filter(size_t n, size_t nmax)
-{
-	double e = (double)n / (double)nmax, e2 = e * e, e4 = e2 * e2;
-	return exp(-FILTER_A * e4 * e4);
-}
-
-/* The Durbin weights of instant tau for the terms n <= nmax (M, or Mh for
- * the coarse twin): a_n = (e^{c0 tau}/T') g_n sigma(n/nmax) Phat_n
+ * of the inversion then amplifies; the filter keeps it near the singular
+ * instants.  Against a reference with the unfiltered series at three times
+ * the bandwidth and twice the window, the maps' error at half the time of
+ * the peak force fell from 1.7e-3 to 1e-4 of the peak stress (h = r0) and
+ * from 1.6e-3 to 4e-6 (half-space); at the end of the load itself it stays
+ * near 5e-4.  The weights of instant tau for the terms n <= nmax (M, or Mh
+ * for the coarse twin): a_n = (e^{c0 tau}/T') g_n sigma(n/nmax) Phat_n
  * e^{i w_n tau}. */
 static void durbin_weights(const struct window *w, double tau, size_t nmax, cplx *a,
 			   size_t stride)
 {
-	double amp = exp(w->c0 * tau) / w->Tp;
-	cplx step = cexp(I * M_PI * tau / w->Tp), ph = 1.0;
-	for (size_t n = 0; n <= nmax; n++) {
-		cplx v = (n == 0 ? 0.5 : 1.0) * amp * filter(n, nmax) * ph;
-		a[n * stride] = v * w->Phat[n];
-		ph *= step;
-		if (n % 32 == 31) /* resynchronise the recurrence */
-			ph = cexp(I * M_PI * tau * (double)(n + 1) / w->Tp);
-	}
+	anvil_durbin_weights(&w->dl, tau, nmax, w->Phat, a, stride);
 }
 
 /* ---- the k panels ------------------------------------------------------------ */
 
-/* The 21-point Gauss-Kronrod rule and its embedded 10-point Gauss rule
- * (QUADPACK qk21; Piessens et al. 1983): abscissae on [-1, 1], xgk[1],
- * xgk[3], ... are the Gauss nodes. */
-static const double xgk[11] = {
-	0.995657163025808080735527280689003, 0.973906528517171720077964012084452,
-	0.930157491355708226001207180059508, 0.865063366688984510732096688423493,
-	0.780817726586416897063717578345042, 0.679409568299024406234327365114874,
-	0.562757134668604683339000099272694, 0.433395394129247190799265943165784,
-	0.294392862701460198131126603103866, 0.148874338981631210884826001129720,
-	0.000000000000000000000000000000000};
-static const double wgk[11] = {
-	0.011694638867371874278064396062192, 0.032558162307964727478818972459390,
-	0.054755896574351996031381300244580, 0.075039674810919952767043140916190,
-	0.093125454583697605535065465083366, 0.109387158802297641899210590325805,
-	0.123491976262065851077958109831074, 0.134709217311473325928054001771707,
-	0.142775938577060080797094273138717, 0.147739104901338491374841515972068,
-	0.149445554002916905664936468389821};
-static const double wg[5] = {
-	0.066671344308688137593568809893332, 0.149451349150580593145776339657697,
-	0.219086362515982043995534934228163, 0.269266719309996355091226921569469,
-	0.295524224714752870173892994651338};
-
-#define GK_NODES 21
-
-/* Node j (0..20) of the panel [a, b]: abscissa, Kronrod and Gauss weights. */
-static void gk_node(double a, double b, int j, double *k, double *wk, double *wgauss)
-{
-	double c = 0.5 * (a + b), h = 0.5 * (b - a);
-	int i = j <= 10 ? j : 20 - j;
-	*k = j <= 10 ? c - h * xgk[i] : c + h * xgk[i];
-	*wk = h * wgk[i];
-	*wgauss = i % 2 == 1 ? h * wg[i / 2] : 0.0;
-}
+/* The panels' nodes: the 21-point Gauss-Kronrod rule (gk21.h), walked
+ * node by node, since each node serves every depth, frequency and radius. */
 
 struct kgrid {
 	size_t np;   /* panels */
@@ -405,17 +355,29 @@ static double kgrid_tail_factor(const struct kgrid *g, double z)
 	return (g->kb + g->ktail) / (1.5 * g->wt);
 }
 
+/* The most panels one k-grid may have: 2^20 (8 MB of ends; the normal
+ * level's maps use a few hundred).  Their number grows with the band (the
+ * window's M, itself bounded by ANVIL_DURBIN_M_MAX) and with the largest
+ * radius asked for (panels no wider than 8/(1 + r_max)): past this an
+ * input is refused rather than computed for days. */
+#define KGRID_NP_MAX 1048576.0
+
 static int kgrid_init(struct kgrid *g, const struct anvil_field *f, const flevel_t *lv,
 		      const struct window *w, double rmax)
 {
 	double nu = f->nu, om = w->omega;
 	/* no wider than a few pole distances, nor than J(k r_max) allows */
-	double wb = fmin(fmin(1.0, lv->band_w * w->c0 * sqrt(f->kap2)), 8.0 / (1.0 + rmax));
+	double wb = fmin(fmin(1.0, lv->band_w * w->dl.c0 * sqrt(f->kap2)), 8.0 / (1.0 + rmax));
 	g->kb = anvil_kband(om, om, nu, f->hh, f->cr);
 	g->wt = fmin(2.0, 8.0 / (1.0 + rmax));
 	g->ktail = lv->ktail;
 	g->L = lv->L;
-	size_t nb = (size_t)ceil(g->kb / wb), nt = (size_t)ceil(g->ktail / g->wt);
+	double nbd = ceil(g->kb / wb), ntd = ceil(g->ktail / g->wt);
+	/* compared as doubles before the casts: a radius of 1e6 r0 asks for
+	 * more panels than size_t holds */
+	if (!(nbd + ntd <= KGRID_NP_MAX))
+		return ANVIL_EINVAL;
+	size_t nb = (size_t)nbd, nt = (size_t)ntd;
 	g->np = nb + nt;
 	g->a = malloc((g->np + 1) * sizeof *g->a);
 	if (!g->a)
@@ -740,9 +702,9 @@ static int map_panels(struct mapjob *m)
 			nza++;
 		if (nza == 0)
 			break; /* rows are sorted by depth: deeper ones end sooner */
-		for (int j = 0; j < GK_NODES; j++) {
+		for (int j = 0; j < ANVIL_GK21_NODES; j++) {
 			double k, wk, wgs;
-			gk_node(m->g.a[p], m->g.a[p + 1], j, &k, &wk, &wgs);
+			anvil_gk21_node(m->g.a[p], m->g.a[p + 1], j, &k, &wk, &wgs);
 			int st = map_node(m, k, wk, wgs, p, nza);
 			if (st)
 				return st;
@@ -836,6 +798,18 @@ static int check_grid(const struct anvil_field *f, const struct anvil_field_grid
 	return st;
 }
 
+/* The message of a failed map or history: ANVIL_EINVAL there is a window
+ * or k-grid past its bound (window_init, kgrid_init). */
+static int field_fail(const struct anvil_field *f, int st, const char *what,
+		      struct anvil_err *err)
+{
+	if (st == ANVIL_EINVAL)
+		return anvil_err_set(err, st, "%s: the load (%.4g us) or the radii asked for need "
+				     "more Fourier terms or k panels than the bounds allow", what,
+				     anvil_field_t_load(f) * 1e6);
+	return anvil_err_set(err, st, "%s: %s", what, anvil_strerror(st));
+}
+
 /* A map at the settings of level lv (the peak search locates at draft). */
 static int field_map(struct anvil_field *f, const flevel_t *lv, size_t nt, const double *t,
 		     const struct anvil_field_grid *g, unsigned quantities,
@@ -870,7 +844,7 @@ static int field_map(struct anvil_field *f, const flevel_t *lv, size_t nt, const
 		map_output(&m, want, out);
 	mapjob_free(&m);
 	free(tau);
-	return st ? anvil_err_set(err, st, "field map: %s", anvil_strerror(st)) : ANVIL_OK;
+	return st ? field_fail(f, st, "field map", err) : ANVIL_OK;
 }
 
 int anvil_field_map(struct anvil_field *f, size_t nt, const double *t,
@@ -986,9 +960,9 @@ static int points_panels(struct ptjob *j)
 	for (size_t i = 0; i < j->npt; i++)
 		pmax = j->npan[i] > pmax ? j->npan[i] : pmax;
 	for (size_t p = 0; p < pmax; p++) {
-		for (int n = 0; n < GK_NODES; n++) {
+		for (int n = 0; n < ANVIL_GK21_NODES; n++) {
 			double k, wk, wgs;
-			gk_node(j->g.a[p], j->g.a[p + 1], n, &k, &wk, &wgs);
+			anvil_gk21_node(j->g.a[p], j->g.a[p + 1], n, &k, &wk, &wgs);
 			if (points_node(j, k, wk, wgs, p))
 				return ANVIL_ENUM;
 		}
@@ -1073,7 +1047,7 @@ int anvil_field_points(struct anvil_field *f, size_t npt, const double *r,
 		st = points_output(&j, nt, tau, out);
 	ptjob_free(&j);
 	free(tau);
-	return st ? anvil_err_set(err, st, "field: %s", anvil_strerror(st)) : ANVIL_OK;
+	return st ? field_fail(f, st, "field", err) : ANVIL_OK;
 }
 
 /* ---- the peak of von Mises ---------------------------------------------------- */

@@ -5,6 +5,7 @@
 
 #include "field_kernel.h"
 #include "kernel.h"
+#include "layer_bc.h"
 #include "material.h"
 
 typedef double complex cplx;
@@ -14,44 +15,17 @@ const int anvil_fk_of_hs[HS_COUNT] = {
 	[HS_SZZ] = FK_SZZ, [HS_SRZ] = FK_SRZ, [HS_LAM] = FK_LAM,
 };
 
-/* The boundary conditions split into parts symmetric and antisymmetric about
- * the mid-plane: with S_j = A_j + B_j, D_j = A_j - B_j they are two 2x2
- * systems,
- *   gamma (1+E1) S1 - 2k alpha2 (1+E2) D2 = -1,  -2k alpha1 (1-E1) S1 + gamma (1-E2) D2 = 0,
- *   gamma (1-E1) D1 - 2k alpha2 (1-E2) S2 = -1,  -2k alpha1 (1+E1) D1 + gamma (1+E2) S2 = 0,
- * solved with t_j = tanh(alpha_j hh/2) and the denominators of green.c,
- * t2 R + X d and t1 R - X d (d = t2 - t1).  B1, B2 are O(E) and multiply
- * exp(-alpha (hh - z)), which is O(1) near the bottom: they are formed from
- * u1 = 1 - t1 and d without the cancellation of (S - D)/2. */
+/* The coefficients from the one boundary-condition solve (layer_bc.h). */
 void anvil_fk_coef(double k, cplx s, double kap2, double hh, struct anvil_fk_coef *c)
 {
-	double a = k * k;
-	cplx b = s * s;
-	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b), gam = 2.0 * a + b;
-	cplx X = 4.0 * a * al1 * al2, R = anvil_kernel_rayleigh(a, b, kap2, gam, X);
+	struct anvil_layer_bc bc;
+	anvil_layer_bc_solve(k, s, kap2, hh, &bc);
 	c->k = k;
-	c->b = b;
-	c->al1 = al1;
-	c->al2 = al2;
-	c->gam = gam;
-	if (!isfinite(hh)) {
-		c->A1 = -gam / R;
-		c->A2 = -2.0 * k * al1 / R;
-		c->B1 = c->B2 = 0.0;
-		return;
-	}
-	cplx m1 = -anvil_kernel_expm1(-hh * al1), m2 = -anvil_kernel_expm1(-hh * al2); /* 1 - E_j */
-	cplx E1 = cexp(-hh * al1), E2 = cexp(-hh * al2);
-	cplx p1 = 2.0 - m1, p2 = 2.0 - m2;                       /* 1 + E_j */
-	cplx t1 = m1 / p1, t2 = m2 / p2, u1 = 2.0 * E1 / p1;
-	cplx d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, E1, E2, p1, p2), Xd = X * d;
-	cplx den1 = t2 * R + Xd, den2 = t1 * R - Xd, dd = den1 * den2;
-	cplx S1 = -gam * t2 / (p1 * den1), D1 = -gam / (p1 * den2);
-	cplx S2 = -2.0 * k * al1 / (p2 * den2), D2 = -2.0 * k * al1 * t1 / (p2 * den1);
-	c->A1 = 0.5 * (S1 + D1);
-	c->A2 = 0.5 * (S2 + D2);
-	c->B1 = gam * (t2 * u1 * R + Xd * (1.0 + t2)) / (2.0 * p1 * dd);
-	c->B2 = -k * al1 * ((d + t1 * u1) * R + Xd * (1.0 + t1)) / (p2 * dd);
+	c->b = bc.b;
+	c->al1 = bc.al1;
+	c->al2 = bc.al2;
+	c->gam = bc.gam;
+	anvil_layer_bc_potentials(&bc, &c->A1, &c->B1, &c->A2, &c->B2);
 }
 
 void anvil_fk_at(const struct anvil_fk_coef *c, double kap2, cplx e1, cplx f1, cplx e2,
@@ -117,8 +91,8 @@ struct gpt {
 
 static void gpt_at(double t, double r, double z, struct gpt *g)
 {
-	g->p = CMPLX(z, -t);
-	g->rho = csqrt(CMPLX(z * z - t * t + r * r, -2.0 * z * t));
+	g->p = anvil_kernel_cmplx(z, -t);
+	g->rho = csqrt(anvil_kernel_cmplx(z * z - t * t + r * r, -2.0 * z * t));
 	g->ell = clog(g->p + g->rho);
 	g->r = r;
 	g->z = z;
@@ -210,9 +184,18 @@ static void ints(double r, double z, struct idx *v)
 	}
 }
 
+/* Below this depth (in r0) the surface's values are used.  The closed forms
+ * need z^2 (at r = 0, t = 0: rho = sqrt(z^2) = z, and G_{1,0} divides by it),
+ * which underflows below 1e-154; the field's departure from its surface
+ * value is O(sqrt(z)) at worst (at the rim, where the pressure has its
+ * square-root edge), 1e-50 here, far below rounding. */
+#define Z_SURFACE 1e-100
+
 void anvil_fk_static_field(double nu, double r, double z, double hs[HS_COUNT])
 {
 	struct idx v;
+	if (z < Z_SURFACE)
+		z = 0.0;
 	ints(r, z, &v);
 	/* anvil_fk_static times Z^H k J_n, integrated term by term */
 	hs[HS_U] = -0.5 * ((1.0 - 2.0 * nu) * v.i01 - z * v.i11);

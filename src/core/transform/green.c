@@ -4,16 +4,24 @@
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_fft_complex.h>
-#include <gsl/gsl_integration.h>
 #include <gsl/gsl_interp.h>
 
 #include "accuracy.h"
+#include "durbin.h"
+#include "gk21.h"
 #include "green.h"
 #include "kernel.h"
+#include "layer_bc.h"
 #include "material.h"
 
 typedef double complex cplx;
+
+/* The FFT's length, hence the output grid: at least 8192 points over the
+ * period 2T' = 4 tau_end (2048 steps over the output window), more when the
+ * band asks for it (4 (M + 1)).  With M <= ANVIL_DURBIN_M_MAX = 2^20 the
+ * length is at most 2^23, so a response holds at most 2^21 + 2 samples. */
+#define GREEN_N_MIN 8192
+#define GREEN_SAMPLES_MAX (((size_t)1 << 21) + 2)
 
 struct anvil_green {
 	enum anvil_green_mode mode;
@@ -38,112 +46,32 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
 					     .tol = lv->green_tol, .ktail = lv->green_ktail };
 }
 
-/* The kernels, units mu = c2 = rho = 1.  With a = k^2, b = s^2:
- *   alpha_j = sqrt(a + kappa_j^2 b), gamma = 2a + b, X = 4 a alpha1 alpha2,
- *   R = gamma^2 - X = b Q / (gamma^2 + X)           (rationalised: the k^8
- *   terms cancel exactly, so Q is expanded by hand and loses no digits;
- *   used where |gamma^2 + X| > |gamma^2 - X|, the plain form elsewhere),
- *   W_hs = alpha1 b / R = alpha1 (gamma^2 + X) / Q.
- * The free layer, split into parts symmetric and antisymmetric about its
- * mid-plane (half-thickness H, zeta from the mid-plane; potentials
- * phi = A cosh(alpha1 zeta), psi = B sinh(alpha2 zeta) for the symmetric
- * part, sinh/cosh for the antisymmetric one; each part's conditions on the
- * loaded face are a 2x2 system), with t_j = tanh(alpha_j H):
- *   W = (alpha1 b / 2) [ t1 t2 / (gamma^2 t2 - X t1) + 1 / (gamma^2 t1 - X t2) ]
- * which agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2)
- * to rounding (checked in tests/test_green.c).  Its difference from W_hs,
- * written with u1 = 1 - t1 and d = t2 - t1 (both O(exp(-2 alpha H)), so the
- * difference is formed without cancellation):
- *   W - W_hs = (W_hs/2) [ (R u1 + X d)/(t1 R - X d) - (t2 R u1 + X d)/(t2 R + X d) ].
- * Every exponential is exp(-2 alpha H) with Re alpha >= 0, and d comes from
- * anvil_kernel_tdiff: nothing overflows. */
-struct kern {
-	double kap2, H;
-	cplx s, b;
-};
-
-static cplx w_halfspace(const struct kern *p, double k, cplx *al1_out, cplx *al2_out,
-			cplx *R_out, cplx *X_out)
-{
-	double a = k * k, kap2 = p->kap2;
-	cplx b = p->b;
-	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b);
-	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
-	*al1_out = al1;
-	*al2_out = al2;
-	*X_out = X;
-	*R_out = anvil_kernel_rayleigh(a, b, kap2, gam, X);
-	return al1 * b / *R_out;
-}
-
-static cplx kern_layer_corr(const struct kern *p, double k)
-{
-	cplx al1, al2, R, X;
-	cplx whs = w_halfspace(p, k, &al1, &al2, &R, &X);
-	double H = p->H;
-	cplx m1 = -anvil_kernel_expm1(-2.0 * H * al1), m2 = -anvil_kernel_expm1(-2.0 * H * al2);
-	cplx t1 = m1 / (2.0 - m1), t2 = m2 / (2.0 - m2);
-	/* E1 itself, not 1 - m1: that would leave rounding noise (1e-16) where
-	 * E1 is 1e-23, later multiplied by a large exp(-2H (alpha2 - alpha1)). */
-	cplx E1 = cexp(-2.0 * H * al1), E2 = cexp(-2.0 * H * al2);
-	cplx u1 = 2.0 * E1 / (2.0 - m1);
-	cplx d = anvil_kernel_tdiff(al1, al2, p->b, p->kap2, 2.0 * H, E1, E2, 2.0 - m1, 2.0 - m2);
-	cplx Xd = X * d;
-	return 0.5 * whs * ((R * u1 + Xd) / (t1 * R - Xd) - (t2 * R * u1 + Xd) / (t2 * R + Xd));
-}
-
-
+/* The integrands, units mu = c2 = rho = 1, from the one boundary-condition
+ * solve (layer_bc.h): the layer correction W - W_hs (its stable form, which
+ * decays like exp(-k hh) and is formed without cancellation), and for
+ * cross-checks the half-space W_hs = alpha1 s^2 / R less its static limit
+ * (1 - nu)/k = 1/(2 k (1 - kappa^2)).  The symmetric/antisymmetric form of
+ * W agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2) to
+ * rounding (tests/test_green.c). */
 struct quad {
 	enum anvil_green_mode mode;
-	struct kern kp;
+	double kap2, nu, hh;
+	cplx s;
 	size_t evals;
-	/* GSL's Gauss-Kronrod rules are for real integrands: the real part is
-	 * integrated first and the imaginary parts of the same 21 nodes are
-	 * kept here for the second call, so each node is evaluated once. */
-	double cache_x[21], cache_im[21];
-	int ncache, imag_pass;
 };
 
-static cplx integrand(struct quad *q, double k)
-{
-	q->evals++;
-	if (q->mode == ANVIL_GREEN_HALFSPACE) {
-		cplx al1, al2, R, X;
-		cplx whs = w_halfspace(&q->kp, k, &al1, &al2, &R, &X);
-		return (k * whs - 0.5 / (1.0 - q->kp.kap2)) * anvil_kernel_zhat(k);
-	}
-	return kern_layer_corr(&q->kp, k) * anvil_kernel_zhat(k) * k;
-}
-
-static double part(double k, void *vq)
+static cplx integrand(double k, void *vq)
 {
 	struct quad *q = vq;
-	if (q->imag_pass) {
-		for (int i = 0; i < q->ncache; i++)
-			if (q->cache_x[i] == k)
-				return q->cache_im[i];
-		return cimag(integrand(q, k)); /* not reached with qk21 */
+	struct anvil_layer_bc bc;
+	q->evals++;
+	if (q->mode == ANVIL_GREEN_HALFSPACE) {
+		anvil_layer_bc_solve(k, q->s, q->kap2, INFINITY, &bc);
+		return (k * anvil_layer_bc_w_halfspace(&bc) - 0.5 / (1.0 - q->kap2)) *
+		       anvil_kernel_zhat(k);
 	}
-	cplx v = integrand(q, k);
-	if (q->ncache < 21) {
-		q->cache_x[q->ncache] = k;
-		q->cache_im[q->ncache++] = cimag(v);
-	}
-	return creal(v);
-}
-
-/* The 21-point Gauss-Kronrod rule on [a, b] for the complex integrand. */
-static void qk21_complex(struct quad *q, double a, double b, cplx *val, double *err)
-{
-	gsl_function f = { part, q };
-	double re, im, ere, eim, r1, r2;
-	q->ncache = 0;
-	q->imag_pass = 0;
-	gsl_integration_qk21(&f, a, b, &re, &ere, &r1, &r2);
-	q->imag_pass = 1;
-	gsl_integration_qk21(&f, a, b, &im, &eim, &r1, &r2);
-	*val = re + I * im;
-	*err = hypot(ere, eim);
+	anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
+	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k) * k;
 }
 
 /* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
@@ -195,7 +123,7 @@ static struct seg heap_pop(struct heap *h)
 static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
 {
 	struct seg x = { .a = a, .b = b };
-	qk21_complex(q, a, b, &x.val, &x.err);
+	anvil_gk21_complex(integrand, q, a, b, &x.val, &x.err);
 	*sum += x.val;
 	*err += x.err;
 	heap_push(h, x);
@@ -247,10 +175,9 @@ static int adapt(struct quad *q, struct heap *h, double kband, double kend, doub
 static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 		      double cr, double ktail, double eps, cplx *val, double *abserr)
 {
-	double nu_ = (1 - 2 * q->kp.kap2) / (2 * (1 - q->kp.kap2));
-	double wabs = hypot(omega, creal(q->kp.s));
+	double wabs = hypot(omega, creal(q->s));
 	int hs = q->mode == ANVIL_GREEN_HALFSPACE;
-	double kband = anvil_kband(omega, wabs, nu_, hs ? INFINITY : hh, cr);
+	double kband = anvil_kband(omega, wabs, q->nu, hs ? INFINITY : hh, cr);
 	double L = -log(ktail);
 	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
 			 : fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
@@ -259,14 +186,6 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	 * poles from there (the results do not move when these are halved). */
 	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = 4.0;
 	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
-}
-
-static size_t pow2_at_least(size_t n)
-{
-	size_t p = 1;
-	while (p < n)
-		p <<= 1;
-	return p;
 }
 
 /* A layer moves like Zener's plate at late times: its impulse response tends
@@ -279,11 +198,10 @@ struct plate {
 	double alpha, tp;
 };
 
-static struct plate plate_term(enum anvil_green_mode mode, double hh, double kap2)
+static struct plate plate_term(enum anvil_green_mode mode, double hh, double nu)
 {
 	struct plate pl = { 0.0, 1.0 };
 	if (mode == ANVIL_GREEN_LAYER_CORRECTION) {
-		double nu = (1 - 2 * kap2) / (2 * (1 - kap2));
 		pl.alpha = sqrt(1.5 * (1 - nu)) / (4.0 * hh * hh);
 		pl.tp = fmax(hh, 0.5);
 	}
@@ -301,34 +219,35 @@ static double plate_t(const struct plate *pl, double t)
 	return pl->alpha * (0.5 * t * t - tp * t - tp * tp * expm1(-t / tp));
 }
 
-/* Fill spec[0..M] with the transform of the ramp response at
- * s_n = c0 + i n pi/T'.  Each k-integral gets the share eps of the error
- * budget that keeps the time-domain ramp within tol of its size; qerr
- * returns the time-domain bound that the quadrature's estimates give. */
-static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0, double Tp,
-			   size_t M, const struct anvil_green_settings *gs, double tau_end,
+/* Fill spec[0..M] with the transform of the ramp response on the line dl.
+ * Each k-integral gets the share eps of the error budget that keeps the
+ * time-domain ramp within tol of its size; qerr returns the time-domain
+ * bound that the quadrature's estimates give. */
+static int sample_spectrum(struct quad *q, struct heap *h, const struct anvil_durbin *dl,
+			   const struct anvil_green_settings *gs, double tau_end,
 			   const struct plate *pl, cplx *spec, double *qerr,
 			   anvil_progress_fn progress, void *ctx)
 {
 	double xr, cr;
-	if (anvil_rayleigh_x(q->kp.kap2, &xr, NULL))
+	size_t M = dl->M;
+	if (anvil_rayleigh_x(q->kap2, &xr, NULL))
 		return ANVIL_ENUM;
 	cr = sqrt(xr); /* c_R/c2 */
-	double scale = 3.0 / (16.0 * (1.0 - q->kp.kap2)) * tau_end; /* half-space ramp */
-	double amp = exp(c0 * tau_end) / Tp;  /* series -> time at tau_end */
+	double scale = 3.0 / (16.0 * (1.0 - q->kap2)) * tau_end; /* half-space ramp */
+	double amp = exp(dl->c0 * tau_end) / dl->Tp;  /* series -> time at tau_end */
 	double epsF = gs->tol * scale / (amp * (double)(M + 1));
 	double sum_err = 0;
 	int st = ANVIL_OK;
 	for (size_t n = 0; n <= M; n++) {
-		double omega = (double)n * M_PI / Tp, e;
+		double e;
 		cplx In;
-		q->kp.s = c0 + I * omega;
-		q->kp.b = q->kp.s * q->kp.s;
-		double s2 = cabs(q->kp.b);
-		int qs = k_integral(q, h, omega, hh, cr, gs->ktail, epsF * s2, &In, &e);
+		q->s = anvil_durbin_s(dl, n);
+		cplx b = q->s * q->s;
+		double s2 = cabs(b);
+		int qs = k_integral(q, h, cimag(q->s), q->hh, cr, gs->ktail, epsF * s2, &In, &e);
 		if (qs && !st)
 			st = qs; /* keep going: the result says how far off it is */
-		spec[n] = In / q->kp.b - plate_s(pl, q->kp.s);
+		spec[n] = In / b - plate_s(pl, q->s);
 		sum_err += e / s2;
 		if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
 			return ANVIL_ENUM;
@@ -337,28 +256,6 @@ static int sample_spectrum(struct quad *q, struct heap *h, double hh, double c0,
 	}
 	*qerr = amp * sum_err;
 	return st;
-}
-
-/* Durbin's Fourier series f(t) = (e^{c0 t}/T') [F_0/2 + Re sum F_n e^{i n pi t/T'}]
- * evaluated on t_j = j 2T'/N by one complex FFT (GSL). */
-static int invert(const cplx *spec, size_t M, size_t N, double c0, double Tp,
-		  double *out, size_t nout)
-{
-	double *z = calloc(2 * N, sizeof *z);
-	if (!z)
-		return ANVIL_ENOMEM;
-	for (size_t n = 0; n <= M && n < N; n++) {
-		double f = n == 0 ? 0.5 : 1.0;
-		z[2 * n] = f * creal(spec[n]);
-		z[2 * n + 1] = f * cimag(spec[n]);
-	}
-	int st = gsl_fft_complex_radix2_backward(z, 1, N);
-	for (size_t j = 0; !st && j < nout; j++) {
-		double t = (double)j * 2.0 * Tp / (double)N;
-		out[j] = exp(c0 * t) / Tp * z[2 * j];
-	}
-	free(z);
-	return st ? ANVIL_ENUM : ANVIL_OK;
 }
 
 void anvil_green_free(struct anvil_green *g)
@@ -373,34 +270,34 @@ void anvil_green_free(struct anvil_green *g)
 static int green_compute(struct anvil_green *g, const struct anvil_green_settings *gs,
 			 anvil_progress_fn progress, void *ctx)
 {
-	double Tp = 2.0 * g->tau_end, c0 = gs->c0T / Tp;
-	size_t M = (size_t)ceil(gs->omega_max * Tp / M_PI);
-	size_t N = pow2_at_least(4 * (M + 1));
-	if (N < 8192)
-		N = 8192;
+	/* the line: output kept to [0, T'/2] of the period 2T' */
+	double Tp = 2.0 * g->tau_end;
+	struct anvil_durbin dl;
+	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0))
+		return ANVIL_EINVAL;
+	size_t M = dl.M, N = anvil_durbin_fft_size(&dl, GREEN_N_MIN);
 	g->dtau = 2.0 * Tp / (double)N;
-	g->n = (size_t)floor(g->tau_end / g->dtau) + 2;
+	g->n = (size_t)floor(g->tau_end / g->dtau) + 2; /* about N/4: bounded with M */
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
 	cplx *spec = malloc((M + 1) * sizeof *spec);
 	struct heap *heap = malloc(sizeof *heap);
-	struct quad q = { .mode = g->mode, .kp = { .kap2 = g->kap2, .H = 0.5 * g->hh } };
-	struct plate pl = plate_term(g->mode, g->hh, g->kap2);
+	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh };
+	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	int st = (!g->tau || !spec || !heap) ? ANVIL_ENOMEM : ANVIL_OK;
 	double qerr = 0;
 	if (!st)
-		st = sample_spectrum(&q, heap, g->hh, c0, Tp, M, gs, g->tau_end, &pl, spec, &qerr,
-				     progress, ctx);
+		st = sample_spectrum(&q, heap, &dl, gs, g->tau_end, &pl, spec, &qerr, progress, ctx);
 	/* A k-integral that missed its share of the budget is not fatal: its
 	 * error estimate is in qerr, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
 		st = ANVIL_OK;
 	if (!st) {
 		g->ramp = g->tau + g->n;
-		st = invert(spec, M, N, c0, Tp, g->ramp, g->n);
+		st = anvil_durbin_fft(&dl, spec, N, g->ramp, g->n);
 	}
 	if (!st) {
 		double tail = cabs(spec[M]) * (double)M * 0.5;
-		g->abserr = qerr + exp(c0 * g->tau_end) / Tp * tail;
+		g->abserr = qerr + exp(dl.c0 * g->tau_end) / Tp * tail;
 		for (size_t j = 0; j < g->n; j++) {
 			g->tau[j] = (double)j * g->dtau;
 			/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
@@ -480,10 +377,10 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 void anvil_green_kernel(double k, double complex s, double nu, double hh,
 			double complex *layer, double complex *halfspace)
 {
-	struct kern p = { .kap2 = anvil_kappa2(nu), .H = 0.5 * hh, .s = s, .b = s * s };
-	cplx al1, al2, R, X;
-	*halfspace = w_halfspace(&p, k, &al1, &al2, &R, &X);
-	*layer = *halfspace + kern_layer_corr(&p, k);
+	struct anvil_layer_bc bc;
+	anvil_layer_bc_solve(k, s, anvil_kappa2(nu), hh, &bc);
+	*halfspace = anvil_layer_bc_w_halfspace(&bc);
+	*layer = *halfspace + anvil_layer_bc_w_correction(&bc);
 }
 
 double anvil_green_tau_end(const struct anvil_green *g) { return g->tau_end; }
@@ -499,28 +396,66 @@ void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples 
 					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp };
 }
 
-/* The same checks a freshly computed response passes, so that a damaged
- * file that slipped past its checksum cannot reach the solver. */
-static int samples_ok(const struct anvil_green_samples *s)
+/* The sizes and the window, checked before any cast or allocation: finite
+ * and positive, the grid of green_compute (tau_end/dtau = N/4 for an FFT
+ * length N, a power of two, within rounding), n = floor(tau_end/dtau) + 2,
+ * at most GREEN_SAMPLES_MAX. */
+static int sizes_ok(const struct anvil_green_samples *s)
 {
 	if (!(s->nu > -1 && s->nu < 0.5) || !(s->tau_end > 0 && isfinite(s->tau_end)) ||
-	    !(s->dtau > 0 && isfinite(s->dtau)) || !(s->abserr >= 0 && isfinite(s->abserr)) ||
+	    !(s->dtau > 0 && isfinite(s->dtau)) || !(s->abserr > 0 && isfinite(s->abserr)) ||
 	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
-	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) ||
-	    !s->ramp || s->n < 4 || s->n != (size_t)floor(s->tau_end / s->dtau) + 2 ||
-	    s->ramp[0] != 0.0)
+	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) || !s->ramp)
+		return 0;
+	double ratio = s->tau_end / s->dtau, N = exp2(round(log2(4.0 * ratio)));
+	if (!(ratio >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
+	    !(fabs(4.0 * ratio - N) <= 1e-9 * N))
+		return 0;
+	return s->n == (size_t)floor(ratio) + 2;
+}
+
+/* What an importer can afford to check of the samples themselves: ramp[0] = 0
+ * (nothing has moved at t = 0), all finite, and causality: the layer
+ * correction is zero until the bottom reflection returns at tau = 2 hh
+ * kappa (2h/c1).  The inversion's band limit smears the arrival: over
+ * draft .. reference, h = 0.2 .. 40 r0, nu = 0 .. 0.45, the samples before it
+ * stayed below 0.12 of the response's own error estimate abserr, and
+ * those after 2 tau_refl reached 58 abserr or more.  So samples above
+ * abserr before tau_refl are refused, and so is a response whose window
+ * reaches 2 tau_refl and that stays within CAUSAL_AFTER abserr after it
+ * (e.g. all zeros).  A half-space response must have moved by its end. */
+#define CAUSAL_AFTER 2.0
+
+static int samples_plausible(const struct anvil_green_samples *s)
+{
+	if (s->ramp[0] != 0.0)
 		return 0;
 	for (size_t j = 0; j < s->n; j++)
 		if (!isfinite(s->ramp[j]))
 			return 0;
-	return 1;
+	if (s->mode == ANVIL_GREEN_HALFSPACE)
+		return s->ramp[s->n - 1] > 0;
+	double trefl = 2.0 * s->hh * sqrt(anvil_kappa2(s->nu)), after = 0;
+	for (size_t j = 0; j < s->n; j++) {
+		double tau = (double)j * s->dtau, v = fabs(s->ramp[j]);
+		if (tau < trefl && v > s->abserr)
+			return 0;
+		if (tau >= 2.0 * trefl && tau <= s->tau_end)
+			after = fmax(after, v);
+	}
+	return s->tau_end < 2.0 * trefl || after > CAUSAL_AFTER * s->abserr;
 }
 
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err)
 {
-	if (!samples_ok(s)) {
-		anvil_err_set(err, ANVIL_EINVAL, "layer response: inconsistent samples");
+	if (!sizes_ok(s)) {
+		anvil_err_set(err, ANVIL_EINVAL, "layer response: inconsistent sizes or window");
+		return NULL;
+	}
+	if (!samples_plausible(s)) {
+		anvil_err_set(err, ANVIL_EINVAL, "layer response: implausible samples "
+			      "(ramp[0], finiteness or causality)");
 		return NULL;
 	}
 	struct anvil_green *g = calloc(1, sizeof *g);

@@ -91,8 +91,10 @@ struct anvil_green_samples {
 void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s);
 /* A response from samples (copied; the spline is rebuilt from them, so it
  * evaluates to the bit as the exported one did).  Its evals count is 0.
- * NULL with ANVIL_EINVAL for inconsistent samples (sizes, non-finite
- * values, ramp[0] != 0), ANVIL_ENOMEM, ANVIL_ENUM. */
+ * NULL with ANVIL_EINVAL for inconsistent sizes or window (checked before
+ * any cast or allocation: at most 2^21 + 2 samples) or implausible samples
+ * (ramp[0] != 0, non-finite, abserr <= 0, a layer correction that breaks
+ * causality: see green.c), ANVIL_ENOMEM, ANVIL_ENUM. */
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err);
 

@@ -14,6 +14,16 @@ double anvil_kernel_zhat(double k)
 	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
 }
 
+cplx anvil_kernel_cmplx(double re, double im)
+{
+	/* a complex has the representation of double[2] (C11 6.2.5p13) */
+	cplx z;
+	double *p = (double *)&z;
+	p[0] = re;
+	p[1] = im;
+	return z;
+}
+
 cplx anvil_kernel_expm1(cplx z)
 {
 	double x = creal(z), y = cimag(z), s = sin(0.5 * y);

@@ -11,6 +11,11 @@
  * series for small k, where the closed form cancels catastrophically. */
 double anvil_kernel_zhat(double k);
 
+/* re + i im with the sign of a zero im kept (C11's CMPLX, which not every
+ * C library offers, e.g. glibc 2.36 to clang 14): the static field's branch
+ * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it. */
+double complex anvil_kernel_cmplx(double re, double im);
+
 /* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
 double complex anvil_kernel_expm1(double complex z);
 

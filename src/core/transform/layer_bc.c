@@ -1,0 +1,77 @@
+/* layer_bc.c: the free layer's boundary conditions at one (k, s).  See
+ * layer_bc.h. */
+#include <complex.h>
+#include <math.h>
+
+#include "kernel.h"
+#include "layer_bc.h"
+
+typedef double complex cplx;
+
+void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil_layer_bc *bc)
+{
+	double a = k * k;
+	cplx b = s * s;
+	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b), gam = 2.0 * a + b;
+	cplx X = 4.0 * a * al1 * al2;
+	bc->k = k;
+	bc->kap2 = kap2;
+	bc->hh = hh;
+	bc->b = b;
+	bc->al1 = al1;
+	bc->al2 = al2;
+	bc->gam = gam;
+	bc->X = X;
+	bc->R = anvil_kernel_rayleigh(a, b, kap2, gam, X);
+	if (!isfinite(hh))
+		return;
+	cplx m1 = -anvil_kernel_expm1(-hh * al1), m2 = -anvil_kernel_expm1(-hh * al2); /* 1 - E_j */
+	/* E1 itself, not 1 - m1: that would leave rounding noise (1e-16) where
+	 * E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
+	bc->E1 = cexp(-hh * al1);
+	bc->E2 = cexp(-hh * al2);
+	bc->p1 = 2.0 - m1;
+	bc->p2 = 2.0 - m2;
+	bc->t1 = m1 / bc->p1;
+	bc->t2 = m2 / bc->p2;
+	bc->u1 = 2.0 * bc->E1 / bc->p1;
+	bc->d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, bc->E1, bc->E2, bc->p1, bc->p2);
+	bc->Xd = X * bc->d;
+	bc->den1 = bc->t2 * bc->R + bc->Xd;
+	bc->den2 = bc->t1 * bc->R - bc->Xd;
+}
+
+cplx anvil_layer_bc_w_halfspace(const struct anvil_layer_bc *bc)
+{
+	return bc->al1 * bc->b / bc->R;
+}
+
+cplx anvil_layer_bc_w_correction(const struct anvil_layer_bc *bc)
+{
+	if (!isfinite(bc->hh))
+		return 0.0;
+	cplx R = bc->R, Xd = bc->Xd;
+	return 0.5 * anvil_layer_bc_w_halfspace(bc) *
+	       ((R * bc->u1 + Xd) / bc->den2 - (bc->t2 * R * bc->u1 + Xd) / bc->den1);
+}
+
+void anvil_layer_bc_potentials(const struct anvil_layer_bc *bc, cplx *A1, cplx *B1, cplx *A2,
+			       cplx *B2)
+{
+	double k = bc->k;
+	cplx gam = bc->gam, al1 = bc->al1, R = bc->R;
+	if (!isfinite(bc->hh)) {
+		*A1 = -gam / R;
+		*A2 = -2.0 * k * al1 / R;
+		*B1 = *B2 = 0.0;
+		return;
+	}
+	cplx t1 = bc->t1, t2 = bc->t2, u1 = bc->u1, d = bc->d, Xd = bc->Xd;
+	cplx p1 = bc->p1, p2 = bc->p2, den1 = bc->den1, den2 = bc->den2, dd = den1 * den2;
+	cplx S1 = -gam * t2 / (p1 * den1), D1 = -gam / (p1 * den2);
+	cplx S2 = -2.0 * k * al1 / (p2 * den2), D2 = -2.0 * k * al1 * t1 / (p2 * den1);
+	*A1 = 0.5 * (S1 + D1);
+	*A2 = 0.5 * (S2 + D2);
+	*B1 = gam * (t2 * u1 * R + Xd * (1.0 + t2)) / (2.0 * p1 * dd);
+	*B2 = -k * al1 * ((d + t1 * u1) * R + Xd * (1.0 + t1)) / (p2 * dd);
+}
