@@ -4,7 +4,7 @@
  * Pressure p(r) = p0 sqrt(1 - r^2/a^2) on r < a of the surface z = 0 of a
  * half-space z > 0 with Poisson ratio nu (total load P = (2/3) pi a^2 p0).
  * The field is Huber's (1904) closed form as given by Johnson (Contact
- * Mechanics, 1985, eq. 3.44 and problem 3.?; Hamilton 1983 for the
+ * Mechanics, 1985, sec. 3.4, eq. 3.44 after Huber; Hamilton 1983 for the
  * equivalent form), in terms of u, the positive root of
  *   r^2 / (a^2 + u) + z^2 / u = 1,
  *   u = (1/2) [ (r^2 + z^2 - a^2) + sqrt((r^2 + z^2 - a^2)^2 + 4 a^2 z^2) ],
@@ -41,7 +41,7 @@ int anvil_hertz_stress(double a, double p0, double nu, double r, double z,
  * below the surface: its value *vm (Pa) and depth *z (m), by GSL's Brent
  * minimiser to relative tolerance 1e-12 in z.  ANVIL_EINVAL for bad
  * arguments, ANVIL_ENUM if the minimiser fails.  For nu = 0.3:
- * 0.6200 p0 at 0.4808 a (tests/test_hertz_field.c gives the digits). */
+ * 0.620041 p0 at 0.480864 a (tests/test_hertz_field.c). */
 int anvil_hertz_vm_peak(double a, double p0, double nu, double *vm, double *z);
 
 /* The largest tensile stress, the radial stress at the contact edge on the
