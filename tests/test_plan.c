@@ -548,6 +548,12 @@ static void test_status(void)
 		   ss.layer_computed == 0 && ss.cache.misses == 0,
 	   "the solver returns the planned refusal without work");
 	anvil_result_free(&r);
+	struct anvil_scene dense = scene((const char *[]){ "layer.rho", "1e308 kg/m^3", NULL });
+	struct anvil_scene stiff = scene((const char *[]){ "layer.E", "1.7e308 Pa", NULL });
+	st = scene_plan(&dense, &pl, &e);
+	ok(st == ANVIL_EINVAL && strstr(e.msg, "layer.rho"), "rho = 1e308: %s", e.msg);
+	st = scene_plan(&stiff, &pl, &e);
+	ok(st == ANVIL_EINVAL && strstr(e.msg, "layer.E"), "E = 1.7e308: %s", e.msg);
 	ok(ANVIL_WTOL > 0 && strcmp(anvil_strerror(ANVIL_WTOL), "unknown status") != 0 &&
 		   ANVIL_ETOL < 0,
 	   "warnings are positive, failures negative: %s / %s", anvil_strerror(ANVIL_WTOL),

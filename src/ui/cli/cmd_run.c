@@ -199,9 +199,10 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
 		int st = plan_st;
-		if (plan_st) {
-			anvil_result_init(&res[*n], (enum anvil_model)m);
-			err = plan_err;
+		if (plan_st) { /* the scene's fault, not a model's: said once */
+			cli_error("%s", plan_err.msg[0] ? plan_err.msg : anvil_strerror(plan_st));
+			code = EXIT_FAIL;
+			break;
 		} else {
 			st = anvil_solver_run(s, &pl, (enum anvil_model)m, nhist, &res[*n], &err);
 		}
