@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "params.h"
+#include "problem.h"
 #include "scene.h"
 
 static inline void paper_params(struct anvil_params *p, double h_r0, double V0)
@@ -18,7 +19,7 @@ static inline void paper_params(struct anvil_params *p, double h_r0, double V0)
 	sc.velocity = V0;
 	sc.thickness = h_r0;
 	sc.thickness_per_r0 = !isinf(h_r0);
-	if (anvil_params_init(p, &sc, &e))
+	if (anvil_params_from_scene(p, &sc, &e))
 		printf("# paper_params: %s\n", e.msg);
 }
 

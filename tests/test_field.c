@@ -28,6 +28,7 @@
 #include "field_kernel.h"
 #include "kernel.h"
 #include "direct_bc.h"
+#include "scene_run.h"
 #include "tap.h"
 
 typedef double complex cplx;
@@ -186,9 +187,11 @@ static int impact_make(struct impact *m, const char *thick, const char *acc)
 	anvil_scene_set(&m->sc, "layer.thickness", thick, "test", 0, &e);
 	anvil_scene_set(&m->sc, "solver.accuracy", acc, "test", 0, &e);
 	enum anvil_model md = isinf(anvil_scene_h(&m->sc)) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
-	int st = anvil_solver_run(s, &m->sc, md, ANVIL_FIELD_NHIST, &m->r, &e);
+	int st = scene_run(s, &m->sc, md, ANVIL_FIELD_NHIST, &m->r, &e);
 	anvil_solver_free(s);
-	m->f = st ? NULL : anvil_field_from_result(&m->sc, &m->r, &e);
+	struct anvil_params p;
+	anvil_params_from_scene(&p, &m->sc, NULL);
+	m->f = st ? NULL : anvil_field_from_result(&p, m->sc.accuracy, &m->r, &e);
 	if (!m->f)
 		diag("impact: %s", e.msg);
 	m->h = anvil_scene_h(&m->sc);
@@ -294,7 +297,7 @@ static void params_of(const char *thick, struct anvil_params *p)
 	struct anvil_scene sc;
 	anvil_scene_default(&sc);
 	anvil_scene_set(&sc, "layer.thickness", thick, "test", 0, NULL);
-	anvil_params_init(p, &sc, NULL);
+	anvil_params_from_scene(p, &sc, NULL);
 }
 
 /* The field of load P(t, T) sampled on [0, tend]. */
@@ -390,7 +393,10 @@ static void test_yield(struct impact *m)
 	struct anvil_field_peak pk, pk2;
 	struct anvil_solver *s = anvil_solver_alloc();
 	struct anvil_err e = {0};
-	int st = anvil_field_yield(s, &m->sc, &pk, &e);
+	struct anvil_plan pl;
+	int st = scene_plan(&m->sc, &pl, &e);
+	if (!st)
+		st = anvil_solver_yield(s, &pl, &pk, &e);
 	ok(!st && pk.yield == m->sc.layer.mat.yield && pk.exceeded == (pk.vm > pk.yield),
 	   "yield check: peak von Mises %.4g MPa at r = %.3g mm, z = %.3g mm, t = %.4g us against the layer's %.4g MPa",
 	   pk.vm * 1e-6, pk.r * 1e3, pk.z * 1e3, pk.t * 1e6, pk.yield * 1e-6);
@@ -446,7 +452,7 @@ static void test_levels(struct impact *m)
 {
 	/* the same load for both: the field's own levels compared */
 	struct anvil_params p;
-	anvil_params_init(&p, &m->sc, NULL);
+	anvil_params_from_scene(&p, &m->sc, NULL);
 	struct anvil_field *fr = anvil_field_alloc(&p, m->r.hist.P, m->r.hist.n,
 						   m->r.hist.t[1], 0, ANVIL_ACC_REFERENCE, NULL);
 	double r[2] = {0, 0}, z[2] = {0.5 * m->r0, m->h}, t[2] = {0.5 * m->r.tmax, m->r.tmax};
@@ -479,12 +485,12 @@ static void test_errors(struct impact *m)
 	ok(anvil_field_points(m->f, 1, &r, &z, 1, &t, &v, &e) == ANVIL_EINVAL && strstr(e.msg, "time"),
 	   "a time past 4 contacts: ANVIL_EINVAL (%s)", e.msg);
 	struct anvil_params p;
-	anvil_params_init(&p, &m->sc, NULL);
+	anvil_params_from_scene(&p, &m->sc, NULL);
 	ok(!anvil_field_alloc(&p, P, 3, 1e-6, 0, ANVIL_ACC_NORMAL, &e) && e.status == ANVIL_EINVAL,
 	   "a negative load: NULL, ANVIL_EINVAL");
 	struct anvil_result empty;
 	anvil_result_init(&empty, ANVIL_MODEL_LAYER);
-	ok(!anvil_field_from_result(&m->sc, &empty, &e) && e.status == ANVIL_EINVAL,
+	ok(!anvil_field_from_result(&p, m->sc.accuracy, &empty, &e) && e.status == ANVIL_EINVAL,
 	   "a result without history: NULL, ANVIL_EINVAL (%s)", e.msg);
 	struct anvil_field_grid g = {0, 1e-3, 0, 1e-3, 0, 4};
 	t = m->r.tmax;

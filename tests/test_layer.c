@@ -15,6 +15,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "solver.h"
+#include "scene_run.h"
 #include "tap.h"
 
 /* The paper's unstarred rows (tables.tsv, as printed). */
@@ -61,7 +62,7 @@ static enum anvil_model model_of(const struct row *r)
 static int run(const struct anvil_scene *sc, enum anvil_model m, struct anvil_result *r,
 	       struct anvil_err *e)
 {
-	return anvil_solver_run(solver, sc, m, 0, r, e);
+	return scene_run(solver, sc, m, 0, r, e);
 }
 
 static void test_tables(void)

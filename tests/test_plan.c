@@ -27,8 +27,10 @@
 
 #include "cache.h"
 #include "green.h"
+#include "halfspace.h"
 #include "plan.h"
 #include "solver.h"
+#include "scene_run.h"
 #include "tap.h"
 
 static double now(void)
@@ -167,7 +169,7 @@ static void test_estimates(void)
 		struct anvil_scene sc = scene((const char *[]){ "impactor.material", "steel",
 			"impactor.radius", "5 mm", "impactor.mass", "4.0998 g", "layer.thickness", "inf",
 			"impact.velocity", i ? "10 m/s" : "0.1 m/s", NULL });
-		anvil_params_init(&p, &sc, NULL);
+		anvil_params_from_scene(&p, &sc, NULL);
 		C[i] = anvil_plan_radiated(&p) / pow(p.V0 / sqrt(p.E / p.rho), 0.6);
 	}
 	ok(fabs(C[0] / C[1] - 1) < 1e-9 && fabs(C[0] / 1.04 - 1) < 0.12,
@@ -184,8 +186,8 @@ static void test_estimates(void)
 			"impact.velocity", speeds[i], "effects.waves", "layer", "solver.accuracy",
 			"fine", NULL });
 		struct anvil_result r;
-		anvil_params_init(&p, &sc, NULL);
-		anvil_solver_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL);
+		anvil_params_from_scene(&p, &sc, NULL);
+		scene_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL);
 		ratio[i] = r.Ea / (0.5 * p.m1 * p.V0 * p.V0) / anvil_plan_radiated(&p);
 		anvil_result_free(&r);
 	}
@@ -196,14 +198,14 @@ static void test_estimates(void)
 	/* the quasi-static anvil: Hertz without compliance, the solver with it */
 	double ts, pm;
 	struct anvil_scene sc = scene((const char *[]){ "layer.E", "1e30 GPa", NULL });
-	anvil_params_init(&p, &sc, NULL);
+	anvil_params_from_scene(&p, &sc, NULL);
 	anvil_plan_static(&p, &ts, &pm);
 	is_rel(ts / p.T, 3.21807, 1e-5, "static anvil of infinite stiffness: t_s = 3.21807 T (Hertz)");
 	sc = scene((const char *[]){ "layer.thickness", "inf", "impact.velocity", "0.01 m/s", NULL });
-	anvil_params_init(&p, &sc, NULL);
+	anvil_params_from_scene(&p, &sc, NULL);
 	anvil_plan_static(&p, &ts, &pm);
 	struct anvil_result r;
-	int st = anvil_solver_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL);
+	int st = scene_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL);
 	ok(st == ANVIL_OK && strstr(r.note, "quasi-static") && rel(r.ts, ts, 0) < 1e-4 &&
 		   rel(r.Pmax, pm, 0) < 1e-4,
 	   "its energy integral matches the solver's quasi-static run (t_s %.2e, P_max %.2e)",
@@ -267,9 +269,9 @@ static void regime_run(const struct regime *g, const struct anvil_scene *sc,
 	struct anvil_err ea = { 0 }, ef = { 0 };
 	full.effects.waves = ANVIL_WAVES_LAYER;
 	double t0 = now();
-	int st = anvil_solver_run(sa, sc, g->row, 0, &ra, &ea);
+	int st = scene_run(sa, sc, g->row, 0, &ra, &ea);
 	double t1 = now();
-	int st2 = anvil_solver_run(sf, &full, g->row, 0, &rf, &ef);
+	int st2 = scene_run(sf, &full, g->row, 0, &rf, &ef);
 	double t2 = now();
 	double d = deviation(&ra, &rf), tgt = anvil_accuracy_target(sc->accuracy);
 	anvil_solver_stats(sa, &qa);
@@ -309,7 +311,7 @@ static void test_regimes(void)
 		struct anvil_scene sc = scene(g->kv);
 		struct anvil_plan pl;
 		struct anvil_err e;
-		int st = anvil_plan_make(&sc, NULL, &pl, &e);
+		int st = scene_plan(&sc, &pl, &e);
 		const struct anvil_plan_row *row = &pl.row[g->row];
 		if (!ok(st == ANVIL_OK && row->method == g->method && row->why == g->why,
 			"%s: %s row by %s (%s)", g->name, anvil_model_name(g->row),
@@ -329,22 +331,22 @@ static void test_effects(void)
 	struct anvil_plan pl;
 	struct anvil_scene sc = scene((const char *[]){ "effects.plate", "off", "effects.quasistatic",
 		"off", "solver.models", "hertz, zener, layer", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(!pl.row[0].run && pl.row[0].off == ANVIL_WHY_EFFECT_OFF && !pl.row[1].run &&
 		   pl.row[2].run && !pl.row[3].run && pl.row[3].off == ANVIL_WHY_NOT_ASKED,
 	   "rows off by [effects] and by solver.models, each with its reason");
 	ok(fabs(pl.cost - pl.row[2].cost) < 1e-12, "the total prices only the rows run");
 	sc = scene((const char *[]){ "layer.thickness", "40 r0", "effects.waves", "layer", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(pl.row[2].method == ANVIL_METHOD_LAYER && pl.row[2].why == ANVIL_WHY_FORCED,
 	   "waves = layer forces the layer model on a thick block");
 	sc = scene((const char *[]){ "layer.thickness", "40 r0", "solver.scheme", "paper",
 		"solver.dt", "0.5 us", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(pl.row[2].method == ANVIL_METHOD_LAYER && pl.row[2].why == ANVIL_WHY_FORCED,
 	   "the paper's scheme is never replaced (it is there to reproduce the paper)");
 	sc = scene((const char *[]){ "effects.waves", "none", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(!pl.row[2].run && !pl.row[3].run && pl.row[2].off == ANVIL_WHY_EFFECT_OFF,
 	   "waves = none: no wave rows");
 
@@ -352,7 +354,7 @@ static void test_effects(void)
 	struct anvil_solver *s = memory_solver();
 	struct anvil_result r;
 	sc = scene((const char *[]){ "layer.thickness", "inf", "effects.waves", "none", NULL });
-	ok(anvil_solver_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL) == ANVIL_OK &&
+	ok(scene_run(s, &sc, ANVIL_MODEL_HALFSPACE, 0, &r, NULL) == ANVIL_OK &&
 		   strstr(r.note, "exact"), "a row switched off runs as its own model when asked");
 	anvil_result_free(&r);
 	anvil_solver_free(s);
@@ -370,7 +372,7 @@ static void test_warnings(void)
 {
 	struct anvil_plan pl;
 	struct anvil_scene sc = scene(NULL);
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_YIELD) && strcmp(pl.softer, "copper") == 0 &&
 		   pl.fig[ANVIL_FIG_P_MEAN] > 100 * pl.fig[ANVIL_FIG_YIELD],
 	   "the paper's copper rod yields: p_m = %.0f MPa against 1.1 Y = %.1f MPa",
@@ -381,31 +383,31 @@ static void test_warnings(void)
 		   !has_warning(&pl, ANVIL_WARN_REFUSE),
 	   "  and nothing else at h = r0, 10 m/s");
 	sc = scene((const char *[]){ "impactor.yield", "100 GPa", "layer.yield", "100 GPa", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(!has_warning(&pl, ANVIL_WARN_YIELD) && !has_warning(&pl, ANVIL_WARN_YIELD_UNKNOWN),
 	   "no yield warning for strong bodies");
 	sc = scene((const char *[]){ "impactor.material", "glass", "layer.material", "glass", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_YIELD_UNKNOWN), "no yield stress known: said so");
 	sc = scene((const char *[]){ "impact.velocity", "3000 m/s", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_SUPERSEISMIC) && pl.fig[ANVIL_FIG_ALPHA_A] > 0.1,
 	   "3 km/s: alpha_A = %.3f, super-seismic", pl.fig[ANVIL_FIG_ALPHA_A]);
 	sc = scene((const char *[]){ "layer.thickness", "2 r0", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_PLATE_RANGE), "Zener at h = 2 r0: out of its range");
 	sc = scene((const char *[]){ "layer.thickness", "2 r0", "effects.plate", "off", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(!has_warning(&pl, ANVIL_WARN_PLATE_RANGE), "  not when the plate is off");
 	sc = scene((const char *[]){ "layer.thickness", "0.05 r0", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_REFUSE), "h = 0.05 r0: the layer solver will refuse");
 	sc = scene((const char *[]){ "effects.waves", "halfspace", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_NOT_EXACT) && !pl.row[2].exact,
 	   "waves = halfspace on a thin layer: not exact, said so");
 	sc = scene((const char *[]){ "effects.field", "points", NULL });
-	anvil_plan_make(&sc, NULL, &pl, NULL);
+	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_FIELD), "a field asked for: pointed to anvil field");
 }
 
@@ -434,21 +436,24 @@ static void test_memory(void)
 	struct anvil_solver_stats st;
 	struct anvil_result a, b, c;
 	struct anvil_scene sc = scene(NULL);
-	anvil_solver_run(s, &sc, ANVIL_MODEL_LAYER, 0, &a, NULL);
+	scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, &a, NULL);
 	anvil_solver_stats(s, &st);
 	unsigned long made = st.layer_computed;
 	double t0 = now();
-	anvil_solver_run(s, &sc, ANVIL_MODEL_LAYER, 0, &b, NULL);
+	scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, &b, NULL);
 	double t1 = now();
 	anvil_solver_stats(s, &st);
 	ok(made == 2 && st.layer_computed == 2 && st.cache.mem_hits >= 2 && same_results(&a, &b),
 	   "the same scene again: from memory, the same bits (%.3g s against %.3g s)", t1 - t0,
 	   a.seconds);
-	sc = scene((const char *[]){ "impact.velocity", "10.5 m/s", NULL });
-	anvil_solver_run(s, &sc, ANVIL_MODEL_LAYER, 0, &c, NULL);
+	/* 9.5 m/s lands on the same window and bandwidth grid points (10.5 m/s
+	 * does not: lookups are exact, so that no result depends on the cache) */
+	sc = scene((const char *[]){ "impact.velocity", "9.5 m/s", NULL });
+	scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, &c, NULL);
 	anvil_solver_stats(s, &st);
-	ok(st.layer_computed == 2 && c.ts < a.ts,
-	   "10.5 m/s: the response is reused (%.3g s); t_s %.3f us", c.seconds, c.ts * 1e6);
+	ok(st.layer_computed == 2 && c.ts > a.ts,
+	   "9.5 m/s: the response is reused (%.3g s); t_s %.3f us", c.seconds, c.ts * 1e6);
+	ok(anvil_cache_held(anvil_solver_cache(s)) == 0, "no response held between runs");
 	anvil_result_free(&a);
 	anvil_result_free(&b);
 	anvil_result_free(&c);
@@ -456,6 +461,104 @@ static void test_memory(void)
 	ok(anvil_cache_grid_up(anvil_cache_grid(7)) == 7 &&
 		   anvil_cache_grid_up(nextafter(anvil_cache_grid(7), 1e9)) == 8 &&
 		   anvil_cache_grid(-4) == 0.5, "the grid: exact at its points");
+}
+
+/* The same scene gives the same bits cold and warm, whatever the cache
+ * held: here a run at 10.5 m/s that cached a longer window first. */
+static void test_bits(void)
+{
+	struct anvil_solver *cold = memory_solver(), *warm = memory_solver();
+	struct anvil_result a, b, x;
+	struct anvil_scene sc = scene(NULL);
+	struct anvil_scene fast = scene((const char *[]){ "impact.velocity", "10.5 m/s", NULL });
+	scene_run(warm, &sc, ANVIL_MODEL_LAYER, 0, &x, NULL); /* caches the 10 m/s window */
+	anvil_result_free(&x);
+	scene_run(cold, &fast, ANVIL_MODEL_LAYER, 0, &a, NULL);
+	scene_run(warm, &fast, ANVIL_MODEL_LAYER, 0, &b, NULL);
+	ok(same_results(&a, &b) && memcmp(&a.Ea, &b.Ea, sizeof a.Ea) == 0 &&
+		   memcmp(&a.tmax_err, &b.tmax_err, sizeof a.tmax_err) == 0,
+	   "cold and warm (after a longer window was cached): the same bits (P_max %.17g)", a.Pmax);
+	anvil_result_free(&a);
+	anvil_result_free(&b);
+	anvil_solver_free(cold);
+	anvil_solver_free(warm);
+}
+
+/* A held response survives more than ANVIL_CACHE_SLOTS insertions; once
+ * every slot is held, an insertion fails instead of evicting one. */
+static void test_hold(void)
+{
+	struct anvil_cache *c = anvil_cache_alloc();
+	struct anvil_err e;
+	const struct anvil_halfspace *hs = anvil_cache_halfspace(c, 0.3, 1e-6, &e);
+	struct anvil_green_settings gs;
+	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+	gs.omega_max = 2.0;
+	int added = 0, evicted_ok = 1;
+	for (int i = 0; i < ANVIL_CACHE_SLOTS + 6; i++) {
+		struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, i };
+		struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3,
+							  4.0, &gs, NULL, NULL, &e);
+		const struct anvil_green *k = anvil_cache_add(c, &key, g);
+		added += k != NULL;
+		anvil_cache_release(c, k);
+		double v;
+		evicted_ok &= anvil_halfspace_ramp(hs, 1.0, &v, NULL) == ANVIL_OK && v > 0;
+	}
+	struct anvil_cache_key first = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 0 };
+	ok(added == ANVIL_CACHE_SLOTS + 6 && evicted_ok && anvil_cache_held(c) == 1 &&
+		   !anvil_cache_probe(c, &first) &&
+		   anvil_cache_halfspace(c, 0.3, 1e-6, &e) == hs,
+	   "a held half-space outlives %d insertions; unheld ones are evicted",
+	   ANVIL_CACHE_SLOTS + 6);
+	anvil_cache_release(c, hs);
+	anvil_cache_release(c, hs);
+	/* hold every slot: the next insertion is refused, nothing evicted */
+	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
+		struct anvil_cache_key key = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, i };
+		anvil_cache_add(c, &key, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0, 0.3,
+							   4.0, &gs, NULL, NULL, &e));
+	}
+	struct anvil_cache_key more = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, 99 };
+	ok(anvil_cache_held(c) == ANVIL_CACHE_SLOTS &&
+		   !anvil_cache_add(c, &more, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0,
+								0.3, 4.0, &gs, NULL, NULL, &e)),
+	   "every slot held: an insertion is refused (NULL), none evicted");
+	anvil_cache_free(c);
+}
+
+/* Statuses: a refusal decided by the planner comes back before any work,
+ * a failure (< 0); a missed target is a warning (> 0) with values. */
+static void test_status(void)
+{
+	struct anvil_solver *s = memory_solver();
+	struct anvil_scene sc = scene((const char *[]){ "layer.thickness", "0.05 r0", NULL });
+	struct anvil_plan pl;
+	struct anvil_result r;
+	struct anvil_err e;
+	int st = scene_plan(&sc, &pl, &e);
+	const struct anvil_plan_row *row = &pl.row[ANVIL_MODEL_LAYER];
+	ok(st == ANVIL_OK && row->status == ANVIL_ETOL && row->refusal[0],
+	   "a very thin layer: the plan refuses the layer row (%s)", row->refusal);
+	anvil_solver_stats(s, &(struct anvil_solver_stats){ 0 });
+	st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &r, &e);
+	struct anvil_solver_stats ss;
+	anvil_solver_stats(s, &ss);
+	ok(st == ANVIL_ETOL && r.status == st && strcmp(r.why, row->refusal) == 0 &&
+		   ss.layer_computed == 0 && ss.cache.misses == 0,
+	   "the solver returns the planned refusal without work");
+	anvil_result_free(&r);
+	struct anvil_scene dense = scene((const char *[]){ "layer.rho", "1e308 kg/m^3", NULL });
+	struct anvil_scene stiff = scene((const char *[]){ "layer.E", "1.7e308 Pa", NULL });
+	st = scene_plan(&dense, &pl, &e);
+	ok(st == ANVIL_EINVAL && strstr(e.msg, "layer.rho"), "rho = 1e308: %s", e.msg);
+	st = scene_plan(&stiff, &pl, &e);
+	ok(st == ANVIL_EINVAL && strstr(e.msg, "layer.E"), "E = 1.7e308: %s", e.msg);
+	ok(ANVIL_WTOL > 0 && strcmp(anvil_strerror(ANVIL_WTOL), "unknown status") != 0 &&
+		   ANVIL_ETOL < 0,
+	   "warnings are positive, failures negative: %s / %s", anvil_strerror(ANVIL_WTOL),
+	   anvil_strerror(ANVIL_ETOL));
+	anvil_solver_free(s);
 }
 
 /* The files of the cache directory, counted; temporaries too. */
@@ -504,7 +607,7 @@ static int fresh_run(const char *dir, struct anvil_result *r, struct anvil_solve
 	*warnings = 0;
 	anvil_solver_set_cache_dir(s, dir, NULL);
 	anvil_solver_set_warn(s, warn_count, warnings);
-	int rc = anvil_solver_run(s, &sc, ANVIL_MODEL_LAYER, 0, r, NULL);
+	int rc = scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, r, NULL);
 	anvil_solver_stats(s, st);
 	anvil_solver_free(s);
 	return rc;
@@ -533,7 +636,7 @@ static void test_disk(void)
 	struct anvil_green_settings gs;
 	struct anvil_green_samples x, y;
 	struct anvil_err e;
-	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4 };
+	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 3 };
 	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
 	gs.omega_max = anvil_cache_grid(key.omega_idx);
 	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3, 20.0, &gs,
@@ -687,6 +790,9 @@ int main(void)
 	test_effects();
 	test_warnings();
 	test_memory();
+	test_bits();
+	test_hold();
+	test_status();
 	test_disk();
 	test_version();
 	test_environment();

@@ -7,6 +7,7 @@
 
 #include "material.h"
 #include "tap.h"
+#include "scene_run.h"
 #include "tui_model.h"
 #include "tui_plot.h"
 
@@ -379,10 +380,49 @@ static void test_generations(void)
 	memset(m, 0, sizeof *m);
 }
 
+/* Deliver what the solver computes for the layer row of the request. */
+static void deliver_layer(struct tui_model *m, struct anvil_solver *s)
+{
+	struct anvil_result r;
+	struct anvil_err e = {0};
+	int st = scene_run(s, tui_model_scene(m), ANVIL_MODEL_LAYER, TUI_NHIST, &r, &e);
+	tui_model_deliver(m, m->gen, ANVIL_MODEL_LAYER, st, e.msg, &r);
+}
+
+/* Issue 15: [effects] is part of a result's key (the engine's), so a
+ * change of effects.waves through the model gives new rows, not the old
+ * layer rows from the TUI's cache. */
+static void test_effects_key(void)
+{
+	struct tui_model *m = fresh();
+	struct anvil_solver *s = anvil_solver_alloc();
+	anvil_solver_set_cache_dir(s, NULL, NULL);
+	m->sc.models = 1u << ANVIL_MODEL_LAYER;
+	ok(tui_model_request(m) == (1u << ANVIL_MODEL_LAYER), "the layer row is asked for");
+	deliver_layer(m, s);
+	double p_layer = m->rows[ANVIL_MODEL_LAYER].res.Pmax;
+	is_rel(p_layer, 6.739e3, 1e-3, "the paper's layer: P_max %.4g kN", p_layer * 1e-3);
+	type(m, ":effects.waves = halfspace");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE &&
+		   m->sc.effects.waves == ANVIL_WAVES_HALFSPACE, "effects.waves = halfspace set");
+	ok(tui_model_request(m) == (1u << ANVIL_MODEL_LAYER) && m->run_cached == 0,
+	   "not served from the cache: the key holds [effects]");
+	deliver_layer(m, s);
+	double p_hs = m->rows[ANVIL_MODEL_LAYER].res.Pmax;
+	is_rel(p_hs, 10.78e3, 1e-3, "new rows: the layer row by the half-space, P_max %.4g kN",
+	       p_hs * 1e-3);
+	type(m, ":effects.waves = auto");
+	tui_model_key(m, TUI_KEY_ENTER);
+	ok(tui_model_request(m) == 0 && m->run_cached == 1 &&
+		   m->rows[ANVIL_MODEL_LAYER].res.Pmax == p_layer,
+	   "back to waves = auto: the first rows, from the cache");
+	anvil_solver_free(s);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(95);
+	plan(101);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
@@ -396,5 +436,6 @@ int main(void)
 	test_keys();
 	test_models_toggle();
 	test_generations();
+	test_effects_key();
 	return done_testing();
 }

@@ -191,3 +191,25 @@ void cli_progress_done(struct cli_progress *p)
 	}
 	p->shown = 0;
 }
+
+int cli_plan(const struct anvil_scene *sc, const struct anvil_cache *cache,
+	     struct anvil_plan *pl, struct anvil_err *err)
+{
+	struct anvil_problem pb;
+	int st = anvil_problem_init(&pb, sc, err);
+	return st ? st : anvil_plan_make(&pb, cache, pl, err);
+}
+
+int cli_run_model(struct anvil_solver *s, const struct anvil_scene *sc, enum anvil_model m,
+		  size_t nhist, struct anvil_result *r, struct anvil_err *err)
+{
+	struct anvil_plan pl;
+	int st = cli_plan(sc, anvil_solver_cache(s), &pl, err);
+	if (!st)
+		return anvil_solver_run(s, &pl, m, nhist, r, err);
+	anvil_result_init(r, m);
+	r->status = st;
+	if (err)
+		snprintf(r->why, sizeof r->why, "%s", err->msg);
+	return st;
+}

@@ -9,6 +9,8 @@
 
 #include <stdio.h>
 
+#include "plan.h"
+#include "problem.h"
 #include "scene.h"
 #include "solver.h"
 
@@ -28,6 +30,17 @@ int cli_exit_code(int status);
  * prints the one-line message and returns the core status. */
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets);
+
+/* The scene read once, at the edge: problem (problem.h), then plan (cache
+ * may be NULL; it only prices the plan).  Statuses as anvil_problem_init
+ * and anvil_plan_make. */
+int cli_plan(const struct anvil_scene *sc, const struct anvil_cache *cache,
+	     struct anvil_plan *pl, struct anvil_err *err);
+/* Plan sc and run its row m with solver s (anvil_solver_run): for front
+ * ends that run one row of a scene.  r is initialised either way, its
+ * status set. */
+int cli_run_model(struct anvil_solver *s, const struct anvil_scene *sc, enum anvil_model m,
+		  size_t nhist, struct anvil_result *r, struct anvil_err *err);
 
 /* Collects -s KEY=VALUE arguments while a command parses its options. */
 struct cli_sets {

@@ -29,7 +29,7 @@ struct header {
 	char version[16]; /* PACKAGE_VERSION, NUL-padded */
 	uint32_t mode, acc;
 	int32_t omega_idx;
-	uint32_t reserved;
+	int32_t tau_idx;
 	double hh, nu, omega, tau_end, dtau, abserr;
 	uint64_t n, checksum;
 };
@@ -45,6 +45,7 @@ struct slot {
 	struct anvil_halfspace *hs;
 	struct anvil_green *g;
 	unsigned long used;
+	int held;                   /* holds by callers: never evicted while > 0 */
 };
 
 struct anvil_cache {
@@ -157,18 +158,47 @@ static void warn(struct anvil_cache *c, const char *fmt, ...)
 
 /* ---- memory ---- */
 
-/* A free slot: the least recently used one when all are taken. */
+/* A free slot: the least recently used one not held when all are taken;
+ * NULL when every slot is held. */
 static struct slot *slot_take(struct anvil_cache *c)
 {
-	struct slot *old = &c->slot[0];
+	struct slot *old = NULL;
 	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
 		if (c->slot[i].kind == EMPTY)
 			return &c->slot[i];
-		if (c->slot[i].used < old->used)
+		if (!c->slot[i].held && (!old || c->slot[i].used < old->used))
 			old = &c->slot[i];
 	}
-	slot_clear(old);
+	if (old)
+		slot_clear(old);
 	return old;
+}
+
+static const void *hold(struct anvil_cache *c, struct slot *s)
+{
+	s->used = ++c->clock;
+	s->held++;
+	return s->hs ? (const void *)s->hs : (const void *)s->g;
+}
+
+void anvil_cache_release(struct anvil_cache *c, const void *resp)
+{
+	for (int i = 0; resp && i < ANVIL_CACHE_SLOTS; i++) {
+		struct slot *s = &c->slot[i];
+		if (s->kind != EMPTY && s->held > 0 &&
+		    (resp == (const void *)s->hs || resp == (const void *)s->g)) {
+			s->held--;
+			return;
+		}
+	}
+}
+
+int anvil_cache_held(const struct anvil_cache *c)
+{
+	int n = 0;
+	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++)
+		n += c->slot[i].held;
+	return n;
 }
 
 const struct anvil_halfspace *anvil_cache_halfspace(struct anvil_cache *c, double nu, double tol,
@@ -176,49 +206,50 @@ const struct anvil_halfspace *anvil_cache_halfspace(struct anvil_cache *c, doubl
 {
 	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
 		struct slot *s = &c->slot[i];
-		if (s->kind == HALFSPACE && s->key.nu == nu && s->tol <= tol) {
-			s->used = ++c->clock;
-			return s->hs;
-		}
+		if (s->kind == HALFSPACE && s->key.nu == nu && s->tol == tol)
+			return hold(c, s);
 	}
 	struct anvil_halfspace *hs = anvil_halfspace_alloc(nu, tol, err);
 	if (!hs)
 		return NULL;
 	struct slot *s = slot_take(c);
-	*s = (struct slot){ .kind = HALFSPACE, .key.nu = nu, .tol = tol, .hs = hs,
-			    .used = ++c->clock };
-	return hs;
+	if (!s) {
+		anvil_halfspace_free(hs);
+		anvil_err_set(err, ANVIL_ENOMEM, "cache: all %d slots are held", ANVIL_CACHE_SLOTS);
+		return NULL;
+	}
+	*s = (struct slot){ .kind = HALFSPACE, .key.nu = nu, .tol = tol, .hs = hs };
+	return hold(c, s);
 }
 
-static int same_layer(const struct anvil_cache_key *a, const struct anvil_cache_key *b)
+static int same_key(const struct anvil_cache_key *a, const struct anvil_cache_key *b)
 {
-	return a->hh == b->hh && a->nu == b->nu && a->acc == b->acc;
+	return a->hh == b->hh && a->nu == b->nu && a->acc == b->acc &&
+	       a->omega_idx == b->omega_idx && a->tau_idx == b->tau_idx;
 }
 
-/* The memory slot that serves key: the smallest bandwidth that will do. */
-static struct slot *mem_find(const struct anvil_cache *c, const struct anvil_cache_key *key,
-			     double tau_end, int exact)
+/* The memory slot of key: the same window and bandwidth exactly, so that
+ * a result never depends on what the cache happened to hold. */
+static struct slot *mem_find(const struct anvil_cache *c, const struct anvil_cache_key *key)
 {
-	struct slot *best = NULL;
 	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
 		struct slot *s = (struct slot *)&c->slot[i];
-		if (s->kind != CORR || !same_layer(&s->key, key) || s->tau_end < tau_end)
-			continue;
-		if (exact ? s->key.omega_idx != key->omega_idx : s->key.omega_idx < key->omega_idx)
-			continue;
-		if (!best || s->key.omega_idx < best->key.omega_idx)
-			best = s;
+		if (s->kind == CORR && same_key(&s->key, key))
+			return s;
 	}
-	return best;
+	return NULL;
 }
 
 static const struct anvil_green *keep(struct anvil_cache *c, const struct anvil_cache_key *key,
 				      struct anvil_green *g)
 {
 	struct slot *s = slot_take(c);
-	*s = (struct slot){ .kind = CORR, .key = *key, .tau_end = anvil_green_tau_end(g), .g = g,
-			    .used = ++c->clock };
-	return g;
+	if (!s) {
+		anvil_green_free(g);
+		return NULL;
+	}
+	*s = (struct slot){ .kind = CORR, .key = *key, .tau_end = anvil_green_tau_end(g), .g = g };
+	return hold(c, s);
 }
 
 /* ---- disk: names, checksum, directory ---- */
@@ -242,6 +273,7 @@ int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *b
 	uint64_t h = fnv1a(FNV_SEED, &key->hh, sizeof key->hh);
 	h = fnv1a(h, &key->nu, sizeof key->nu);
 	h = fnv1a(h, &key->omega_idx, sizeof key->omega_idx);
+	h = fnv1a(h, &key->tau_idx, sizeof key->tau_idx);
 	int len = snprintf(buf, n, "%s/corr-%s-%016llx.bin", dir, anvil_accuracy_name(key->acc),
 			   (unsigned long long)h);
 	return len > 0 && (size_t)len < n ? ANVIL_OK : ANVIL_EINVAL;
@@ -276,6 +308,7 @@ static void header_fill(struct header *hd, const struct anvil_cache_key *key,
 	hd->mode = (uint32_t)s->mode;
 	hd->acc = (uint32_t)key->acc;
 	hd->omega_idx = key->omega_idx;
+	hd->tau_idx = key->tau_idx;
 	hd->hh = key->hh;
 	hd->nu = key->nu;
 	hd->omega = anvil_cache_grid(key->omega_idx);
@@ -360,7 +393,7 @@ static int header_match(const struct header *hd, const char *path,
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: made by anvil %s, this is %s", path,
 				     version, PACKAGE_VERSION);
 	if (hd->hh != key->hh || hd->nu != key->nu || hd->acc != (uint32_t)key->acc ||
-	    hd->omega_idx != key->omega_idx || hd->mode != ANVIL_GREEN_LAYER_CORRECTION)
+	    hd->omega_idx != key->omega_idx || hd->tau_idx != key->tau_idx || hd->mode != ANVIL_GREEN_LAYER_CORRECTION)
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: holds another response", path);
 	return ANVIL_OK;
 }
@@ -415,22 +448,19 @@ struct anvil_green *anvil_cache_read(const char *path, const struct anvil_cache_
 	return g;
 }
 
-/* The window of the file for key into *tau_end: ANVIL_OK, or the status of
- * anvil_cache_read for a file that is missing, stale or foreign (EPARSE) or
- * whose header is damaged (EIO). */
-static int disk_window(const char *path, const struct anvil_cache_key *key, double *tau_end,
-		       struct anvil_err *err)
+/* Whether the file for key is there with a header that matches: ANVIL_OK,
+ * or the status of anvil_cache_read for a file that is missing, stale or
+ * foreign (EPARSE) or whose header is damaged (EIO). */
+static int disk_check(const char *path, const struct anvil_cache_key *key,
+		      struct anvil_err *err)
 {
 	struct header hd;
 	FILE *f = fopen(path, "rb");
-	*tau_end = 0;
 	if (!f)
 		return anvil_err_set(err, ANVIL_ENOTFOUND, "%s: no file", path);
 	int st = header_read(f, path, &hd, err);
 	if (!st)
 		st = header_match(&hd, path, key, err);
-	if (!st)
-		*tau_end = hd.tau_end;
 	fclose(f);
 	return st;
 }
@@ -448,70 +478,48 @@ static void disk_reject(struct anvil_cache *c, const struct anvil_err *e)
 
 /* ---- lookups ---- */
 
-/* The disk level for key at omega index idx covering tau_end. */
-static struct anvil_green *disk_find(struct anvil_cache *c, const struct anvil_cache_key *key,
-				     double tau_end)
+static struct anvil_green *disk_find(struct anvil_cache *c, const struct anvil_cache_key *key)
 {
 	char path[3200];
 	struct anvil_err e;
-	double window;
 	if (anvil_cache_path(c->dir, key, path, sizeof path))
 		return NULL;
-	int st = disk_window(path, key, &window, &e);
-	if (st) {
-		disk_reject(c, &e);
-		return NULL;
-	}
-	if (window < tau_end) /* a window too short is no fault */
-		return NULL;
 	struct anvil_green *g = anvil_cache_read(path, key, &e);
-	if (!g)
+	if (!g && e.status != ANVIL_ENOTFOUND)
 		disk_reject(c, &e);
 	return g;
 }
 
 const struct anvil_green *anvil_cache_find(struct anvil_cache *c, const struct anvil_cache_key *key,
-					   double tau_end, int exact, enum anvil_cache_where *where)
+					   enum anvil_cache_where *where)
 {
-	struct slot *s = mem_find(c, key, tau_end, exact);
+	struct slot *s = mem_find(c, key);
 	if (where)
 		*where = s ? ANVIL_CACHE_MEMORY : ANVIL_CACHE_NONE;
 	if (s) {
 		c->st.mem_hits++;
-		s->used = ++c->clock;
-		return s->g;
+		return hold(c, s);
 	}
-	/* on disk: this bandwidth, or up to an octave more when that will do */
-	for (int up = 0; c->dir && up <= (exact ? 0 : ANVIL_CACHE_STEPS); up++) {
-		struct anvil_cache_key k = *key;
-		k.omega_idx += up;
-		struct anvil_green *g = disk_find(c, &k, tau_end);
-		if (g) {
-			c->st.disk_hits++;
-			if (where)
-				*where = ANVIL_CACHE_DISK;
-			return keep(c, &k, g);
-		}
+	struct anvil_green *g = c->dir ? disk_find(c, key) : NULL;
+	if (g) {
+		c->st.disk_hits++;
+		if (where)
+			*where = ANVIL_CACHE_DISK;
+		return keep(c, key, g);
 	}
 	c->st.misses++;
 	return NULL;
 }
 
 enum anvil_cache_where anvil_cache_probe(const struct anvil_cache *c,
-					 const struct anvil_cache_key *key, double tau_end,
-					 int exact)
+					 const struct anvil_cache_key *key)
 {
 	char path[3200];
-	if (mem_find(c, key, tau_end, exact))
+	if (mem_find(c, key))
 		return ANVIL_CACHE_MEMORY;
-	for (int up = 0; c->dir && up <= (exact ? 0 : ANVIL_CACHE_STEPS); up++) {
-		struct anvil_cache_key k = *key;
-		double window;
-		k.omega_idx += up;
-		if (!anvil_cache_path(c->dir, &k, path, sizeof path) &&
-		    !disk_window(path, &k, &window, NULL) && window >= tau_end)
-			return ANVIL_CACHE_DISK;
-	}
+	if (c->dir && !anvil_cache_path(c->dir, key, path, sizeof path) &&
+	    !disk_check(path, key, NULL))
+		return ANVIL_CACHE_DISK;
 	return ANVIL_CACHE_NONE;
 }
 

@@ -2,12 +2,20 @@
  *
  * Once made dimensionless (green.h) the layer's centre response depends only
  * on h/r0, Poisson's ratio and the accuracy level, plus the window
- * [0, tau_end] and the bandwidth omega it was computed for.  A response
- * with a longer window and at least the bandwidth serves any impact that
- * needs less, so a change of velocity, mass or impactor material re-runs
- * without recomputing it.  To make that happen often, windows and
+ * [0, tau_end] and the bandwidth omega it was computed for.  Windows and
  * bandwidths are rounded up to a geometric grid (ANVIL_CACHE_STEPS points
- * per octave: at most 19 % more than asked, 9 % on average).
+ * per octave: at most 19 % more than asked, 9 % on average), so a change
+ * of velocity, mass or impactor material that stays on the same grid
+ * points re-runs without recomputing.  Lookups are exact (the same grid
+ * point of window and bandwidth): a response made for a longer window or
+ * a wider band would change the result's last bits, and the same scene
+ * gives the same bits whatever the cache holds.
+ *
+ * Lifetime: every response pointer the cache returns (anvil_cache_find,
+ * _add, _halfspace) is held for the caller: it stays valid, and is never
+ * evicted, until the caller gives it back with anvil_cache_release (once
+ * per return), or until anvil_cache_free.  Unheld responses are evicted
+ * least recently used first.
  *
  * Two levels:
  *   memory  a least-recently-used table of ANVIL_CACHE_SLOTS responses,
@@ -22,7 +30,7 @@
  *
  * The file: a 112-byte header (struct in cache.c: magic "ANVILRSP", format
  * version, byte-order mark, anvil version, the key h/r0, nu, level, omega
- * and its grid index, the window tau_end, the sample step, the error
+ * and its grid index, the window's grid index, the window tau_end, the sample step, the error
  * estimate, the sample count and an FNV-1a 64-bit checksum of header and
  * samples), then the ramp samples as native doubles.  A file is only read
  * on a machine with the same byte order and double format.
@@ -33,7 +41,7 @@
 
 #include <stddef.h>
 
-#include "scene.h"
+#include "accuracy.h"
 #include "status.h"
 
 struct anvil_green;     /* green.h */
@@ -41,7 +49,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 1 /* disk format version */
+#define ANVIL_CACHE_FORMAT 2 /* disk format version (2: the window index in the key) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -53,6 +61,7 @@ struct anvil_cache_key {
 	double hh, nu;           /* h/r0, Poisson's ratio */
 	enum anvil_accuracy acc; /* the inversion settings' level */
 	int omega_idx;           /* bandwidth omega = anvil_cache_grid(omega_idx) */
+	int tau_idx;             /* window tau_end = anvil_cache_grid(tau_idx) */
 };
 
 /* Where a response came from. */
@@ -92,29 +101,33 @@ void anvil_cache_stats(const struct anvil_cache *c, struct anvil_cache_stats *st
  * says), else $HOME/.cache/anvil, else "".  Returns buf. */
 char *anvil_cache_default_dir(char *buf, size_t n);
 
-/* The exact half-space response for nu at tolerance tol or better, made
- * and kept in memory on first use (it costs well under a millisecond).
- * NULL with err set as anvil_halfspace_alloc does. */
+/* The exact half-space response for nu at tolerance tol, made and kept in
+ * memory on first use (it costs well under a millisecond); held for the
+ * caller.  NULL with err set as anvil_halfspace_alloc does, or ANVIL_ENOMEM
+ * when every slot is held. */
 const struct anvil_halfspace *anvil_cache_halfspace(struct anvil_cache *c, double nu, double tol,
 						    struct anvil_err *err);
 
-/* A layer correction for key covering [0, tau_end]: one with at least the
- * key's bandwidth (exactly it when exact: the coarse twin of an error
- * estimate must be what it says), from memory, else from disk (then kept
- * in memory).  NULL on a miss.  *where (may be NULL) says which. */
+/* The layer correction of key (exactly that window and bandwidth), from
+ * memory, else from disk (then kept in memory); held for the caller.
+ * NULL on a miss.  *where (may be NULL) says which. */
 const struct anvil_green *anvil_cache_find(struct anvil_cache *c, const struct anvil_cache_key *key,
-					   double tau_end, int exact, enum anvil_cache_where *where);
+					   enum anvil_cache_where *where);
 /* Whether find would succeed, without loading anything (for the planner's
- * cost estimate): ANVIL_CACHE_MEMORY, _DISK (a file of the right name and
- * a large enough window; its checks come when it is read) or _NONE. */
+ * cost estimate): ANVIL_CACHE_MEMORY, _DISK (a file whose header matches;
+ * its samples are checked when it is read) or _NONE. */
 enum anvil_cache_where anvil_cache_probe(const struct anvil_cache *c,
-					 const struct anvil_cache_key *key, double tau_end,
-					 int exact);
+					 const struct anvil_cache_key *key);
 /* Keep g (the cache takes it over) under key, evicting the least recently
- * used response when full, and write it to disk when the disk level is on
- * (a failure there is a warning, not an error).  Returns g. */
+ * used response not held when full, and write it to disk when the disk
+ * level is on (a failure there is a warning, not an error).  Returns g,
+ * held for the caller; NULL (g freed) when every slot is held. */
 const struct anvil_green *anvil_cache_add(struct anvil_cache *c, const struct anvil_cache_key *key,
 					  struct anvil_green *g);
+/* Give back one hold on a response returned above (NULL is a no-op). */
+void anvil_cache_release(struct anvil_cache *c, const void *resp);
+/* The holds outstanding (a solver between runs has none). */
+int anvil_cache_held(const struct anvil_cache *c);
 
 /* The disk format, for the cache itself and for tests. */
 /* The file for key in dir ("DIR/corr-LEVEL-HASH.bin") into buf; ANVIL_EINVAL

@@ -9,6 +9,7 @@
 
 #include "accuracy.h"
 #include "green.h"
+#include "halfspace.h"
 #include "hertz.h"
 #include "kernel.h"
 #include "material.h"
@@ -34,17 +35,14 @@ static double contact_estimate(const struct anvil_params *p, int layer, double t
 	return fmax(3.0 * lam * p->T, t_hertz);
 }
 
-/* h/r0 as the scene gives it when it can: "2.2 r0" is 2.2 to the bit,
- * whatever r0, so that responses are shared across impactor radii. */
-static double layer_hh(const struct anvil_scene *sc, const struct anvil_params *p)
+/* The job of a wave run: layer (1: the layer correction, when h is
+ * finite) or not, for a contact of ts seconds (0: the usual Hertz/Zener
+ * estimate). */
+static void wave_job(const struct anvil_problem *pb, int layer, double ts,
+		     struct anvil_wave_job *j)
 {
-	return sc->thickness_per_r0 ? sc->thickness : p->h / p->r0;
-}
-
-void anvil_wave_job(const struct anvil_params *p, const struct anvil_scene *sc, int layer,
-		    double ts, struct anvil_wave_job *j)
-{
-	const struct anvil_level *lev = anvil_level(sc->accuracy);
+	const struct anvil_params *p = &pb->p;
+	const struct anvil_level *lev = anvil_level(pb->accuracy);
 	if (!lev)
 		lev = anvil_level(ANVIL_ACC_NORMAL);
 	double t_hertz = anvil_hertz_tau_s() * p->T;
@@ -52,19 +50,53 @@ void anvil_wave_job(const struct anvil_params *p, const struct anvil_scene *sc, 
 	if (!(ts > 0))
 		ts = contact_estimate(p, lay, t_hertz);
 	double tchar = fmin(ts, t_hertz); /* sets the bandwidth and the step */
-	j->hh = lay ? layer_hh(sc, p) : INFINITY;
+	*j = (struct anvil_wave_job){ 0 };
+	j->hh = lay ? pb->hh : INFINITY;
 	j->ts = ts;
 	j->tau_s = ts * p->c2 / p->r0;
 	j->omega = fmax(lev->omega_min, lev->cycles / (tchar * p->c2 / p->r0));
 	j->omega_idx = anvil_cache_grid_up(j->omega);
-	j->dt = sc->dt > 0 ? sc->dt : tchar / lev->nsteps;
+	j->twin_idx = j->omega_idx - ANVIL_CACHE_STEPS;
+	j->dt = pb->dt > 0 ? pb->dt : tchar / lev->nsteps;
 	j->hs_tol = lev->hs_tol;
 	j->nsteps = lev->nsteps;
+	j->refine_max = pb->scheme == ANVIL_SCHEME_PAPER ? 0 : ANVIL_MAX_REFINE;
+	j->attempts = ANVIL_MAX_ATTEMPTS;
 }
 
 double anvil_wave_window(const struct anvil_wave_job *j, int attempt)
 {
 	return 1.4 * j->tau_s * (double)(1 << attempt) + 2.0;
+}
+
+int anvil_wave_needs_corr(const struct anvil_params *p, const struct anvil_wave_job *j,
+			  double tau_end)
+{
+	return isfinite(j->hh) && 2.0 * j->hh * (p->c2 / p->c1) < tau_end;
+}
+
+int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_model m,
+		      const struct anvil_wave_job *j, double tau_end, double omega,
+		      struct anvil_err *err)
+{
+	double steps = tau_end * p->r0 / p->c2 / j->dt;
+	double terms = omega * 2.0 * tau_end / M_PI;
+	if (scene_dt > 0.25 * j->ts)
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
+				     scene_dt * 1e6, j->ts * 1e6);
+	if (steps > ANVIL_MAX_STEPS)
+		return anvil_err_set(err, ANVIL_ETOL,
+				     "%s: the contact lasts over %.3g us, more than %d steps of %.3g us; %s",
+				     anvil_model_name(m), tau_end * p->r0 / p->c2 * 1e6,
+				     ANVIL_MAX_STEPS, j->dt * 1e6,
+				     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
+				     "set a larger solver.dt or a coarser solver.accuracy");
+	if (anvil_wave_needs_corr(p, j, tau_end) && terms > ANVIL_MAX_TERMS)
+		return anvil_err_set(err, ANVIL_ETOL,
+				     "layer: the contact lasts over %.3g us (lambda* = %.3g), too long for the transform solver (%.0f terms); the thin-plate model 'zener' applies here",
+				     tau_end * p->r0 / p->c2 * 1e6, p->lambda_star, terms);
+	return ANVIL_OK;
 }
 
 /* ---- radiation into a half-space (after Hunter 1957) ----
@@ -267,6 +299,12 @@ static double refine(double hh)
 	return hh <= 3.0 ? 2.5 : 1.0 + 1.5 * exp(-(hh - 3.0) / 2.0);
 }
 
+/* Terms summed exactly up to this many; beyond, every stride-th term
+ * stands for stride of them (the panel count varies slowly with n), so
+ * the planner's work is bounded whatever the scene (a 10 um radius asks
+ * for millions of terms, which the solver then refuses). */
+#define CORR_SAMPLES 4096.0
+
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
 			 enum anvil_accuracy acc)
 {
@@ -274,11 +312,14 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 	anvil_green_settings(acc, &gs);
 	double Tp = 2.0 * tau_end, c0 = gs.c0T / Tp, L = -log(gs.ktail), panels = 0;
 	double M = ceil(omega * Tp / M_PI), w0 = fmin(1.0, 2.0 / hh);
-	for (double n = 0; n <= M; n++) {
+	double stride = M + 1 > CORR_SAMPLES ? ceil((M + 1) / CORR_SAMPLES) : 1.0;
+	if (!isfinite(M))
+		return INFINITY;
+	for (double n = 0; n <= M; n += stride) {
 		double om = n * M_PI / Tp, wabs = hypot(om, c0);
 		double kband = anvil_kband(om, wabs, nu, hh, cr);
 		double kend = fmax(kband, sqrt(pow(L / hh, 2) + om * om));
-		panels += ceil(kband / w0) + ceil((kend - kband) / 4.0);
+		panels += stride * (ceil(kband / w0) + ceil((kend - kband) / 4.0));
 	}
 	return 21.0 * refine(hh) * panels;
 }
@@ -293,7 +334,8 @@ static double impact_cost(double window_s, double dt, int layer)
 
 struct est {
 	struct anvil_params p;
-	struct anvil_wave_job lay, hs; /* the jobs of the layer and halfspace rows */
+	const struct anvil_problem *pb;
+	struct anvil_wave_job lay, hs, st; /* the jobs of a layer, half-space, static run */
 	double t_static, p_static;
 	double radiated, bending, target;
 	double window_lay;             /* first window of the layer row, s */
@@ -304,17 +346,17 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 			 enum anvil_accuracy acc, enum anvil_cache_where *where)
 {
 	const struct anvil_params *p = &e->p;
-	double tau_end = anvil_wave_window(&e->lay, 0), tau_q;
-	double om = anvil_cache_grid(e->lay.omega_idx);
+	double tau_end = anvil_wave_window(&e->lay, 0);
+	int tau_idx = anvil_cache_grid_up(tau_end);
+	double om = anvil_cache_grid(e->lay.omega_idx), tau_q = anvil_cache_grid(tau_idx);
 	/* the response and its coarse twin (half the bandwidth, solver.c) */
-	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx };
-	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.omega_idx - ANVIL_CACHE_STEPS };
+	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx };
+	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx };
 	enum anvil_cache_where wm = ANVIL_CACHE_NONE, wt = ANVIL_CACHE_NONE;
 	if (cache) {
-		wm = anvil_cache_probe(cache, &key, tau_end, 0);
-		wt = anvil_cache_probe(cache, &twin, tau_end, 1);
+		wm = anvil_cache_probe(cache, &key);
+		wt = anvil_cache_probe(cache, &twin);
 	}
-	tau_q = anvil_cache_grid(anvil_cache_grid_up(tau_end));
 	double evals = 0;
 	if (wm == ANVIL_CACHE_NONE)
 		evals += corr_evals(e->lay.hh, p->nu, p->cR / p->c2, om, tau_q, acc);
@@ -409,19 +451,20 @@ const char *anvil_plan_warn_text(enum anvil_plan_warn w)
 
 /* ---- estimates ---- */
 
-static int estimate(const struct anvil_scene *sc, struct est *e, struct anvil_err *err)
+static int estimate(const struct anvil_problem *pb, struct est *e, struct anvil_err *err)
 {
 	const struct anvil_params *p = &e->p;
-	int st = anvil_params_init(&e->p, sc, err);
-	if (st)
-		return st;
-	anvil_wave_job(p, sc, 1, 0, &e->lay);
-	anvil_wave_job(p, sc, 0, 0, &e->hs);
+	e->p = pb->p;
+	e->pb = pb;
+	wave_job(pb, 1, 0, &e->lay);
+	wave_job(pb, 0, 0, &e->hs);
 	if (anvil_plan_static(p, &e->t_static, &e->p_static))
 		return anvil_err_set(err, ANVIL_ENUM, "plan: the quasi-static estimate failed");
+	wave_job(pb, 0, e->t_static, &e->st);
+	e->st.stat = anvil_halfspace_static(p->nu);
 	e->radiated = anvil_plan_radiated(p);
 	e->bending = bending(p);
-	e->target = anvil_accuracy_target(sc->accuracy);
+	e->target = anvil_accuracy_target(pb->accuracy);
 	double tau_end = anvil_wave_window(&e->lay, 0);
 	e->window_lay = tau_end * p->r0 / p->c2;
 	e->steps = ceil(e->window_lay / e->lay.dt);
@@ -531,20 +574,22 @@ static void layer_auto(const struct est *e, struct anvil_plan_row *r)
 	row_fig(r, ANVIL_FIG_TARGET);
 }
 
-static void layer_row(const struct anvil_scene *sc, const struct est *e,
+static void layer_row(const struct anvil_problem *pb, const struct est *e,
 		      const struct anvil_cache *cache, struct anvil_plan_row *r)
 {
 	enum anvil_cache_where where;
-	r->cost_full = layer_full_cost(e, cache, sc->accuracy, &where);
-	if (sc->effects.waves == ANVIL_WAVES_NONE) { /* asked for all the same: its own model */
-		row_set(r, ANVIL_METHOD_LAYER, ANVIL_WHY_EFFECT_OFF, 0.0, r->cost_full);
-	} else if (sc->effects.waves == ANVIL_WAVES_HALFSPACE) {
+	/* the layer's own model: a half-space when h = inf */
+	enum anvil_method own = isfinite(e->p.h) ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE;
+	r->cost_full = layer_full_cost(e, cache, pb->accuracy, &where);
+	if (pb->effects.waves == ANVIL_WAVES_NONE) { /* asked for all the same: its own model */
+		row_set(r, own, ANVIL_WHY_EFFECT_OFF, 0.0, r->cost_full);
+	} else if (pb->effects.waves == ANVIL_WAVES_HALFSPACE) {
 		row_set(r, ANVIL_METHOD_HALFSPACE, ANVIL_WHY_FORCED,
 			late_reflection(e) ? 0.0 : e->bending, halfspace_cost(e, &e->lay));
 		row_fig(r, ANVIL_FIG_T_REFLECT);
 		row_fig(r, ANVIL_FIG_T_ZENER);
-	} else if (sc->effects.waves == ANVIL_WAVES_LAYER || sc->scheme == ANVIL_SCHEME_PAPER) {
-		row_set(r, ANVIL_METHOD_LAYER, ANVIL_WHY_FORCED, 0.0, r->cost_full);
+	} else if (pb->effects.waves == ANVIL_WAVES_LAYER || pb->scheme == ANVIL_SCHEME_PAPER) {
+		row_set(r, own, ANVIL_WHY_FORCED, 0.0, r->cost_full);
 		r->cached = where;
 		row_fig(r, ANVIL_FIG_T_REFLECT);
 		row_fig(r, ANVIL_FIG_T_ZENER);
@@ -554,11 +599,11 @@ static void layer_row(const struct anvil_scene *sc, const struct est *e,
 	}
 }
 
-static void halfspace_row(const struct anvil_scene *sc, const struct est *e,
+static void halfspace_row(const struct anvil_problem *pb, const struct est *e,
 			  struct anvil_plan_row *r)
 {
 	r->cost_full = halfspace_cost(e, &e->hs);
-	int may = sc->effects.waves == ANVIL_WAVES_AUTO && sc->scheme != ANVIL_SCHEME_PAPER;
+	int may = pb->effects.waves == ANVIL_WAVES_AUTO && pb->scheme != ANVIL_SCHEME_PAPER;
 	if (may && ANVIL_PLAN_SAFETY * e->radiated <= e->target) {
 		row_set(r, ANVIL_METHOD_STATIC, ANVIL_WHY_SMALL_WAVES, e->radiated, static_cost(e));
 		row_fig(r, ANVIL_FIG_RADIATED);
@@ -573,22 +618,41 @@ static void halfspace_row(const struct anvil_scene *sc, const struct est *e,
 	}
 }
 
-static void rows(const struct anvil_scene *sc, const struct est *e,
+/* What the solver runs for a wave row: the job of its method, the
+ * fallback of a half-space taken on causality, and the refusal. */
+static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_row *r)
+{
+	struct anvil_err err;
+	if (r->method == ANVIL_METHOD_HERTZ || r->method == ANVIL_METHOD_ZENER)
+		return;
+	r->job = r->method == ANVIL_METHOD_LAYER  ? e->lay
+		 : r->method == ANVIL_METHOD_STATIC ? e->st
+						     : e->hs;
+	r->fallback = r->why == ANVIL_WHY_LATE_REFLECT;
+	if (r->fallback)
+		r->fallback_job = e->lay;
+	r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job, anvil_wave_window(&r->job, 0),
+				      r->job.omega, &err);
+	if (r->status)
+		snprintf(r->refusal, sizeof r->refusal, "%s", err.msg);
+}
+
+static void rows(const struct anvil_problem *pb, const struct est *e,
 		 const struct anvil_cache *cache, struct anvil_plan *pl)
 {
-	unsigned run = anvil_scene_models(sc);
 	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
 		struct anvil_plan_row *r = &pl->row[m];
-		r->run = (run >> m) & 1u;
-		r->off = sc->models & (1u << m) ? ANVIL_WHY_EFFECT_OFF : ANVIL_WHY_NOT_ASKED;
+		r->run = (pb->run >> m) & 1u;
+		r->off = pb->models & (1u << m) ? ANVIL_WHY_EFFECT_OFF : ANVIL_WHY_NOT_ASKED;
 		if (m == ANVIL_MODEL_HERTZ)
 			row_set(r, ANVIL_METHOD_HERTZ, ANVIL_WHY_OWN_MODEL, 0.0, COST_HERTZ);
 		else if (m == ANVIL_MODEL_ZENER)
 			row_set(r, ANVIL_METHOD_ZENER, ANVIL_WHY_OWN_MODEL, 0.0, COST_ZENER);
 		else if (m == ANVIL_MODEL_LAYER)
-			layer_row(sc, e, cache, r);
+			layer_row(pb, e, cache, r);
 		else
-			halfspace_row(sc, e, r);
+			halfspace_row(pb, e, r);
+		row_job(e, (enum anvil_model)m, r);
 		if (m <= ANVIL_MODEL_ZENER)
 			r->cost_full = r->cost;
 		if (r->run)
@@ -611,9 +675,9 @@ static void warn_add(struct anvil_plan *pl, enum anvil_plan_warn k, enum anvil_f
 
 /* Johnson (1985, sec. 6.2): under a Hertz contact yield starts below the
  * surface when p_m = 1.1 Y (p0 = 1.6 Y, nu = 0.3), Y of the softer body. */
-static void warn_yield(const struct anvil_scene *sc, struct anvil_plan *pl)
+static void warn_yield(const struct anvil_problem *pb, struct anvil_plan *pl)
 {
-	const struct anvil_material *a = &sc->impactor.mat, *b = &sc->layer.mat, *soft = NULL;
+	const struct anvil_material *a = &pb->impactor, *b = &pb->layer, *soft = NULL;
 	if (a->yield > 0)
 		soft = a;
 	if (b->yield > 0 && (!soft || b->yield < soft->yield))
@@ -630,38 +694,61 @@ static void warn_yield(const struct anvil_scene *sc, struct anvil_plan *pl)
 		warn_add(pl, ANVIL_WARN_YIELD, ANVIL_FIG_P_MEAN, ANVIL_FIG_YIELD, ANVIL_FIG_A_HERTZ);
 }
 
-static void warnings(const struct anvil_scene *sc, const struct est *e, struct anvil_plan *pl)
+static void warnings(const struct anvil_problem *pb, const struct est *e, struct anvil_plan *pl)
 {
 	const struct anvil_plan_row *lay = &pl->row[ANVIL_MODEL_LAYER];
 	const enum anvil_fig none = ANVIL_FIG_COUNT;
-	warn_yield(sc, pl);
+	warn_yield(pb, pl);
 	if (e->p.alpha_A > ANVIL_PLAN_ALPHA_A_MAX)
 		warn_add(pl, ANVIL_WARN_SUPERSEISMIC, ANVIL_FIG_ALPHA_A, none, none);
 	if (pl->row[ANVIL_MODEL_ZENER].run && !(e->p.h <= e->p.r0))
 		warn_add(pl, ANVIL_WARN_PLATE_RANGE, ANVIL_FIG_H_R0, ANVIL_FIG_LAMBDA, none);
-	int need = isfinite(e->p.h) && 2.0 * e->p.h / e->p.c1 < e->window_lay;
-	if (lay->run && lay->method == ANVIL_METHOD_LAYER &&
-	    (e->steps > ANVIL_MAX_STEPS || (need && e->terms > ANVIL_MAX_TERMS)))
+	if (lay->run && lay->method == ANVIL_METHOD_LAYER && lay->status == ANVIL_ETOL)
 		warn_add(pl, ANVIL_WARN_REFUSE, ANVIL_FIG_STEPS, ANVIL_FIG_TERMS, ANVIL_FIG_LAMBDA);
 	if (lay->run && lay->method == ANVIL_METHOD_HALFSPACE && lay->why == ANVIL_WHY_FORCED &&
 	    !lay->exact)
 		warn_add(pl, ANVIL_WARN_NOT_EXACT, ANVIL_FIG_T_REFLECT, ANVIL_FIG_T_ZENER, none);
-	if (sc->effects.field != ANVIL_FIELDMODE_OFF)
+	if (pb->effects.field != ANVIL_FIELDMODE_OFF)
 		warn_add(pl, ANVIL_WARN_FIELD, none, none, none);
 }
 
-int anvil_plan_make(const struct anvil_scene *sc, const struct anvil_cache *cache,
+int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *cache,
 		    struct anvil_plan *pl, struct anvil_err *err)
 {
 	struct est e;
 	memset(pl, 0, sizeof *pl);
-	pl->waves = sc->effects.waves;
-	pl->field = sc->effects.field;
-	int st = estimate(sc, &e, err);
+	pl->pb = *pb;
+	pl->waves = pb->effects.waves;
+	pl->field = pb->effects.field;
+	int st = estimate(&pl->pb, &e, err);
 	if (st)
 		return st;
 	figures(&e, pl);
-	rows(sc, &e, cache, pl);
-	warnings(sc, &e, pl);
+	rows(&pl->pb, &e, cache, pl);
+	warnings(&pl->pb, &e, pl);
 	return ANVIL_OK;
+}
+
+/* ---- the key of a result ---- */
+
+void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t nhist,
+		    struct anvil_plan_key *k)
+{
+	memset(k, 0, sizeof *k); /* padding too: keys are compared with memcmp */
+	k->p = pb->p;
+	k->hh = pb->hh;
+	k->dt = pb->dt;
+	k->accuracy = (int)pb->accuracy;
+	k->scheme = (int)pb->scheme;
+	k->model = (int)m;
+	k->effects.waves = pb->effects.waves;
+	k->effects.plate = pb->effects.plate;
+	k->effects.quasistatic = pb->effects.quasistatic;
+	k->effects.field = pb->effects.field;
+	k->nhist = nhist;
+}
+
+int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b)
+{
+	return memcmp(a, b, sizeof *a) == 0;
 }

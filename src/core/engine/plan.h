@@ -21,8 +21,16 @@
  * whose estimated deviation from the row's full model, times a safety
  * factor ANVIL_PLAN_SAFETY, is within the scene's accuracy target.  A
  * half-space is exact for a layer when the reflection returns after the
- * contact (causality: the correction is zero before 2h/c1); the solver
- * checks that against the computed t_s and falls back to the layer if not.
+ * contact (causality: the correction is zero before 2h/c1); the plan's
+ * fallback says to check that against the computed t_s and to run the
+ * layer if not.
+ *
+ * The plan is what runs (FFTW's plan / execute): each row holds every
+ * decision the solver takes (method, the wave job: window, bandwidth and
+ * its cache index, the coarse twin's, step, tolerance, refinement limit;
+ * the fallback; a refusal decided here with its message).  The solver
+ * executes a row and never plans; `anvil plan`, `anvil run -v` and the TUI
+ * print the same object.
  *
  * It warns when the scene needs what anvil does not model: yielding (the
  * Hertz mean pressure against 1.1 Y of the softer body), a super-seismic
@@ -36,15 +44,21 @@
 #ifndef ANVIL_PLAN_H
 #define ANVIL_PLAN_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include "cache.h"
+#include "options.h"
 #include "params.h"
-#include "scene.h"
+#include "problem.h"
 #include "status.h"
 
 /* The wave solver refuses a run needing more (it would grind for minutes):
  * very thin layers have contacts thousands of Hertz times long. */
 #define ANVIL_MAX_STEPS 40000
 #define ANVIL_MAX_TERMS 20000
+#define ANVIL_MAX_REFINE 2   /* bandwidth doublings when the target is missed */
+#define ANVIL_MAX_ATTEMPTS 6 /* window doublings when the contact outlasts it */
 /* An approximation is taken when its estimated deviation times this is
  * within the accuracy target.  On a grid of 405 scenes (three material
  * pairs, h from r0 to inf, V0 from 1 cm/s to 100 m/s, three accuracies)
@@ -53,7 +67,7 @@
  * factor leaves room for the numerical error. */
 #define ANVIL_PLAN_SAFETY 3.0
 
-/* ---- the wave solver's numerical job (shared with solver.c) ---- */
+/* ---- the wave solver's numerical job ---- */
 
 struct anvil_wave_job {
 	double hh;       /* h/r0; INFINITY for a half-space (no correction) */
@@ -61,18 +75,30 @@ struct anvil_wave_job {
 	double tau_s;    /* the same in tau = t c2/r0 */
 	double omega;    /* bandwidth of the layer correction (dimensionless) */
 	int omega_idx;   /* the cache grid index that covers it */
+	int twin_idx;    /* the coarse twin's (half the bandwidth: the error estimate) */
 	double dt;       /* time step, s (the scene's or the level's) */
 	double hs_tol;   /* tolerance of the exact half-space response */
 	double nsteps;   /* steps per contact time the level asks for */
+	double stat;     /* static compliance of the quasi-static anvil (STATIC), else 0 */
+	int refine_max;  /* bandwidth doublings allowed (0 for the paper's scheme) */
+	int attempts;    /* window doublings allowed */
 };
 
-/* The job for scene sc (params p) when the anvil is a layer (layer = 1 and
- * h finite) or a half-space (with ts the contact time to plan for: 0 for
- * the usual Hertz/Zener estimate). */
-void anvil_wave_job(const struct anvil_params *p, const struct anvil_scene *sc, int layer,
-		    double ts, struct anvil_wave_job *j);
 /* The response window of attempt a (0, 1, ...): 1.4 tau_s 2^a + 2. */
 double anvil_wave_window(const struct anvil_wave_job *j, int attempt);
+/* The one refusal rule, for the planner (attempt 0) and the solver (every
+ * window it grows to): a wave run of model m with job j over window tau_end
+ * at bandwidth omega is refused with ANVIL_EINVAL (the scene's dt longer
+ * than a quarter of the contact) or ANVIL_ETOL (more than ANVIL_MAX_STEPS
+ * steps, or more than ANVIL_MAX_TERMS Fourier terms when the layer
+ * correction is needed), the reason in err.  ANVIL_OK otherwise. */
+int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_model m,
+		      const struct anvil_wave_job *j, double tau_end, double omega,
+		      struct anvil_err *err);
+/* Whether the layer correction is needed over window tau_end: the bottom
+ * reflection (2h/c1) returns inside it. */
+int anvil_wave_needs_corr(const struct anvil_params *p, const struct anvil_wave_job *j,
+			  double tau_end);
 
 /* ---- decisions ---- */
 
@@ -147,6 +173,11 @@ const struct anvil_fig_info *anvil_plan_fig_info(enum anvil_fig f);
  * method, the one the solver uses when asked for that model; run says
  * whether `anvil run` computes it (off says why not). */
 struct anvil_plan_row {
+	int status;               /* ANVIL_OK, or the refusal (< 0) the solver returns */
+	char refusal[ANVIL_ERR_MSG]; /* its message, "" when none */
+	struct anvil_wave_job job; /* STATIC, HALFSPACE, LAYER: what the solver runs */
+	int fallback;             /* 1: when the computed t_s reaches 2h/c1, run the layer */
+	struct anvil_wave_job fallback_job; /* that layer run's job */
 	int run;
 	enum anvil_plan_why off;  /* ANVIL_WHY_NOT_ASKED or _EFFECT_OFF when !run */
 	enum anvil_method method;
@@ -183,6 +214,7 @@ struct anvil_plan_warning {
 };
 
 struct anvil_plan {
+	struct anvil_problem pb;     /* what was planned: the solver reads only this */
 	double fig[ANVIL_FIG_COUNT];
 	struct anvil_plan_row row[ANVIL_MODEL_COUNT]; /* by enum anvil_model */
 	int nwarn;
@@ -193,11 +225,28 @@ struct anvil_plan {
 	double cost;                 /* estimated seconds for the rows run */
 };
 
-/* Plan scene sc.  cache (may be NULL) is probed, never changed, to price
- * responses already made.  Returns ANVIL_OK, or ANVIL_EINVAL (with err) for
- * a scene that fails its checks. */
-int anvil_plan_make(const struct anvil_scene *sc, const struct anvil_cache *cache,
+/* Plan problem pb.  cache (may be NULL) is probed, never changed, to price
+ * responses already made; no decision depends on it.  Returns ANVIL_OK
+ * (a row the solver will refuse has its status and message set, the plan
+ * itself is fine), or ANVIL_ENUM (with err) when an estimate fails.  The
+ * work is bounded whatever the scene. */
+int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *cache,
 		    struct anvil_plan *pl, struct anvil_err *err);
+
+/* What one result depends on: the problem's numbers and options (effects
+ * included), the model and the history length; compared with memcmp
+ * (anvil_plan_key fills it zeroed, padding too).  Front ends that keep
+ * results key them with this, never with a key of their own. */
+struct anvil_plan_key {
+	struct anvil_params p;
+	double hh, dt;
+	int accuracy, scheme, model;
+	struct anvil_effects effects;
+	size_t nhist;
+};
+void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t nhist,
+		    struct anvil_plan_key *k);
+int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b);
 
 /* The pieces, for the solver and for tests. */
 /* Fraction of the impact energy radiated into an elastic half-space during

@@ -1,6 +1,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include <time.h>
 
@@ -9,18 +10,14 @@
 #include "halfspace.h"
 #include "hertz.h"
 #include "impact.h"
-#include "params.h"
 #include "plan.h"
 #include "solver.h"
 #include "zener.h"
 
-/* Beyond these a run is refused with ANVIL_ETOL and a message, instead of
- * grinding for minutes: very thin layers (lambda* >> 1) have contacts
- * thousands of Hertz times long, where the thin-plate model applies.
- * (The accuracy levels' settings are in plan.c, which prices them.) */
-#define MAX_STEPS ANVIL_MAX_STEPS
-#define MAX_TERMS ANVIL_MAX_TERMS
-#define MAX_REFINE 2 /* bandwidth doublings when the target is missed */
+/* The solver executes a plan's row (plan.h): every decision (method, job,
+ * fallback, refusal) is the planner's; what is left here is the doing,
+ * and the checks only a computed result allows (the window long enough,
+ * the target met, the contact over before the reflection). */
 
 struct anvil_solver {
 	anvil_progress_fn progress;
@@ -87,30 +84,48 @@ static double wall_seconds(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The layer correction covering [0, tau_end] with bandwidth index
- * omega_idx (a cached one with a longer window and at least that bandwidth
- * will do, unless exact: the coarse twin used for the error estimate must
- * be what it says).  A new one gets its window rounded up to the cache's
- * grid, so that nearby scenes find it. */
-static const struct anvil_green *get_corr(struct anvil_solver *s, double hh, double nu,
-					  enum anvil_accuracy acc, int omega_idx,
-					  double tau_end, int exact, struct anvil_err *err)
+/* The responses a run holds (cache.h: never evicted until given back). */
+struct held {
+	const void *p[4];
+	int n;
+};
+
+static const void *held_add(struct held *h, const void *p)
 {
-	struct anvil_cache_key key = { hh, nu, acc, omega_idx };
-	const struct anvil_green *g = anvil_cache_find(s->cache, &key, tau_end, exact, NULL);
+	if (p && h->n < 4)
+		h->p[h->n++] = p;
+	return p;
+}
+
+static void held_release(struct anvil_cache *c, struct held *h)
+{
+	for (int i = 0; i < h->n; i++)
+		anvil_cache_release(c, h->p[i]);
+	h->n = 0;
+}
+
+/* The layer correction of key, made with exactly the key's window and
+ * bandwidth when the cache does not have it, held for this run. */
+static const struct anvil_green *get_corr(struct anvil_solver *s, const struct anvil_cache_key *key,
+					  struct held *held, struct anvil_err *err)
+{
+	const struct anvil_green *g = anvil_cache_find(s->cache, key, NULL);
 	if (g)
-		return g;
+		return held_add(held, g);
 	struct anvil_green_settings gs;
-	anvil_green_settings(acc, &gs);
-	gs.omega_max = anvil_cache_grid(omega_idx);
-	double tau_q = anvil_cache_grid(anvil_cache_grid_up(tau_end));
-	struct anvil_green *ng = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, nu, tau_q,
-						   &gs, s->progress, s->progress_ctx, err);
+	anvil_green_settings(key->acc, &gs);
+	gs.omega_max = anvil_cache_grid(key->omega_idx);
+	struct anvil_green *ng = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, key->hh, key->nu,
+						   anvil_cache_grid(key->tau_idx), &gs, s->progress,
+						   s->progress_ctx, err);
 	if (!ng)
 		return NULL;
 	s->layer_computed++;
 	s->layer_evals += anvil_green_evals(ng);
-	return anvil_cache_add(s->cache, &key, ng);
+	g = anvil_cache_add(s->cache, key, ng);
+	if (!g)
+		anvil_err_set(err, ANVIL_ENOMEM, "cache: every slot is held");
+	return held_add(held, g);
 }
 
 /* The anvil's ramp response: exact half-space plus the layer correction,
@@ -162,9 +177,10 @@ static void add_model_error(struct anvil_result *r, const struct anvil_params *p
 	r->Ea_err += d * p->m1 * fmax(r->Vs * r->Vs, d * p->V0 * p->V0);
 }
 
-/* The scene's accuracy target against the error estimates: P_max and t_s
+/* The accuracy target against the error estimates: P_max and t_s
  * relative, R_f relative to max(R_f, 0.1) (a nearly dead rebound has no
- * meaningful relative error). */
+ * meaningful relative error).  ANVIL_WTOL (a warning: the values stand)
+ * when it is missed, ANVIL_ENUM for an unphysical solution. */
 static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err)
 {
@@ -177,49 +193,41 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 				     "%s: the solution is unphysical (t_s = %.3g us, P_max = %.3g N, R_f = %.3g): the time stepping is unstable for this scene",
 				     anvil_model_name(r->model), r->ts * 1e6, r->Pmax, r->Rf);
 	if (e_p > tgt || e_t > tgt || e_r > tgt)
-		return anvil_err_set(err, ANVIL_ETOL,
+		return anvil_err_set(err, ANVIL_WTOL,
 				     "%s: accuracy '%s' (%.0e) not reached: estimated errors P_max %.1e, t_s %.1e, R_f %.1e",
 				     anvil_model_name(r->model), anvil_accuracy_name(acc), tgt, e_p, e_t, e_r);
 	return ANVIL_OK;
 }
 
+/* One wave run in progress: the plan's problem and job, and what it holds. */
 struct waves {
-	struct anvil_wave_job job;
-	double kappa;
+	const struct anvil_problem *pb;
+	const struct anvil_wave_job *job;
 	double tau_end; /* the window of the last run */
 	struct response rs;
 	struct anvil_impact_opts io;
+	struct held held;
 };
 
-/* One coupled run with the window grown until the contact fits in it.
- * omega (for the refusal) and omega_idx (the cache's grid) describe the
- * layer correction's bandwidth. */
-static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
-			const struct anvil_params *p, struct waves *wv, double omega,
-			int omega_idx, int exact, struct anvil_result *r, struct anvil_err *err)
+/* One coupled run with the window grown until the contact fits in it, the
+ * layer correction (when the reflection falls in the window) at bandwidth
+ * omega (grid index omega_idx).  Every window is checked against the
+ * plan's one refusal rule. */
+static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, int omega_idx,
+			struct anvil_result *r, struct anvil_err *err)
 {
+	const struct anvil_params *p = &wv->pb->p;
 	int st = ANVIL_ETOL;
-	for (int attempt = 0; attempt < 6 && st == ANVIL_ETOL; attempt++) {
-		double tau_end = anvil_wave_window(&wv->job, attempt);
-		int need = isfinite(wv->job.hh) && 2.0 * wv->job.hh * wv->kappa < tau_end;
-		double terms = omega * 2.0 * tau_end / M_PI;
-		double dt = wv->io.dt > 0 ? wv->io.dt : wv->io.dt_auto;
-		double steps = tau_end * p->r0 / p->c2 / dt;
+	for (int attempt = 0; attempt < wv->job->attempts && st == ANVIL_ETOL; attempt++) {
+		double tau_end = anvil_wave_window(wv->job, attempt);
 		wv->rs.corr = NULL;
-		if (steps > MAX_STEPS)
-			return anvil_err_set(err, ANVIL_ETOL,
-					     "%s: the contact lasts over %.3g us, more than %d steps of %.3g us; %s",
-					     anvil_model_name(r->model), tau_end * p->r0 / p->c2 * 1e6,
-					     MAX_STEPS, dt * 1e6,
-					     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
-					     "set a larger solver.dt or a coarser solver.accuracy");
-		if (need && terms > MAX_TERMS)
-			return anvil_err_set(err, ANVIL_ETOL,
-					     "layer: the contact lasts over %.3g us (lambda* = %.3g), too long for the transform solver (%.0f terms); the thin-plate model 'zener' applies here",
-					     tau_end * p->r0 / p->c2 * 1e6, p->lambda_star, terms);
-		if (need) {
-			wv->rs.corr = get_corr(s, wv->job.hh, p->nu, sc->accuracy, omega_idx, tau_end,
-					       exact, err);
+		st = anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job, tau_end, omega, err);
+		if (st)
+			return st;
+		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
+			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
+						       anvil_cache_grid_up(tau_end) };
+			wv->rs.corr = get_corr(s, &key, &wv->held, err);
 			if (!wv->rs.corr)
 				return err ? err->status : ANVIL_ENUM;
 		}
@@ -234,55 +242,49 @@ static int waves_impact(struct anvil_solver *s, const struct anvil_scene *sc,
 	return st;
 }
 
-/* The coupled run for the anvil computed by method (LAYER, HALFSPACE or
- * STATIC), with the layer correction's error estimate when it is used. */
-static int run_waves(struct anvil_solver *s, const struct anvil_scene *sc,
-		     const struct anvil_params *p, enum anvil_method method, size_t nhist,
+/* The coupled run of job j (the anvil's response: static, half-space, or
+ * half-space plus layer correction), with the layer correction's error
+ * estimate when it is used. */
+static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
+		     const struct anvil_wave_job *j, int method, size_t nhist,
 		     struct anvil_result *r, int *used_corr, struct anvil_err *err)
 {
-	struct waves wv = { .kappa = p->c2 / p->c1 };
-	double ts_static = 0, pmax;
-	if (method == ANVIL_METHOD_STATIC && anvil_plan_static(p, &ts_static, &pmax))
-		return anvil_err_set(err, ANVIL_ENUM, "static: the contact time estimate failed");
-	anvil_wave_job(p, sc, method == ANVIL_METHOD_LAYER, ts_static, &wv.job);
-	wv.io = (struct anvil_impact_opts){ .scheme = sc->scheme, .dt = sc->dt,
-					    .dt_auto = wv.job.dt, .max_steps = MAX_STEPS,
-					    .nhist = nhist };
-	if (sc->dt > 0.25 * wv.job.ts)
-		return anvil_err_set(err, ANVIL_EINVAL,
-				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
-				     sc->dt * 1e6, wv.job.ts * 1e6);
-	if (method == ANVIL_METHOD_STATIC) {
-		wv.rs.stat = anvil_halfspace_static(p->nu);
-	} else if (!(wv.rs.hs = anvil_cache_halfspace(s->cache, p->nu, wv.job.hs_tol, err))) {
-		return err ? err->status : ANVIL_ENUM;
-	}
-	/* The layer correction's error is measured by halving its bandwidth;
-	 * when that estimate misses the target, the bandwidth doubles (twice at
-	 * most): convergence in it is fast, the estimate conservative. */
+	struct waves wv = { .pb = pb, .job = j };
+	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
+					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
 	int st = ANVIL_OK;
-	for (int refine = 0; refine <= MAX_REFINE; refine++) {
-		double omega = wv.job.omega * (double)(1 << refine);
-		int idx = wv.job.omega_idx + refine * ANVIL_CACHE_STEPS;
+	if (method == ANVIL_METHOD_STATIC)
+		wv.rs.stat = j->stat;
+	else if (!(wv.rs.hs = held_add(&wv.held, anvil_cache_halfspace(s->cache, pb->p.nu,
+									 j->hs_tol, err))))
+		return err ? err->status : ANVIL_ENUM;
+	/* The layer correction's error is measured by halving its bandwidth;
+	 * when that estimate misses the target, the bandwidth doubles (up to
+	 * refine_max times): convergence in it is fast, the estimate
+	 * conservative. */
+	for (int refine = 0; refine <= j->refine_max; refine++) {
+		double omega = j->omega * (double)(1 << refine);
+		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = nhist;
-		st = waves_impact(s, sc, p, &wv, omega, idx, 0, r, err);
+		st = waves_impact(s, &wv, omega, idx, r, err);
 		*used_corr = wv.rs.corr != NULL;
 		if (st || !wv.rs.corr)
-			return st;
+			break;
 		struct anvil_result coarse;
 		anvil_result_init(&coarse, r->model);
 		wv.io.nhist = 0;
-		st = waves_impact(s, sc, p, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
+		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, &coarse, err);
 		if (!st)
 			add_green_error(r, &coarse);
 		anvil_result_free(&coarse);
-		if (st || sc->scheme == ANVIL_SCHEME_PAPER || check_target(r, sc->accuracy, NULL) == ANVIL_OK)
+		if (st || refine >= j->refine_max || check_target(r, pb->accuracy, NULL) == ANVIL_OK)
 			break;
-		/* a refinement the solver would refuse is not tried: the result
+		/* a refinement the rule would refuse is not tried: the result
 		 * stands, and run_anvil says it missed the target */
-		if (4.0 * omega * wv.tau_end / M_PI > MAX_TERMS)
+		if (anvil_wave_refuse(&pb->p, pb->dt, r->model, j, wv.tau_end, 2.0 * omega, NULL))
 			break;
 	}
+	held_release(s->cache, &wv.held);
 	return st;
 }
 
@@ -311,44 +313,25 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 			 t_refl, r->ts * 1e6);
 }
 
-/* How the scene wants row m (LAYER or HALFSPACE) computed: the planner's
- * choice with waves = auto or a forced half-space, else the row's own
- * model.  An explicit request for a row [effects] switches off is run as
- * the row's own model. */
-static int choose(const struct anvil_scene *sc, enum anvil_model m, const struct anvil_params *p,
-		  struct anvil_plan_row *row, struct anvil_err *err)
-{
-	int layer = m == ANVIL_MODEL_LAYER && isfinite(p->h);
-	*row = (struct anvil_plan_row){ .exact = 1, .why = ANVIL_WHY_OWN_MODEL,
-					.method = layer ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE };
-	int planned = (sc->effects.waves == ANVIL_WAVES_AUTO && sc->scheme != ANVIL_SCHEME_PAPER) ||
-		      (sc->effects.waves == ANVIL_WAVES_HALFSPACE && layer);
-	if (!planned)
-		return ANVIL_OK;
-	struct anvil_plan pl;
-	int st = anvil_plan_make(sc, NULL, &pl, err);
-	if (!st)
-		*row = pl.row[m];
-	return st;
-}
-
-static int run_anvil(struct anvil_solver *s, const struct anvil_scene *sc,
-		     const struct anvil_params *p, size_t nhist, struct anvil_result *r,
+/* A wave row (STATIC, HALFSPACE or LAYER) as the plan says, with its
+ * fallback when the computed contact outlasts the reflection. */
+static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
+		     const struct anvil_plan_row *planned, size_t nhist, struct anvil_result *r,
 		     struct anvil_err *err)
 {
-	struct anvil_plan_row row;
-	int st = choose(sc, r->model, p, &row, err);
-	if (st)
-		return st;
-	enum anvil_method method = row.method;
+	const struct anvil_params *p = &pl->pb.p;
+	struct anvil_plan_row row = *planned;
 	int corr = 0;
-	st = run_waves(s, sc, p, method, nhist, r, &corr, err);
+	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
-	if (!st && row.why == ANVIL_WHY_LATE_REFLECT && !(r->ts < 2.0 * p->h / p->c1)) {
-		row = (struct anvil_plan_row){ .exact = 1, .method = ANVIL_METHOD_LAYER };
-		method = ANVIL_METHOD_LAYER;
-		st = run_waves(s, sc, p, method, nhist, r, &corr, err);
+	if (!st && row.fallback && !(r->ts < 2.0 * p->h / p->c1)) {
+		row.method = ANVIL_METHOD_LAYER;
+		row.why = ANVIL_WHY_NOT_ASKED;
+		row.exact = 1;
+		row.model_err = 0;
+		row.job = row.fallback_job;
+		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
 	}
 	if (st)
 		return st;
@@ -359,34 +342,46 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_scene *sc,
 		r->lambda_star = 0.0;
 		r->Rf_star = 1.0;
 	}
-	waves_note(r, p, &row, method, corr);
-	return sc->scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, sc->accuracy, err);
+	waves_note(r, p, &row, row.method, corr);
+	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, pl->pb.accuracy, err);
 }
 
-int anvil_solver_run(struct anvil_solver *s, const struct anvil_scene *sc,
-		     enum anvil_model m, size_t nhist, struct anvil_result *r,
-		     struct anvil_err *err)
+static int run_row(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
+		   size_t nhist, struct anvil_result *r, struct anvil_err *err)
 {
-	struct anvil_params p;
+	if ((unsigned)m >= ANVIL_MODEL_COUNT)
+		return anvil_err_set(err, ANVIL_EINVAL, "unknown model %d", (int)m);
+	const struct anvil_plan_row *row = &pl->row[m];
+	if (row->status) /* refused when planned: no work */
+		return anvil_err_set(err, row->status, "%s", row->refusal);
+	switch (row->method) {
+	case ANVIL_METHOD_HERTZ:
+		return anvil_hertz_run(&pl->pb.p, nhist, r, err);
+	case ANVIL_METHOD_ZENER:
+		return anvil_zener_run(&pl->pb.p, nhist, r, err);
+	case ANVIL_METHOD_STATIC:
+	case ANVIL_METHOD_HALFSPACE:
+	case ANVIL_METHOD_LAYER:
+		return run_anvil(s, pl, row, nhist, r, err);
+	default:
+		return anvil_err_set(err, ANVIL_EINVAL, "%s: no method planned",
+				     anvil_model_name(m));
+	}
+}
+
+int anvil_solver_run(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
+		     size_t nhist, struct anvil_result *r, struct anvil_err *err)
+{
+	struct anvil_err e = { 0 };
 	double t0 = wall_seconds();
 	anvil_result_init(r, m);
-	int st = anvil_params_init(&p, sc, err);
-	if (st)
-		return st;
-	switch (m) {
-	case ANVIL_MODEL_HERTZ:
-		st = anvil_hertz_run(&p, nhist, r, err);
-		break;
-	case ANVIL_MODEL_ZENER:
-		st = anvil_zener_run(&p, nhist, r, err);
-		break;
-	case ANVIL_MODEL_LAYER:
-	case ANVIL_MODEL_HALFSPACE:
-		st = run_anvil(s, sc, &p, nhist, r, err);
-		break;
-	default:
-		st = anvil_err_set(err, ANVIL_EINVAL, "unknown model %d", (int)m);
-	}
+	int st = run_row(s, pl, m, nhist, r, &e);
 	r->seconds = wall_seconds() - t0;
+	if (!st)
+		anvil_err_clear(&e); /* no stale message from a retried window */
+	r->status = st;
+	snprintf(r->why, sizeof r->why, "%s", st ? e.msg : "");
+	if (err)
+		*err = e;
 	return st;
 }

@@ -1,12 +1,15 @@
-/* solver.h: the one entry point the front ends use to run a model.
+/* solver.h: executes a plan (plan.h), row by row.
  *
  * A solver owns what is expensive and reusable: the layer responses
  * ("plans", keyed by h/r0, nu and accuracy, in dimensionless form), kept in
  * a cache (cache.h) in memory and on disk, so a change of velocity, mass
  * or impactor material re-runs in milliseconds.
- * With [effects] waves = auto (the default) the layer and halfspace models
- * are computed the cheapest way that meets the scene's accuracy (plan.h):
- * the result's note then says which, and its error estimates include the
+ * The solver does what the plan's row says (method, job, fallback,
+ * refusal) and never plans itself nor sees a scene: a front end turns its
+ * scene into a problem (problem.h), the problem into a plan, and runs the
+ * plan's rows.  With [effects] waves = auto the plan computes the layer
+ * and halfspace rows the cheapest way that meets the accuracy: the
+ * result's note then says which, and its error estimates include the
  * estimated model error.
  * One solver is used from one thread at a time; make one per thread. */
 #ifndef ANVIL_SOLVER_H
@@ -15,9 +18,10 @@
 #include <stddef.h>
 
 #include "cache.h"
+#include "options.h"
+#include "plan.h"
 #include "progress.h"
 #include "result.h"
-#include "scene.h"
 #include "status.h"
 
 
@@ -48,14 +52,30 @@ struct anvil_solver_stats {
 };
 void anvil_solver_stats(const struct anvil_solver *s, struct anvil_solver_stats *st);
 
-/* Run model m for scene sc into r (which this initialises; free it with
- * anvil_result_free).  With nhist > 0 the histories over [0, t_s] are kept,
- * with about nhist samples.  Returns ANVIL_OK; ANVIL_EINVAL for a scene the
- * model cannot take; ANVIL_ETOL when the scene's accuracy could not be
- * reached (r then holds the best values with their error estimates);
- * ANVIL_ECANCEL; ANVIL_ENOMEM; ANVIL_ENUM. */
-int anvil_solver_run(struct anvil_solver *s, const struct anvil_scene *sc,
-		     enum anvil_model m, size_t nhist, struct anvil_result *r,
-		     struct anvil_err *err);
+/* Execute row m of plan pl into r (which this initialises; free it with
+ * anvil_result_free).  With nhist > 0 the histories over [0, t_s] are
+ * kept, with about nhist samples.  Returns, and records in r->status with
+ * the message in r->why (and err):
+ *   ANVIL_OK;
+ *   ANVIL_WTOL (> 0, a warning): the accuracy target was missed, r holds
+ *     the best values with their error estimates;
+ *   the row's refusal decided by the planner (ANVIL_ETOL: too many steps
+ *     or terms; ANVIL_EINVAL: solver.dt too long), before any work;
+ *   ANVIL_ETOL when a grown window is refused by the same rule;
+ *   ANVIL_ECANCEL; ANVIL_ENOMEM; ANVIL_ENUM.
+ * The responses the run uses are held in the cache while it runs and
+ * given back at its end (cache.h). */
+int anvil_solver_run(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
+		     size_t nhist, struct anvil_result *r, struct anvil_err *err);
+
+/* The yield check as one call (engine/yield.c): run plan pl's layer row
+ * (the halfspace row when h = inf) with the histories the field needs,
+ * make its field and find where and when the von Mises stress peaks
+ * (field.h; pk->yield from the layer's material, the plan's accuracy).
+ * Returns the run's status (ANVIL_WTOL: the impact missed its target, pk
+ * still filled) or the field's. */
+struct anvil_field_peak;
+int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
+		       struct anvil_field_peak *pk, struct anvil_err *err);
 
 #endif

@@ -193,14 +193,13 @@ struct anvil_field *anvil_field_alloc(const struct anvil_params *p, const double
 	return f;
 }
 
-struct anvil_field *anvil_field_from_result(const struct anvil_scene *sc,
+struct anvil_field *anvil_field_from_result(const struct anvil_params *lp,
+					    enum anvil_accuracy acc,
 					    const struct anvil_result *r,
 					    struct anvil_err *err)
 {
-	struct anvil_params p;
+	struct anvil_params p = *lp;
 	const struct anvil_history *h = &r->hist;
-	if (anvil_params_init(&p, sc, err))
-		return NULL;
 	if (h->n < 3 || !(h->t[1] > h->t[0])) {
 		anvil_err_set(err, ANVIL_EINVAL, "field: the impact kept no force history");
 		return NULL;
@@ -208,7 +207,7 @@ struct anvil_field *anvil_field_from_result(const struct anvil_scene *sc,
 	if (r->model == ANVIL_MODEL_HALFSPACE)
 		p.h = INFINITY;
 	double rel = r->Pmax > 0 && isfinite(r->Pmax_err) ? r->Pmax_err / r->Pmax : 0.0;
-	return anvil_field_alloc(&p, h->P, h->n, h->t[1] - h->t[0], rel, sc->accuracy, err);
+	return anvil_field_alloc(&p, h->P, h->n, h->t[1] - h->t[0], rel, acc, err);
 }
 
 void anvil_field_free(struct anvil_field *f)
@@ -1144,28 +1143,5 @@ int anvil_field_peak(struct anvil_field *f, double yield, struct anvil_field_pea
 	st = peak_pass(f, FLEVEL(f->acc), PEAK_FINE, tf, &g, pk, &cell, err);
 	pk->yield = yield > 0 ? yield : 0.0;
 	pk->exceeded = pk->yield > 0 && pk->vm > pk->yield;
-	return st;
-}
-
-int anvil_field_yield(struct anvil_solver *s, const struct anvil_scene *sc,
-		      struct anvil_field_peak *pk, struct anvil_err *err)
-{
-	enum anvil_model m = isinf(anvil_scene_h(sc)) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
-	struct anvil_result r;
-	struct anvil_err e2 = {0};
-	int st = anvil_solver_run(s, sc, m, ANVIL_FIELD_NHIST, &r, err);
-	if (st && st != ANVIL_ETOL) {
-		anvil_result_free(&r);
-		return st;
-	}
-	struct anvil_field *f = anvil_field_from_result(sc, &r, &e2);
-	int fs = f ? anvil_field_peak(f, sc->layer.mat.yield, pk, &e2) : e2.status;
-	anvil_field_free(f);
-	anvil_result_free(&r);
-	if (fs) {
-		if (err)
-			*err = e2;
-		return fs;
-	}
 	return st;
 }

@@ -38,10 +38,10 @@
 
 #include <stddef.h>
 
+#include "accuracy.h"
 #include "params.h"
+#include "progress.h"
 #include "result.h"
-#include "scene.h"
-#include "solver.h"
 #include "status.h"
 
 /* The quantities, in output order. */
@@ -88,9 +88,11 @@ struct anvil_field *anvil_field_alloc(const struct anvil_params *p, const double
 				      enum anvil_accuracy acc, struct anvil_err *err);
 
 /* The same from an impact result with a history (uniform, from t = 0), e.g.
- * anvil_solver_run(..., ANVIL_FIELD_NHIST, r, ...): load_rel is
- * r->Pmax_err / r->Pmax.  ANVIL_EINVAL when r has no history. */
-struct anvil_field *anvil_field_from_result(const struct anvil_scene *sc,
+ * anvil_solver_run(..., ANVIL_FIELD_NHIST, r, ...), for the layer p (a
+ * half-space for a result of the halfspace model) at accuracy acc: load_rel
+ * is r->Pmax_err / r->Pmax.  ANVIL_EINVAL when r has no history. */
+struct anvil_field *anvil_field_from_result(const struct anvil_params *p,
+					    enum anvil_accuracy acc,
 					    const struct anvil_result *r,
 					    struct anvil_err *err);
 
@@ -147,12 +149,7 @@ struct anvil_field_peak {
 int anvil_field_peak(struct anvil_field *f, double yield,
 		     struct anvil_field_peak *pk, struct anvil_err *err);
 
-/* The yield check as one call, for planners: run the scene's layer (the
- * half-space model when its thickness is inf) with solver s, make its field
- * and find the peak (pk->yield from the layer's material).  The scene's
- * accuracy applies.  Returns the solver's status (ANVIL_ETOL: the impact
- * missed its accuracy target, pk still filled) or the field's. */
-int anvil_field_yield(struct anvil_solver *s, const struct anvil_scene *sc,
-		      struct anvil_field_peak *pk, struct anvil_err *err);
+/* The yield check as one call (run the impact, make its field, find the
+ * peak) is the engine's: anvil_solver_yield in solver.h. */
 
 #endif

@@ -1,12 +1,13 @@
-/* params.h: the physical parameters of one impact, derived once from a scene.
+/* params.h: the physical parameters of one impact, derived once.
  *
  * All SI.  Formulas: Hertz (39), Zener's plate compliance (8) with the
  * half-thickness h* = h/2, the time scale T and lambda* (53), the
- * super-seismic parameter alpha_A (section 4). */
+ * super-seismic parameter alpha_A (section 4).  A scene becomes params in
+ * problem.h (anvil_problem_init); this header knows no scene. */
 #ifndef ANVIL_PARAMS_H
 #define ANVIL_PARAMS_H
 
-#include "scene.h"
+#include "material.h"
 #include "status.h"
 
 struct anvil_params {
@@ -24,8 +25,14 @@ struct anvil_params {
 	double alpha_A;            /* (pi rho r0^3/m1)^(1/2) (V0/c1)^(3/2) */
 };
 
-/* Fill p from a checked scene.  ANVIL_EINVAL if the scene is not physical. */
-int anvil_params_init(struct anvil_params *p, const struct anvil_scene *sc,
+/* Fill p for an impactor of mass m1, radius r0 and material imp striking
+ * at V0 a layer of thickness h (INFINITY: a half-space) of material lay,
+ * both materials checked (anvil_material_check).  ANVIL_EINVAL, naming
+ * the input key ("layer.rho"), when an input is not positive or a derived
+ * value (wave speeds, T, lambda*, alpha_A, ...) is not finite: inputs near
+ * the limits of a double overflow here, long before any solver runs. */
+int anvil_params_init(struct anvil_params *p, double m1, double r0, double V0, double h,
+		      const struct anvil_material *imp, const struct anvil_material *lay,
 		      struct anvil_err *err);
 
 #endif

@@ -386,7 +386,7 @@ int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 
 const char *anvil_scene_default_text(void) { return default_text; }
 
-void anvil_scene_default(struct anvil_scene *sc)
+int anvil_scene_default(struct anvil_scene *sc)
 {
 	struct anvil_body *bodies[2] = {&sc->impactor, &sc->layer};
 	memset(sc, 0, sizeof *sc);
@@ -399,9 +399,9 @@ void anvil_scene_default(struct anvil_scene *sc)
 	sc->effects.plate = sc->effects.quasistatic = 1;
 	sc->effects.field = ANVIL_FIELDMODE_OFF;
 	sc->output.table = 1;
-	/* Cannot fail unless default_text is broken, which test_scene catches. */
-	if (anvil_scene_parse(sc, default_text, "default scene", NULL))
-		abort();
+	/* Fails only if default_text is broken, which test_scene catches; the
+	 * core never aborts: the status goes back to the caller. */
+	return anvil_scene_parse(sc, default_text, "default scene", NULL);
 }
 
 /* ---- validation ---- */

@@ -31,53 +31,10 @@
 
 #include "accuracy.h"
 #include "material.h"
+#include "options.h"
 #include "status.h"
 
-enum anvil_scheme {
-	ANVIL_SCHEME_IMPLICIT, /* second order, the default */
-	ANVIL_SCHEME_PAPER     /* the paper's explicit lagged scheme, eqs (42)-(46) */
-};
-
-enum anvil_model {
-	ANVIL_MODEL_HERTZ,     /* quasi-static Hertz, layer rigid (w = 0) */
-	ANVIL_MODEL_ZENER,     /* Zener's thin plate, eqs (48)-(54) */
-	ANVIL_MODEL_LAYER,     /* elastic layer of thickness h, transform solver */
-	ANVIL_MODEL_HALFSPACE, /* elastic half-space, transform solver */
-	ANVIL_MODEL_COUNT
-};
-
-#define ANVIL_MODELS_ALL ((1u << ANVIL_MODEL_COUNT) - 1u)
-
-/* How the anvil's waves are modelled in the layer and halfspace rows:
- * auto lets the planner (plan.h) pick the cheapest model that meets the
- * accuracy, layer and halfspace force one, none drops both rows. */
-enum anvil_waves {
-	ANVIL_WAVES_AUTO,
-	ANVIL_WAVES_LAYER,
-	ANVIL_WAVES_HALFSPACE,
-	ANVIL_WAVES_NONE,
-	ANVIL_WAVES_COUNT
-};
-
-/* The stress and displacement field inside the layer (the field module). */
-enum anvil_fieldmode {
-	ANVIL_FIELDMODE_OFF,
-	ANVIL_FIELDMODE_POINTS,
-	ANVIL_FIELDMODE_MAP,
-	ANVIL_FIELDMODE_COUNT
-};
-
 #define ANVIL_PATH_MAX 256
-
-/* [effects]: what physics the scene calls for.  plate and quasistatic
- * switch the zener and hertz rows; waves = none drops layer and halfspace.
- * Rows are run only if solver.models lists them too (anvil_scene_models). */
-struct anvil_effects {
-	enum anvil_waves waves;
-	int plate;       /* 1: Zener's thin plate (the zener row) */
-	int quasistatic; /* 1: quasi-static Hertz on a rigid layer (the hertz row) */
-	enum anvil_fieldmode field;
-};
 
 /* [output]: what `anvil run` writes; "" is off.  Paths are relative to the
  * current directory; the command line's -o, --history, --png win. */
@@ -119,9 +76,10 @@ struct anvil_scene {
 };
 
 /* The embedded default scene (the paper's copper rod on a 1 r0 steel layer at
- * 10 m/s) as text, and loaded into sc. */
+ * 10 m/s) as text, and loaded into sc.  anvil_scene_default returns ANVIL_OK,
+ * or the parse status if the embedded text were broken (a bug). */
 const char *anvil_scene_default_text(void);
-void anvil_scene_default(struct anvil_scene *sc);
+int anvil_scene_default(struct anvil_scene *sc);
 
 /* Parse scene text on top of what sc holds already (start from
  * anvil_scene_default).  origin names the text in messages (a file name).
@@ -151,13 +109,5 @@ double anvil_scene_h(const struct anvil_scene *sc);
  * off (hertz without quasistatic, zener without plate, layer and
  * halfspace with waves = none).  A bit (1u << enum anvil_model) each. */
 unsigned anvil_scene_models(const struct anvil_scene *sc);
-
-/* Names <-> enums.  The parse functions return -1 for an unknown name. */
-const char *anvil_model_name(enum anvil_model m);
-int anvil_model_parse(const char *name);
-const char *anvil_waves_name(enum anvil_waves w);
-int anvil_waves_parse(const char *name);
-const char *anvil_fieldmode_name(enum anvil_fieldmode f);
-int anvil_fieldmode_parse(const char *name);
 
 #endif

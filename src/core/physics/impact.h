@@ -20,7 +20,7 @@
 
 #include "params.h"
 #include "result.h"
-#include "scene.h"
+#include "options.h"
 
 /* The anvil's dimensionless centre ramp response mu c2 Rr(t) at
  * tau = t c2/r0.  Returns ANVIL_EINVAL beyond the response's window. */

@@ -9,7 +9,8 @@
 
 #include <stddef.h>
 
-#include "scene.h"
+#include "options.h"
+#include "status.h"
 
 struct anvil_history {
 	size_t n;      /* number of samples, 0 when none */
@@ -31,6 +32,11 @@ struct anvil_result {
 	double lambda_star, Rf_star; /* Zener's parameter for this scene */
 	double seconds;      /* wall time spent on this model */
 	char note[160];      /* what the model left out, or "" */
+	/* How the run ended: ANVIL_OK; a warning (> 0, e.g. ANVIL_WTOL: the
+	 * values and error estimates stand, the target was missed); a failure
+	 * (< 0: no usable values).  why says it in words ("" for ANVIL_OK). */
+	int status;
+	char why[ANVIL_ERR_MSG];
 	struct anvil_history hist; /* owned; free with anvil_result_free */
 };
 

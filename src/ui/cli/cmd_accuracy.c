@@ -89,14 +89,14 @@ static int acc_run_level(struct anvil_scene sc, enum anvil_model m,
 	anvil_solver_set_progress(s, cli_progress_cb, &prog);
 	sc.accuracy = a;
 	double t0 = cli_now();
-	lv->status = anvil_solver_run(s, &sc, m, 0, &lv->r, &err);
+	lv->status = cli_run_model(s, &sc, m, 0, &lv->r, &err);
 	lv->wall = cli_now() - t0;
 	cli_progress_done(&prog);
 	anvil_solver_free(s);
-	if (lv->status && lv->status != ANVIL_ETOL)
+	if (lv->status < 0)
 		cli_error("%s at accuracy %s: %s", anvil_model_name(m), anvil_accuracy_name(a),
 			  err.msg[0] ? err.msg : anvil_strerror(lv->status));
-	return lv->status == ANVIL_ETOL ? ANVIL_OK : lv->status;
+	return lv->status > 0 ? ANVIL_OK : lv->status;
 }
 
 static double rel_diff(double x, double ref)
@@ -123,7 +123,7 @@ static void acc_estimate(struct acc_level *lv, int l)
 /* "ok", "MISSED", or "n/a" when the model gives no estimate to judge. */
 static const char *acc_verdict(const struct acc_level *lv, double target)
 {
-	int known = 0, missed = lv->status == ANVIL_ETOL;
+	int known = 0, missed = lv->status == ANVIL_WTOL;
 	for (int i = 0; i < 3; i++) {
 		if (isnan(lv->rel[i]))
 			continue;

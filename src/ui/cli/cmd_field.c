@@ -94,11 +94,11 @@ static int impact_field(struct fctx *c, const struct fargs *a)
 	}
 	if (!a->quiet)
 		anvil_solver_set_progress(s, fprogress, c);
-	int st = anvil_solver_run(s, &c->sc, m, ANVIL_FIELD_NHIST, &c->r, &err);
+	int st = cli_run_model(s, &c->sc, m, ANVIL_FIELD_NHIST, &c->r, &err);
 	cli_progress_done(&c->prog);
 	anvil_solver_free(s);
 	/* a missed accuracy target still gives values; a refusal gives none */
-	if (st == ANVIL_ETOL && c->r.hist.n >= 3 && isfinite(c->r.ts)) {
+	if (st > 0) {
 		cli_error("warning: %s", err.msg);
 		c->tol = 1;
 	} else if (st) {
@@ -106,7 +106,7 @@ static int impact_field(struct fctx *c, const struct fargs *a)
 		cli_error("%s", err.msg[0] ? err.msg : anvil_strerror(st));
 		return cli_exit_code(st);
 	}
-	c->f = anvil_field_from_result(&c->sc, &c->r, &err);
+	c->f = anvil_field_from_result(&c->p, c->sc.accuracy, &c->r, &err);
 	if (!c->f) {
 		cli_error("%s", err.msg);
 		return EXIT_FAIL;
@@ -335,7 +335,7 @@ static int fctx_scene(struct fctx *c, const struct fargs *a)
 	if (st)
 		return cli_exit_code(st);
 	anvil_result_init(&c->r, ANVIL_MODEL_LAYER);
-	if (anvil_params_init(&c->p, &c->sc, &err)) {
+	if (anvil_params_from_scene(&c->p, &c->sc, &err)) {
 		cli_error("%s", err.msg);
 		return EXIT_USAGE;
 	}

@@ -229,7 +229,7 @@ static int plan_scene(const struct plan_opts *o)
 		cli_error("out of memory");
 		return EXIT_FAIL;
 	}
-	st = anvil_plan_make(&sc, anvil_solver_cache(s), &pl, &err);
+	st = cli_plan(&sc, anvil_solver_cache(s), &pl, &err);
 	anvil_solver_free(s);
 	if (st) {
 		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));

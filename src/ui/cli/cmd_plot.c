@@ -230,7 +230,7 @@ static int set_case(struct anvil_scene *sc, double h_r0, double V0)
 static double case_lambda(const struct anvil_scene *sc)
 {
 	struct anvil_params p;
-	return anvil_params_init(&p, sc, NULL) ? NAN : p.lambda_star;
+	return anvil_params_from_scene(&p, sc, NULL) ? NAN : p.lambda_star;
 }
 
 /* Report a model's trouble once per chart, not once per case. */
@@ -241,9 +241,9 @@ static void batch_warn(struct batch *b, enum anvil_model m, int st,
 		return;
 	b->warned |= 1u << m;
 	const char *why = err->msg[0] ? err->msg : anvil_strerror(st);
-	if (st == ANVIL_ETOL && err->msg[0])
+	if (st > 0 && err->msg[0])
 		cli_error("plot: %s (drawn with its best values)", why);
-	else if (st == ANVIL_ETOL)
+	else if (st > 0)
 		cli_error("plot: %s model: %s (drawn with its best values)", anvil_model_name(m), why);
 	else
 		cli_error("plot: %s model left out of the chart: %s", anvil_model_name(m), why);
@@ -262,9 +262,9 @@ static int batch_run(struct batch *b, const struct anvil_scene *sc,
 		return ANVIL_EINVAL;
 	}
 	struct anvil_result *r = &b->res[b->n];
-	int st = anvil_solver_run(b->solver, sc, m, nhist, r, &err);
+	int st = cli_run_model(b->solver, sc, m, nhist, r, &err);
 	cli_progress_done(&b->progress);
-	b->runs[b->n++] = (struct plot_run){st && st != ANVIL_ETOL ? NULL : r, m,
+	b->runs[b->n++] = (struct plot_run){st < 0 ? NULL : r, m,
 		anvil_scene_h(sc) / sc->radius, sc->velocity, case_lambda(sc)};
 	if (st == ANVIL_ENOMEM || st == ANVIL_ECANCEL) {
 		cli_error("plot: %s", anvil_strerror(st));
@@ -373,7 +373,7 @@ static int zener_curve(const struct anvil_scene *base, double V0, double *x,
 		struct anvil_params p;
 		x[i] = 0.5 * pow(40.0, (double)i / (ZENER_CURVE_N - 1)); /* 0.5 .. 20 */
 		if (!(st = set_case(&sc, x[i], V0)))
-			st = anvil_params_init(&p, &sc, NULL);
+			st = anvil_params_from_scene(&p, &sc, NULL);
 		y[i] = st ? NAN : p.Rf_star;
 	}
 	*c = (struct plot_curve){sc.velocity, ZENER_CURVE_N, x, y};

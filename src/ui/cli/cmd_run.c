@@ -188,13 +188,24 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 	}
 	anvil_solver_set_progress(s, run_progress_cb, &prog);
 	anvil_solver_set_warn(s, run_warn, NULL);
+	/* the scene read once into a plan; every row runs from it */
+	struct anvil_plan pl;
+	struct anvil_err plan_err = {0};
+	int plan_st = cli_plan(sc, anvil_solver_cache(s), &pl, &plan_err);
 	run_catch_signals(1);
 	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
 		struct anvil_err err = {0};
 		if (!(anvil_scene_models(sc) & (1u << m)))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
-		int st = anvil_solver_run(s, sc, (enum anvil_model)m, nhist, &res[*n], &err);
+		int st = plan_st;
+		if (plan_st) { /* the scene's fault, not a model's: said once */
+			cli_error("%s", plan_err.msg[0] ? plan_err.msg : anvil_strerror(plan_st));
+			code = EXIT_FAIL;
+			break;
+		} else {
+			st = anvil_solver_run(s, &pl, (enum anvil_model)m, nhist, &res[*n], &err);
+		}
 		cli_progress_done(&prog.shown);
 		(*n)++;
 		if (run_interrupted) {
@@ -202,9 +213,7 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 			code = EXIT_FAIL;
 			break;
 		}
-		const struct anvil_result *r = &res[*n - 1];
-		int has_values = isfinite(r->ts) && r->ts > 0 && isfinite(r->Pmax) && isfinite(r->Rf);
-		if (st == ANVIL_ETOL && has_values) {
+		if (st > 0) {
 			/* The values are there, with their error estimates: show them,
 			 * but do not let a script take them for converged ones. */
 			cli_error("warning: %s", model_message((enum anvil_model)m, &err, st));
@@ -279,7 +288,7 @@ static int run_plan(const struct anvil_scene *sc)
 	struct anvil_plan pl;
 	struct anvil_err err = {0};
 	struct anvil_solver *s = anvil_solver_alloc(); /* for its cache only */
-	int st = s ? anvil_plan_make(sc, anvil_solver_cache(s), &pl, &err) : ANVIL_ENOMEM;
+	int st = s ? cli_plan(sc, anvil_solver_cache(s), &pl, &err) : ANVIL_ENOMEM;
 	anvil_solver_free(s);
 	if (st) {
 		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));

@@ -161,10 +161,10 @@ static void table_compute(struct anvil_solver *s, const struct anvil_scene *sc,
 		struct anvil_err err = {0};
 		struct cli_progress prog = {0};
 		anvil_solver_set_progress(s, cli_progress_cb, &prog);
-		int st = anvil_solver_run(s, sc, m[k], 0, &cell->r[k], &err);
+		int st = cli_run_model(s, sc, m[k], 0, &cell->r[k], &err);
 		cli_progress_done(&prog);
-		/* ETOL still carries the best values: show them. */
-		cell->ok[k] = st == ANVIL_OK || st == ANVIL_ETOL;
+		/* a warning (WTOL) still carries the best values: show them. */
+		cell->ok[k] = st >= 0;
 		if (st && !why[0])
 			snprintf(why, whylen, "%s: %s", anvil_model_name(m[k]),
 				 err.msg[0] ? err.msg : anvil_strerror(st));

@@ -35,7 +35,6 @@
 #include "tui_model.h"
 
 /* Samples of each history: enough for a braille plot 250 columns wide. */
-#define TUI_NHIST 512
 /* Poll timeouts, ms: progress is redrawn this often while computing; when
  * idle the loop still wakes now and then, so that a resize or a Ctrl-C
  * that lands between two polls is never left waiting. */
@@ -110,7 +109,7 @@ static int worker_run_one(struct worker *w, const struct anvil_scene *sc,
 		return -1;
 	d->gen = gen;
 	d->model = model;
-	d->status = anvil_solver_run(w->solver, sc, model, TUI_NHIST, &d->r, &err);
+	d->status = cli_run_model(w->solver, sc, model, TUI_NHIST, &d->r, &err);
 	if (d->status == ANVIL_ECANCEL || atomic_load(&w->want) != gen) {
 		anvil_result_free(&d->r);
 		free(d);

@@ -199,7 +199,7 @@ static void cell_text(const struct tui_row *row, int q, const struct tui_view *v
 		snprintf(buf, n, "%s", row->state == TUI_ROW_PENDING ? ellipsis(v) : "n/a");
 	else {
 		double x = *(const double *)((const char *)&row->res + quantities[q].off);
-		snprintf(buf, n, "%s%.4g", row->status == ANVIL_ETOL ? "~" : "",
+		snprintf(buf, n, "%s%.4g", row->status > 0 ? "~" : "",
 			 x * quantities[q].scale);
 	}
 }

@@ -200,29 +200,15 @@ static void result_copy(struct anvil_result *dst, const struct anvil_result *src
 		memcpy(dst->hist.t, src->hist.t, 6 * n * sizeof(double));
 }
 
-static void body_key(double k[4], const struct anvil_body *b)
+int tui_cache_key_make(struct tui_cache_key *k, const struct anvil_scene *sc,
+		       enum anvil_model model)
 {
-	k[0] = b->mat.E;
-	k[1] = b->mat.nu;
-	k[2] = b->mat.rho;
-	k[3] = b->mat.yield;
-}
-
-void tui_cache_key_make(struct tui_cache_key *k, const struct anvil_scene *sc,
-			enum anvil_model model)
-{
+	struct anvil_problem pb;
 	memset(k, 0, sizeof *k); /* padding too: keys are compared with memcmp */
-	body_key(k->mat[0], &sc->impactor);
-	body_key(k->mat[1], &sc->layer);
-	k->mass = sc->mass;
-	k->radius = sc->radius;
-	k->thickness = sc->thickness;
-	k->velocity = sc->velocity;
-	k->dt = sc->dt;
-	k->per_r0 = sc->thickness_per_r0;
-	k->accuracy = (int)sc->accuracy;
-	k->scheme = (int)sc->scheme;
-	k->model = (int)model;
+	if (anvil_problem_init(&pb, sc, NULL))
+		return 0;
+	anvil_plan_key(&pb, model, TUI_NHIST, &k->plan);
+	return k->ok = 1;
 }
 
 static struct tui_cache_entry *cache_find(struct tui_model *m,
@@ -230,7 +216,7 @@ static struct tui_cache_entry *cache_find(struct tui_model *m,
 {
 	for (int i = 0; i < TUI_CACHE_SIZE; ++i) {
 		struct tui_cache_entry *e = &m->cache[i];
-		if (e->used && memcmp(&e->key, k, sizeof *k) == 0) {
+		if (k->ok && e->used && memcmp(&e->key, k, sizeof *k) == 0) {
 			e->stamp = ++m->stamp;
 			return e;
 		}
@@ -259,14 +245,14 @@ static void cache_put(struct tui_model *m, const struct tui_cache_key *k,
 /* Only answers that the same scene would give again are worth keeping. */
 static int cacheable(int status)
 {
-	return status == ANVIL_OK || status == ANVIL_ETOL || status == ANVIL_EINVAL;
+	return status >= 0 || status == ANVIL_EINVAL;
 }
 
 static void row_fill(struct tui_row *row, int status, const char *msg)
 {
 	row->state = TUI_ROW_DONE;
 	row->status = status;
-	row->have = status == ANVIL_OK || status == ANVIL_ETOL;
+	row->have = status >= 0; /* a warning (ANVIL_WTOL) keeps its values */
 	snprintf(row->msg, sizeof row->msg, "%s", msg ? msg : "");
 }
 
@@ -326,8 +312,8 @@ int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 	m->run_computed++;
 	if (cacheable(status)) {
 		struct tui_cache_key key;
-		tui_cache_key_make(&key, &m->req_sc, model);
-		cache_put(m, &key, row);
+		if (tui_cache_key_make(&key, &m->req_sc, model))
+			cache_put(m, &key, row);
 	}
 	return 1;
 }

@@ -19,6 +19,7 @@
 
 #include <stddef.h>
 
+#include "plan.h"
 #include "result.h"
 #include "scene.h"
 #include "status.h"
@@ -78,17 +79,22 @@ enum tui_row_state {
 
 struct tui_row {
 	enum tui_row_state state;
-	int status;              /* of the last delivery: ANVIL_OK, ETOL, ... */
-	int have;                /* res holds values (status OK or ETOL) */
+	int status;              /* of the last delivery: ANVIL_OK, WTOL, ... */
+	int have;                /* res holds values (status >= 0) */
 	char msg[ANVIL_ERR_MSG]; /* the solver's message when status != OK */
 	struct anvil_result res; /* owned, with its history */
 };
 
-/* What a result depends on; compared with memcmp, so built zeroed. */
+/* History samples the TUI asks of each run (part of a result's key). */
+#define TUI_NHIST 512
+
+/* What a result depends on: the engine's key (anvil_plan_key: the
+ * problem's numbers and options, [effects] included, the model, nhist);
+ * ok = 0 for a scene that gives no problem (nothing is cached for it).
+ * Compared with memcmp, so built zeroed. */
 struct tui_cache_key {
-	double mat[2][4]; /* impactor, layer: E, nu, rho, yield (resolved) */
-	double mass, radius, thickness, velocity, dt;
-	int per_r0, accuracy, scheme, model;
+	int ok;
+	struct anvil_plan_key plan;
 };
 
 #define TUI_CACHE_SIZE 32
@@ -187,8 +193,9 @@ void tui_model_field_text(const struct tui_model *m, enum tui_field f,
  * are not finite and positive come back unchanged. */
 double tui_step(double x, int dir, int coarse);
 
-/* The cache key of model for scene sc. */
-void tui_cache_key_make(struct tui_cache_key *k, const struct anvil_scene *sc,
-			enum anvil_model model);
+/* The cache key of model for scene sc, from the engine (anvil_plan_key);
+ * returns k->ok. */
+int tui_cache_key_make(struct tui_cache_key *k, const struct anvil_scene *sc,
+		       enum anvil_model model);
 
 #endif
