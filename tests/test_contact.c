@@ -57,7 +57,7 @@ static void test_hertz_limit(void)
 	sc.thickness = INFINITY;
 	sc.thickness_per_r0 = 0;
 	sc.layer.mat.E *= 1e6;
-	anvil_params_init(&p, &sc, NULL);
+	anvil_params_from_scene(&p, &sc, NULL);
 	anvil_hertz_run(&p, 0, &h, NULL);
 	run(&p, beta_of(&p), TOL, &r, NULL);
 	is_rel(r.ts, h.ts, 1e-6, "rigid block (E x 1e6): t_s = Hertz's to 1e-6");
@@ -76,7 +76,7 @@ static void sphere(struct anvil_params *p, double V0)
 	sc.velocity = V0;
 	sc.thickness = INFINITY;
 	sc.thickness_per_r0 = 0;
-	anvil_params_init(p, &sc, NULL);
+	anvil_params_from_scene(p, &sc, NULL);
 }
 
 static void test_hunter(void)

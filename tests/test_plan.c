@@ -29,6 +29,7 @@
 #include "green.h"
 #include "halfspace.h"
 #include "plan.h"
+#include "radiation.h"
 #include "solver.h"
 #include "scene_run.h"
 #include "tap.h"
@@ -157,10 +158,10 @@ static void test_estimates(void)
 {
 	for (double nu = 0.0; nu < 0.45; nu += 0.2) {
 		double x1 = xi_real_axis(nu, 0.004), x2 = xi_real_axis(nu, 0.002);
-		is_rel(anvil_plan_xi(nu), 2 * x2 - x1, 2e-3, "xi(%.1f) = %.5f: the contour integral "
-		       "matches the real axis extrapolated to s = i", nu, anvil_plan_xi(nu));
+		is_rel(anvil_radiation_xi(nu), 2 * x2 - x1, 2e-3, "xi(%.1f) = %.5f: the contour integral "
+		       "matches the real axis extrapolated to s = i", nu, anvil_radiation_xi(nu));
 	}
-	ok(isnan(anvil_plan_xi(0.5)) && isnan(anvil_plan_xi(-1)), "xi: NaN outside (-1, 0.5)");
+	ok(isnan(anvil_radiation_xi(0.5)) && isnan(anvil_radiation_xi(-1)), "xi: NaN outside (-1, 0.5)");
 
 	/* Hunter's form: a steel ball on steel, f = C (V0/c0)^(3/5) */
 	struct anvil_params p;

@@ -1,5 +1,4 @@
 /* plan.c: the planner (see plan.h): estimates first, then decisions. */
-#include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -14,6 +13,7 @@
 #include "kernel.h"
 #include "material.h"
 #include "plan.h"
+#include "radiation.h"
 #include "zener.h"
 
 /* What each accuracy level spends (cycles, omega_min, nsteps, hs_tol) is in
@@ -135,47 +135,9 @@ static double hertz_pulse_integral(void)
 	return 1.8 * am * am * gsl_sf_beta(0.8, 1.5);
 }
 
-struct xi_ctx {
-	double kap2, X;
-};
-
-/* Im of W_hs(q, s = i) q dq on the contour q = x + 0.3 i sin(pi x/X), in
- * units mu = c2 = rho = 1; W_hs = alpha1 s^2 / ((2q^2 + s^2)^2 - 4 q^2 alpha1
- * alpha2) (green.c).  Lifting the path above the real axis passes above
- * the Rayleigh pole and the branch points as s = i + 0 requires; beyond X
- * the integrand is real. */
-static double xi_integrand(double x, void *vc)
-{
-	const struct xi_ctx *c = vc;
-	double y = 0.3 * sin(M_PI * x / c->X), dy = 0.3 * M_PI / c->X * cos(M_PI * x / c->X);
-	double complex q = x + I * y, b = -1.0; /* s^2 with s = i */
-	double complex a1 = csqrt(q * q + c->kap2 * b), a2 = csqrt(q * q + b);
-	double complex g = 2.0 * q * q + b;
-	double complex w = a1 * b / (g * g - 4.0 * q * q * a1 * a2);
-	return cimag(w * q * (1.0 + I * dy));
-}
-
-double anvil_plan_xi(double nu)
-{
-	if (!(nu > -1 && nu < 0.5))
-		return NAN;
-	/* X = 3 is past the Rayleigh pole (q_R = c2/c_R < 1.15 for any nu) */
-	struct xi_ctx c = { anvil_kappa2(nu), 3.0 };
-	gsl_function f = { xi_integrand, &c };
-	double im, abserr;
-	gsl_integration_workspace *w = gsl_integration_workspace_alloc(200);
-	if (!w)
-		return NAN;
-	int st = gsl_integration_qag(&f, 0.0, c.X, 0.0, 1e-8, 200, GSL_INTEG_GAUSS31, w, &im,
-				     &abserr);
-	gsl_integration_workspace_free(w);
-	/* Re Y = -omega Im U and U = (omega / 2 pi) int W_hs q dq for the point load */
-	return st ? NAN : -im / (2.0 * M_PI);
-}
-
 double anvil_plan_radiated(const struct anvil_params *p)
 {
-	double xi = anvil_plan_xi(p->nu);
+	double xi = anvil_radiation_xi(p->nu);
 	return 2.0 * xi * hertz_pulse_integral() * p->m1 /
 	       (p->rho * pow(p->c2, 3) * pow(p->T, 3));
 }

@@ -252,9 +252,6 @@ int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);
-/* xi(nu): the real part of the centre mobility of a point force on a
- * half-space is xi omega^2 / (rho c2^3) at low frequency. */
-double anvil_plan_xi(double nu);
 /* Contact time and peak force of the quasi-static anvil (Hertz plus the
  * static patch compliance), from its energy integral.  ANVIL_ENUM when the
  * quadrature fails. */

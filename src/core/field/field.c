@@ -41,8 +41,10 @@
 #include <gsl/gsl_sf_bessel.h>
 
 #include "accuracy.h"
+#include "durbin.h"
 #include "field.h"
 #include "field_kernel.h"
+#include "gk21.h"
 #include "kernel.h"
 #include "material.h"
 

@@ -23,8 +23,6 @@
 #include <complex.h>
 
 /* The inversion and the quadrature rule field.c shares with green.c. */
-#include "durbin.h"
-#include "gk21.h"
 
 /* The transformed quantities at depth (coefficients of the inverse Hankel
  * transforms: U and S_rz against k J1(kr), the others against k J0(kr)). */
