@@ -13,6 +13,7 @@
 
 #include "tap.h"
 #include "plot.h"
+#include "tui_plot.h"
 
 #define NPTS 5
 
@@ -563,9 +564,41 @@ static void test_quote_gnuplot(void)
 	ok(same, "gnuplot reads every quoted text back exactly");
 }
 
+/* The TUI's charts: ticks along the edges, dashes as in the PNGs. */
+static void test_tui_chart(void)
+{
+	double t[12];
+	int n = tui_ticks(0, 1.05, 0, 3, t);
+	ok(n == 3 && t[0] == 0 && t[1] == 0.5 && t[2] == 1, "ticks 0, 0.5, 1 for R_f");
+	n = tui_ticks(0, 47, 0, 6, t);
+	ok(n == 5 && t[1] == 10 && t[4] == 40, "ticks every 10 us up to 47");
+	n = tui_ticks(-10.4, 10.2, 0, 6, t);
+	ok(n == 5 && t[0] == -10 && t[2] == 0 && t[4] == 10, "ticks across zero: -10 .. 10 by 5");
+	n = tui_ticks(0.5, 20, 1, 10, t);
+	ok(n == 6 && t[0] == 0.5 && t[3] == 5 && t[5] == 20, "log ticks 0.5 1 2 5 10 20");
+	n = tui_ticks(1e-3, 1.5, 1, 5, t);
+	ok(n == 4 && t[0] == 1e-3 && t[3] == 1, "too many on a log axis: the decades");
+	ok(tui_ticks(1, 1, 0, 5, t) == 0 && tui_ticks(0, 1, 1, 5, t) == 0 &&
+	   tui_ticks(0, NAN, 0, 5, t) == 0, "empty, non-positive log or undefined range: none");
+	struct tui_canvas c;
+	double x[2] = {0, 1}, y[2] = {0.5, 0.5};
+	int dots[3] = {0};
+	unsigned dash[3] = {TUI_DASH_SOLID, TUI_DASH_DASHED, TUI_DASH_DOTTED};
+	for (int k = 0; k < 3; k++) {
+		if (tui_canvas_init(&c, 8, 1, TUI_CANVAS_BRAILLE))
+			break;
+		tui_canvas_polyline_dash(&c, 0, x, y, 2, dash[k]);
+		for (int i = 0; i < 8; i++)
+			dots[k] += __builtin_popcount(c.bits[i]);
+		tui_canvas_free(&c);
+	}
+	ok(dots[0] == 16 && dots[1] == 12 && dots[2] == 4,
+	   "16 dots of a line: all solid, 12 dashed (6 of 8), 4 dotted (1 of 4)");
+}
+
 int main(void)
 {
-	plan(73);
+	plan(80);
 	test_force();
 	test_rf_thickness();
 	test_rf_lambda();
@@ -577,5 +610,6 @@ int main(void)
 	test_quote();
 	test_quote_gnuplot();
 	test_kinds();
+	test_tui_chart();
 	return done_testing();
 }
