@@ -34,9 +34,11 @@ static const double paper_h[] = {1, 2, 5, 10, INFINITY};
 static const double paper_v[] = {10, 100};
 /* Fig 8's axis, 0.5 to 20 r0: SWEEP_N layer runs log-spaced (a ratio of
  * 40^(1/16) = 1.26 between neighbours; the responses are cached, keyed by
- * h/r0, so the second velocity reuses them), joined by a monotone cubic
- * (Steffen) in log h drawn with SWEEP_DENSE points.  The markers are the
- * computed values; between them the curve is an interpolation. */
+ * h/r0), joined by a monotone cubic (Steffen: no overshoot) in log h drawn
+ * with SWEEP_DENSE points.  The markers are the computed values; between
+ * them the curve is an interpolation, measured against runs at the 16
+ * midpoints of the paper's case: within 0.005 in R_f at 10 m/s (the worst
+ * at h = 0.56 r0, where R_f = 0.015 turns up), within 0.001 at 100 m/s. */
 #define SWEEP_N 17
 #define SWEEP_DENSE 160
 #define ZENER_CURVE_N 41
