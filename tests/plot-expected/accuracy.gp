@@ -15,7 +15,7 @@ set bmargin at screen 0.2833
 set grid lc rgb '#dddddd'
 set tics out nomirror
 set border 3
-set key at screen 0.5, screen 0.03467 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'
+set key at screen 0.5, screen 0.03467 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
 0.005 0.01
 12.8 0.01

@@ -14,7 +14,7 @@ set bmargin at screen 0.335
 set grid lc rgb '#dddddd'
 set tics out nomirror
 set border 3
-set key at screen 0.5, screen 0.008 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'
+set key at screen 0.5, screen 0.008 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
 0 0
 11 1.1
@@ -42,11 +42,11 @@ set xrange [0:*]
 set autoscale fix
 set offsets 0, graph 0.03, graph 0.05, graph 0.05
 set yrange [0:*]
-plot $d1 using 1:2 with lines lw 6 dt 1 lc rgb '#70000000' notitle, \
+plot $d1 using 1:2 with lines lw 6 dt 1 lc rgb '#8c8c8c' notitle, \
      $d2 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' notitle, \
      $d3 using 1:2 with lines lw 2 dt (9,5) lc rgb '#0072b2' notitle, \
      keyentry with lines lw 2 dt 1 lc rgb '#009e73' title 'h = 5 r_0', \
-     keyentry with lines lw 6 dt 1 lc rgb '#70000000' title 'half-space, h = ∞', \
+     keyentry with lines lw 6 dt 1 lc rgb '#8c8c8c' title 'half-space, h = ∞', \
      keyentry with lines lw 2 dt 1 lc rgb '#0072b2' title 'h = 1 r_0', \
      keyentry with lines lw 2 dt 1 lc rgb '#000000' title 'layer (transform)', \
      keyentry with lines lw 2 dt (9,5) lc rgb '#000000' title 'Zener''s plate', \

@@ -14,7 +14,7 @@ set bmargin at screen 0.134
 set grid lc rgb '#dddddd'
 set tics out nomirror
 set border 3
-set key at screen 0.5, screen 0.008 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'
+set key at screen 0.5, screen 0.008 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
 0 0
 11 3.3
@@ -125,7 +125,7 @@ set yrange [0:*]
 set format x ''
 unset xlabel
 set key off
-plot $d1 using 1:2 with lines lw 6 dt 1 lc rgb '#70000000' notitle, \
+plot $d1 using 1:2 with lines lw 6 dt 1 lc rgb '#8c8c8c' notitle, \
      $d4 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' notitle, \
      $d7 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' notitle, \
      $d10 using 1:2 with lines lw 2 dt (9,5) lc rgb '#0072b2' notitle, \
@@ -145,7 +145,7 @@ set xzeroaxis lt -1 lw 1
 set format x ''
 unset xlabel
 set key off
-plot $d2 using 1:2 with lines lw 6 dt 1 lc rgb '#70000000' notitle, \
+plot $d2 using 1:2 with lines lw 6 dt 1 lc rgb '#8c8c8c' notitle, \
      $d5 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' notitle, \
      $d8 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' notitle, \
      $d11 using 1:2 with lines lw 2 dt (9,5) lc rgb '#0072b2' notitle, \
@@ -165,13 +165,13 @@ set yrange [0:*]
 set format x '%g'
 set xlabel 't (µs)'
 set key on
-plot $d3 using 1:2 with lines lw 6 dt 1 lc rgb '#70000000' notitle, \
+plot $d3 using 1:2 with lines lw 6 dt 1 lc rgb '#8c8c8c' notitle, \
      $d6 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' notitle, \
      $d9 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' notitle, \
      $d12 using 1:2 with lines lw 2 dt (9,5) lc rgb '#0072b2' notitle, \
      keyentry with lines lw 2 dt 1 lc rgb '#0072b2' title 'h = 1 r_0', \
      keyentry with lines lw 2 dt 1 lc rgb '#009e73' title 'h = 5 r_0', \
-     keyentry with lines lw 6 dt 1 lc rgb '#70000000' title 'half-space, h = ∞', \
+     keyentry with lines lw 6 dt 1 lc rgb '#8c8c8c' title 'half-space, h = ∞', \
      keyentry with lines lw 2 dt 1 lc rgb '#000000' title 'layer (transform)', \
      keyentry with lines lw 2 dt (9,5) lc rgb '#000000' title 'Zener''s plate', \
      keyentry with lines lw 2.5 dt (1,4) lc rgb '#000000' title 'Hertz, rigid layer (w = 0)'

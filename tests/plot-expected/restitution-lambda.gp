@@ -15,7 +15,7 @@ set bmargin at screen 0.1333
 set grid lc rgb '#dddddd'
 set tics out nomirror
 set border 3
-set key inside bottom left vertical Left reverse width 1 box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'
+set key inside bottom left vertical Left reverse width 1 box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
 0.001 0.998282
 0.00109274 0.998123

@@ -14,7 +14,7 @@ set bmargin at screen 0.1067
 set grid lc rgb '#dddddd'
 set tics out nomirror
 set border 3
-set key inside bottom right vertical Left reverse width 1 box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'
+set key inside bottom right vertical Left reverse width 1 box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
 1 0.344
 1.5 0.6

@@ -15,7 +15,7 @@
  * One visual language for every chart (PNG and TUI):
  *   colour      = the layer thickness h/r0, by value (plot_h_colour): the
  *                 same thickness has the same colour in every chart; the
- *                 half-space (h = inf) is black.  Okabe-Ito colours, safe
+ *                 half-space (h = inf) is black (its band grey).  Okabe-Ito colours, safe
  *                 with the common colour blindnesses.
  *   line style  = the model: the transform models solid (the half-space
  *                 a wide band drawn first, so that a thick layer lying on

@@ -101,11 +101,12 @@ static const char *style_colour(int colour)
 	return plot_colour_rgb(colour);
 }
 
-/* The band of a reference (the half-space) is see-through, so a curve of
- * a thick layer lying on it shows inside it. */
+/* The band of a reference (the half-space, black) is drawn grey, so a
+ * curve of a thick layer lying on it shows inside it (opaque: the svg
+ * terminal has no alpha). */
 static const char *mark_colour(enum plot_mark mark, int colour)
 {
-	return mark == PLOT_BAND && colour == PLOT_BLACK ? "#70000000" : style_colour(colour);
+	return mark == PLOT_BAND && colour == PLOT_BLACK ? "#8c8c8c" : style_colour(colour);
 }
 
 /* "with STYLE lc rgb 'C' [pt N]" of a mark. */
@@ -187,7 +188,7 @@ static void write_frame(FILE *f, const struct plot_chart *c, const struct plot_o
 		fprintf(f, "at screen 0.5, screen %.4g center bottom horizontal maxcols 5 "
 			"width -3 Left reverse", c->footnote[0] ? 0.008 + 16.0 /
 			(o->height > 0 ? o->height : 600) : 0.008);
-	fputs(" box lc rgb '#bbbbbb' opaque samplen 3.5 spacing 1.1 font ',10'\n", f);
+	fputs(" box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'\n", f);
 }
 
 static void write_notes(FILE *f, const struct plot_chart *c, int panel)
