@@ -220,6 +220,13 @@ static void test_rf_thickness(void)
 	ok(plot_chart_rf_thickness(&c, runs + 2, 1, NULL, 0, NULL, 0, NULL, 0.004, NAN) ==
 	   ANVIL_EINVAL, "restitution-thickness with nothing computed: ANVIL_EINVAL");
 	plot_chart_free(&c);
+	open = 0;
+	ok(plot_chart_rf_thickness(&c, runs + 3, 3, NULL, 0, NULL, 0, &paper, 0.004, NAN) ==
+	   ANVIL_OK, "restitution-thickness at 100 m/s only");
+	for (int i = 0; i < c.nseries; i++)
+		open += c.s[i].mark == PLOT_OPEN;
+	ok(open == 0, "the paper's values at 10 m/s are not drawn on a 100 m/s chart");
+	plot_chart_free(&c);
 }
 
 /* Fig 9: the paper's lambda* and R_f as if computed, an ODE curve and the
@@ -598,7 +605,7 @@ static void test_tui_chart(void)
 
 int main(void)
 {
-	plan(80);
+	plan(82);
 	test_force();
 	test_rf_thickness();
 	test_rf_lambda();

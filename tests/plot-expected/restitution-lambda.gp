@@ -142,15 +142,15 @@ set yrange [0:1.08]
 set logscale x
 set xrange [0.001:1.1033]
 set format x '%g'
-set label 1 '1 r_0' at 0.633,0.344 offset char 0.7,0.8 font ',9' tc rgb '#0072b2' front
-set label 2 '2 r_0' at 0.158,0.768 offset char 0.7,0.8 font ',9' tc rgb '#d55e00' front
-set label 3 '5 r_0' at 0.025,0.965 offset char 0.7,0.8 font ',9' tc rgb '#009e73' front
-set label 4 '10 r_0' at 0.0063,0.998 offset char 0.7,0.8 font ',9' tc rgb '#cc79a7' front
-set label 5 '1 r_0' at 1.003,0.177 offset char 0.7,-0.9 font ',9' tc rgb '#0072b2' front
-set label 6 '2 r_0' at 0.251,0.657 offset char 0.7,-0.9 font ',9' tc rgb '#d55e00' front
-set label 7 '5 r_0' at 0.04,0.935 offset char 0.7,-0.9 font ',9' tc rgb '#009e73' front
-set label 8 '10 r_0' at 0.01,0.986 offset char 0.7,-0.9 font ',9' tc rgb '#cc79a7' front
-set label 9 'half-space, λ^* = 0' at 0.001,0.9 offset char 0.7,0.8 font ',9' tc rgb '#000000' front
+set label 1 '1 r_0' at 0.633,0.344 left offset char 0.7,0.8 font ',9' tc rgb '#0072b2' front
+set label 2 '2 r_0' at 0.158,0.768 left offset char 0.7,0.8 font ',9' tc rgb '#d55e00' front
+set label 3 '5 r_0' at 0.025,0.965 left offset char 0.7,0.8 font ',9' tc rgb '#009e73' front
+set label 4 '10 r_0' at 0.0063,0.998 left offset char 0.7,0.8 font ',9' tc rgb '#cc79a7' front
+set label 5 '1 r_0' at 1.003,0.177 left offset char 0.7,-0.9 font ',9' tc rgb '#0072b2' front
+set label 6 '2 r_0' at 0.251,0.657 left offset char 0.7,-0.9 font ',9' tc rgb '#d55e00' front
+set label 7 '5 r_0' at 0.04,0.935 left offset char 0.7,-0.9 font ',9' tc rgb '#009e73' front
+set label 8 '10 r_0' at 0.01,0.986 left offset char 0.7,-0.9 font ',9' tc rgb '#cc79a7' front
+set label 9 'half-space, λ^* = 0' at 0.001,0.9 left offset char 0.7,0.8 font ',9' tc rgb '#000000' front
 plot $d1 using 1:2 with lines lw 2 dt 1 lc rgb '#000000' notitle, \
      $d2 using 1:2 with lines lw 1.5 dt (12,4,2,4) lc rgb '#000000' notitle, \
      $d3 using 1:2 with points ps 1.6 lc rgb '#0072b2' pt 13 notitle, \

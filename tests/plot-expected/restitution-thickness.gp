@@ -67,7 +67,7 @@ set x2range [2:180]
 set xtics nomirror
 set border 7
 set x2label 'h (mm), with r_0 = 4 mm'
-set label 1 'this scene: h = 30 r_0' at 30,0.04 offset char 0.7,0.8 font ',9' tc rgb '#cc79a7' front
+set label 1 'this scene: h = 30 r_0' at 30,0.5 right offset char -0.7,0.8 font ',9' tc rgb '#cc79a7' front
 plot $d1 using 1:2 with lines lw 2 dt 1 lc rgb '#000000' notitle, \
      $d2 using 1:2 with points ps 1.6 lc rgb '#000000' pt 13 notitle, \
      $d3 using 1:2 with lines lw 2 dt (9,5) lc rgb '#000000' notitle, \

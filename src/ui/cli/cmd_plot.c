@@ -440,16 +440,16 @@ static void layer_curve(const struct batch *b, double V0, double *x, double *y,
 		const struct plot_run *r = &b->runs[i];
 		if (!r->r || r->model != ANVIL_MODEL_LAYER || r->V0 != V0)
 			continue;
-		size_t j = m++;
-		for (; j > 0 && lh[j - 1] > log(r->h_r0); j--) {
-			lh[j] = lh[j - 1];
-			rf[j] = rf[j - 1];
-		}
+		size_t j = 0;
+		while (j < m && lh[j] < log(r->h_r0))
+			j++;
+		if (j < m && lh[j] == log(r->h_r0))
+			continue; /* the scene's own h on the sweep: once */
+		memmove(lh + j + 1, lh + j, (m - j) * sizeof *lh);
+		memmove(rf + j + 1, rf + j, (m - j) * sizeof *rf);
 		lh[j] = log(r->h_r0);
 		rf[j] = r->r->Rf;
-		if (j > 0 && lh[j - 1] == lh[j]) /* the scene's h twice: once */
-			memmove(lh + j, lh + j + 1, (--m - j) * sizeof *lh),
-			memmove(rf + j, rf + j + 1, (m - j) * sizeof *rf);
+		m++;
 	}
 	gsl_interp *in = m >= 3 ? gsl_interp_alloc(gsl_interp_steffen, m) : NULL;
 	if (!in || gsl_interp_init(in, lh, rf, m)) {
@@ -457,7 +457,8 @@ static void layer_curve(const struct batch *b, double V0, double *x, double *y,
 		return;
 	}
 	for (int i = 0; i < SWEEP_DENSE; i++) {
-		double t = lh[0] + (lh[m - 1] - lh[0]) * i / (SWEEP_DENSE - 1);
+		/* fmin: rounding must not step past the last point (GSL_EDOM) */
+		double t = fmin(lh[0] + (lh[m - 1] - lh[0]) * i / (SWEEP_DENSE - 1), lh[m - 1]);
 		x[i] = exp(t);
 		y[i] = gsl_interp_eval(in, lh, rf, t, NULL);
 	}

@@ -285,18 +285,19 @@ void plot_chart_key(struct plot_chart *c, const char *label,
 	k->point = point;
 }
 
-void plot_chart_note(struct plot_chart *c, double x, double y, int colour,
-		     const char *text)
+struct plot_note *plot_chart_note(struct plot_chart *c, double x, double y, int colour,
+				  const char *text)
 {
 	if (c->nnotes >= PLOT_MAX_NOTES)
-		return;
+		return NULL;
 	struct plot_note *n = &c->notes[c->nnotes++];
 	n->x = x;
 	n->y = y;
 	n->colour = colour;
 	n->panel = 0;
-	n->below = 0;
+	n->below = n->left = 0;
 	snprintf(n->text, sizeof n->text, "%s", text);
+	return n;
 }
 
 /* A length in mm, shortest exact-looking form ("4 mm", "0.5 mm"). */

@@ -154,6 +154,7 @@ struct plot_note {
 	int colour;
 	int panel;
 	int below;     /* 1: written under the point, else above it */
+	int left;      /* 1: written left of the point, else right of it */
 };
 
 struct plot_chart {
@@ -189,9 +190,10 @@ int plot_chart_add(struct plot_chart *c, const char *label,
 /* A key entry (ignored when the key is full or it is already there). */
 void plot_chart_key(struct plot_chart *c, const char *label,
 		    enum plot_mark mark, int colour, enum plot_point point);
-/* A note at (x, y) in axis units (ignored when the chart's notes are full). */
-void plot_chart_note(struct plot_chart *c, double x, double y, int colour,
-		     const char *text);
+/* A note at (x, y) in axis units; NULL (nothing added) when the chart's
+ * notes are full. */
+struct plot_note *plot_chart_note(struct plot_chart *c, double x, double y, int colour,
+				  const char *text);
 
 /* One model run of one case, as the charts see it. */
 struct plot_run {
@@ -243,8 +245,8 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 /* R_f against h/r0 (Fig 8): per velocity, layer (a curve through the
  * computed runs, each run a marker), the half-space as a dotted level,
  * Zener's R*_f (eq. 54) dashed; the paper's layer values (paper may be
- * NULL) as open markers; mark_h_r0 (NaN: none) marked by a vertical line
- * in its colour.  r0 (m) labels the second axis in mm. */
+ * NULL; only the rows of the velocities drawn) as open markers;
+ * mark_h_r0 (NaN: none) marked by a vertical line in its colour.  r0 (m) labels the second axis in mm. */
 int plot_chart_rf_thickness(struct plot_chart *c, const struct plot_run *runs,
 			    int n, const struct plot_curve *layer, int nlayer,
 			    const struct plot_curve *zener, int nzener,

@@ -89,34 +89,52 @@ static int rf_halfspace_level(struct plot_chart *c, const struct plot_run *runs,
 	return ANVIL_OK;
 }
 
-/* The paper's layer values as open markers, coloured by thickness. */
-static int paper_points_h(struct plot_chart *c, const struct plot_paper *p)
+/* Is V0 one of the velocities drawn (vs[0 .. nv))? */
+static int drawn_v(const double *vs, int nv, double V0)
 {
-	int st = ANVIL_OK;
+	for (int i = 0; i < nv; i++)
+		if (vs[i] == V0)
+			return 1;
+	return 0;
+}
+
+/* The paper's layer values at the velocities drawn as open markers,
+ * coloured by thickness. */
+static int paper_points_h(struct plot_chart *c, const struct plot_paper *p,
+			  const double *vs, int nv)
+{
+	int st = ANVIL_OK, any = 0;
 	for (int i = 0; p && i < p->n && !st; i++) {
 		const struct plot_paper_row *r = &p->row[i];
-		if (!isfinite(r->h_r0))
+		if (!isfinite(r->h_r0) || !drawn_v(vs, nv, r->V0))
 			continue;
+		any = 1;
 		st = plot_chart_add(c, "", PLOT_OPEN, plot_h_colour(r->h_r0), &r->h_r0,
 				    &r->Rf, 1, 1, 1, 1);
 		if (!st)
 			set_point(c, plot_v_point(r->V0));
 	}
-	if (p && p->n > 0)
+	if (any)
 		plot_chart_key(c, "paper's printed values (Tables 2-3)", PLOT_OPEN,
 			       PLOT_BLACK, PLOT_PT_DIAMOND);
 	return st;
 }
 
-/* A vertical line at the scene's thickness, in its colour. */
-static int rf_mark(struct plot_chart *c, double h)
+/* A vertical line at the scene's thickness, in its colour; its label on
+ * the side with room (the axis is logarithmic: compare in log). */
+static int rf_mark(struct plot_chart *c, double h, const double xr[2])
 {
 	double x[2] = {h, h}, y[2] = {0, 1.05};
 	char text[40];
 	if (!isfinite(h) || !(h > 0))
 		return ANVIL_OK;
 	snprintf(text, sizeof text, "this scene: h = %.3g r_0", h);
-	plot_chart_note(c, h, 0.04, plot_h_colour(h), text);
+	/* R_f rises with h and the key sits bottom right: the label goes
+	 * high on the left of the axis, at mid height, leftwards, on the right. */
+	int right = log(h / xr[0]) > 0.6 * log(xr[1] / xr[0]);
+	struct plot_note *n = plot_chart_note(c, h, right ? 0.5 : 0.93, plot_h_colour(h), text);
+	if (n)
+		n->left = right;
 	return plot_chart_add(c, "", PLOT_THIN, plot_h_colour(h), x, y, 2, 1, 1, 1);
 }
 
@@ -218,9 +236,9 @@ int plot_chart_rf_thickness(struct plot_chart *c, const struct plot_run *runs,
 	if (!any)
 		return st ? st : ANVIL_EINVAL;
 	if (!st)
-		st = paper_points_h(c, paper);
+		st = paper_points_h(c, paper, vs, nv);
 	if (!st)
-		st = rf_mark(c, mark_h_r0);
+		st = rf_mark(c, mark_h_r0, xr);
 	return st;
 }
 
@@ -281,8 +299,11 @@ static int rf_lambda_points(struct plot_chart *c, const struct plot_run *runs,
 		velocity_key(c, run->V0, PLOT_POINTS);
 		if (isfinite(h)) {
 			snprintf(text, sizeof text, "%g r_0", h);
-			plot_chart_note(c, x, run->r->Rf, plot_h_colour(h), text);
-			c->notes[c->nnotes - 1].below = plot_v_point(run->V0) == PLOT_PT_CIRCLE;
+			struct plot_note *note = plot_chart_note(c, x, run->r->Rf,
+								 plot_h_colour(h), text);
+			/* the two velocities' labels on either side of the curve */
+			if (note)
+				note->below = plot_v_point(run->V0) == PLOT_PT_CIRCLE;
 		}
 	}
 	if (half && log)
@@ -290,17 +311,26 @@ static int rf_lambda_points(struct plot_chart *c, const struct plot_run *runs,
 	return st;
 }
 
-static int paper_points_lambda(struct plot_chart *c, const struct plot_paper *p)
+static int paper_points_lambda(struct plot_chart *c, const struct plot_paper *p,
+			       const struct plot_run *runs, int n)
 {
-	int st = ANVIL_OK;
+	double vs[PLOT_MAX_SERIES];
+	int st = ANVIL_OK, nv = 0, any = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]))
+			index_of(vs, &nv, PLOT_MAX_SERIES, runs[i].V0);
 	for (int i = 0; p && i < p->n && !st; i++) {
 		const struct plot_paper_row *r = &p->row[i];
+		/* Before any run: all of them, the paper's figure alone. */
+		if (nv > 0 && !drawn_v(vs, nv, r->V0))
+			continue;
+		any = 1;
 		st = plot_chart_add(c, "", PLOT_OPEN, plot_h_colour(r->h_r0), &r->lambda_star,
 				    &r->Rf, 1, 1, 1, 1);
 		if (!st)
 			set_point(c, plot_v_point(r->V0));
 	}
-	if (p && p->n > 0)
+	if (any)
 		plot_chart_key(c, "paper's printed values (Tables 2-3)", PLOT_OPEN,
 			       PLOT_BLACK, PLOT_PT_DIAMOND);
 	return st;
@@ -332,7 +362,7 @@ int plot_chart_rf_lambda(struct plot_chart *c, const struct plot_run *runs,
 	if (!st)
 		st = rf_lambda_points(c, runs, n, x0, log);
 	if (!st)
-		st = paper_points_lambda(c, paper);
+		st = paper_points_lambda(c, paper, runs, n);
 	if (!st && log)
 		snprintf(c->footnote, sizeof c->footnote,
 			 "markers coloured and labelled by h / r_0; λ^* on a log axis");

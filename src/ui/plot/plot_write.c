@@ -199,8 +199,9 @@ static void write_notes(FILE *f, const struct plot_chart *c, int panel)
 			continue;
 		fprintf(f, "set label %d ", i + 1);
 		plot_put_quoted(f, n->text);
-		fprintf(f, " at %.6g,%.6g offset char 0.7,%s font ',9' tc rgb '%s' front\n",
-			n->x, n->y, n->below ? "-0.9" : "0.8", style_colour(n->colour));
+		fprintf(f, " at %.6g,%.6g %s offset char %s,%s font ',9' tc rgb '%s' front\n",
+			n->x, n->y, n->left ? "right" : "left", n->left ? "-0.7" : "0.7",
+			n->below ? "-0.9" : "0.8", style_colour(n->colour));
 	}
 }
 
