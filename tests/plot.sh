@@ -108,11 +108,25 @@ system("touch '"$tmp"'/pwned1") `touch '"$tmp"'/pwned2` @x ^_{}\'
 check "hostile --title: script written" \
 	"$ANVIL" plot force -s solver.models=hertz,zener --title "$hostile" --script -
 assert "hostile --title: quoted on one line" grep -q \
-	"^set title 'it''s \"q\" system(\"touch .*pwned1\") \`touch .*pwned2\` @x ^_{}\\\\' noenhanced\$" "$tmp/out"
+	"^set label 1001 'it''s \"q\" system(\"touch .*pwned1\") \`touch .*pwned2\` @x ^_{}\\\\' at screen .* noenhanced\$" "$tmp/out"
+check "a title with leading and doubled quotes: script written" \
+	"$ANVIL" plot force -s solver.models=hertz --title "''x''y'" --script -
+assert "leading quotes in their own piece" grep -q \
+	"^set label 1001 \"''\".'x'.\"''\".'y''' at screen" "$tmp/out"
+check_exit 2 "an unknown image type is a usage error" "$ANVIL" plot force -o "$tmp/x.jpg"
+assert "the image types are named" grep -q "png, .svg or .pdf" "$tmp/err"
+check "restitution-thickness respects -s layer.thickness" \
+	"$ANVIL" plot restitution-thickness $draft -s layer.thickness=5mm -s impact.velocity=10 --script -
+assert "the scene's thickness is marked" grep -q "this scene: h = 1.25 r_0" "$tmp/out"
+assert "h also in mm" grep -q "x2label 'h (mm), with r_0 = 4 mm'" "$tmp/out"
+check "restitution-lambda without the paper's table" env ANVIL_PAPER_TABLES=/nonexistent \
+	"$ANVIL" plot restitution-lambda $draft --script -
+assert "paper values not found: said" grep -q "paper values not found" "$tmp/err"
+assert "paper values not found: the rest drawn" grep -q "Zener''s ODE" "$tmp/out"
 
 if [ "$have_gnuplot" = 0 ]; then
-	for k in force velocity deflection restitution-thickness restitution-lambda \
-		accuracy injection failing-gnuplot run-png expected-scripts; do
+	for k in force velocity deflection history restitution-thickness restitution-lambda \
+		accuracy formats injection failing-gnuplot killed run-png expected-scripts; do
 		skip "$k PNG" "gnuplot ($GNUPLOT) not installed"
 	done
 	done_testing
@@ -120,12 +134,24 @@ if [ "$have_gnuplot" = 0 ]; then
 fi
 
 # --- every chart kind ----------------------------------------------------
-for k in force velocity deflection restitution-thickness restitution-lambda accuracy; do
+for k in force velocity deflection history restitution-thickness restitution-lambda accuracy; do
 	mkdir "$tmp/$k"
 	check "$k: exit 0" "$ANVIL" plot "$k" $draft -o "$tmp/$k/$k.png" --size 640x480
 	assert "$k: a 640x480 PNG, not blank" is_png "$tmp/$k/$k.png" 640 480
 	assert "$k: no temporary file left" only_files "$tmp/$k" "$k.png"
 done
+check "history: taller by default" "$ANVIL" plot history -s solver.models=hertz,zener \
+	-o "$tmp/hist.png"
+assert "history: an 800x1000 PNG" is_png "$tmp/hist.png" 800 1000
+
+# --- SVG and PDF by the extension ----------------------------------------
+check "SVG by extension" "$ANVIL" plot force -s solver.models=hertz,zener -o "$tmp/f.svg"
+assert "an SVG" grep -q "<svg" "$tmp/f.svg"
+check "PDF by extension" "$ANVIL" plot velocity -s solver.models=hertz,zener -o "$tmp/f.pdf"
+assert "a PDF" test "$(head -c 4 "$tmp/f.pdf")" = "%PDF"
+check "a leading quote in the title renders" "$ANVIL" plot force -s solver.models=hertz \
+	--title "'x" -o "$tmp/q.png"
+assert "a leading quote: a PNG" is_png "$tmp/q.png" 800 600
 check "--font and --title" "$ANVIL" plot force -s solver.models=hertz,zener \
 	-o "$tmp/font.png" --size 300x200 --font "DejaVu Sans,8" --title "small"
 assert "--font: a 300x200 PNG" is_png "$tmp/font.png" 300 200
@@ -154,6 +180,24 @@ assert "failing gnuplot: named, with its own message" \
 	grep -q "gnuplot.*exit status 1" "$tmp/err"
 assert "failing gnuplot: its error text shown" grep -q "frobnicate" "$tmp/err"
 assert "failing gnuplot: no file left" only_files "$tmp/fail"
+
+# --- a killed plot: no temporary file, no gnuplot left -------------------
+mkdir "$tmp/kill"
+printf '#!/bin/sh\ncat >/dev/null\necho $$ >"%s/gp.pid"\nexec sleep 60\n' "$tmp" >"$tmp/slow-gnuplot"
+chmod +x "$tmp/slow-gnuplot"
+ANVIL_GNUPLOT="$tmp/slow-gnuplot" "$ANVIL" plot force -s solver.models=hertz \
+	-o "$tmp/kill/f.png" 2>"$tmp/kill.err" &
+anvil_pid=$!
+i=0
+while [ ! -s "$tmp/gp.pid" ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
+kill -TERM "$anvil_pid"
+rc=0
+wait "$anvil_pid" || rc=$?
+assert "killed plot: ended by SIGTERM" test "$rc" -eq 143
+assert "killed plot: no temporary file" only_files "$tmp/kill"
+gp=$(cat "$tmp/gp.pid" 2>/dev/null || echo 0)
+assert "killed plot: its gnuplot is gone" sh -c '! kill -0 "$1" 2>/dev/null' sh "$gp"
+[ "$gp" = 0 ] || kill -KILL "$gp" 2>/dev/null || true
 
 # --- anvil run --png DIR ---------------------------------------------------
 check "run --png: exit 0" "$ANVIL" run -s solver.models=hertz,zener \

@@ -9,9 +9,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "tap.h"
 #include "plot.h"
+#include "tui_plot.h"
 
 #define NPTS 5
 
@@ -110,6 +112,13 @@ static void is_script(const struct plot_chart *c, const struct plot_opts *o,
 	free(want);
 }
 
+/* TAP's skip: counted as passed, with the reason. */
+static void skip_test(const char *what, const char *why)
+{
+	printf("ok %d # SKIP %s: %s\n", ++tap_n, what, why);
+	fflush(stdout);
+}
+
 /* Figs 2-3 style: two thicknesses, the half-space, Zener, Hertz, and a
  * failed layer run that must not show. */
 static void test_force(void)
@@ -133,37 +142,57 @@ static void test_force(void)
 		{&r[5], ANVIL_MODEL_LAYER, 7, 10, 0.01}, /* no history: not drawn */
 	};
 	plot_opts_default(&o);
-	ok(plot_chart_history(&c, PLOT_FORCE, runs, 7, 1) == ANVIL_OK, "force chart built");
+	ok(plot_chart_history(&c, PLOT_FORCE, runs, 7) == ANVIL_OK, "force chart built");
 	ok(c.nseries == 5, "five series (failed and history-less runs left out)");
+	ok(c.s[0].mark == PLOT_BAND && c.s[0].colour == PLOT_BLACK,
+	   "the half-space first, a black band under the rest");
+	ok(c.s[1].colour == plot_h_colour(1) && c.s[3].colour == c.s[1].colour &&
+	   c.s[3].mark == PLOT_DASH && c.s[2].colour == plot_h_colour(5) &&
+	   c.s[2].colour != c.s[1].colour, "colour by thickness, Zener dashed in its colour");
+	ok(c.s[4].mark == PLOT_DOTS && c.s[4].colour == PLOT_BLACK, "Hertz dotted black");
+	ok(c.nkeys == 6 && strcmp(c.keys[0].label, "h = 1 r_0") == 0 &&
+	   c.keys[2].mark == PLOT_BAND, "key: three thicknesses, then three model styles");
 	is_script(&c, &o, "force");
 	plot_chart_free(&c);
-	/* One scene: colours by model; a hostile title, a font, a size. */
+	/* One scene: a hostile title, a font, a size. */
 	o.title = "it's \"x\"\nsystem(\"touch /tmp/pwned\") `touch /tmp/pwned` @GPVAL ^_{}\\";
 	o.font = "Serif,9'";
 	o.width = 640;
 	o.height = 400;
-	ok(plot_chart_history(&c, PLOT_DEFLECTION, runs + 2, 4, 0) == ANVIL_OK,
+	ok(plot_chart_history(&c, PLOT_DEFLECTION, runs + 2, 4) == ANVIL_OK,
 	   "deflection chart of one scene built");
+	ok(c.nseries == 3, "deflection: Hertz's w = 0 is not drawn");
+	ok(c.nkeys > 0 && strstr(c.keys[c.nkeys - 1].label, "not drawn") != NULL,
+	   "deflection: the key says why Hertz is missing");
 	is_script(&c, &o, "deflection-scene");
 	plot_chart_free(&c);
-	ok(plot_chart_history(&c, PLOT_VELOCITY, runs + 1, 1, 1) == ANVIL_EINVAL,
+	ok(plot_chart_history(&c, PLOT_VELOCITY, runs + 1, 1) == ANVIL_EINVAL,
 	   "history of only failed runs: ANVIL_EINVAL");
-	ok(plot_chart_history(&c, PLOT_ACCURACY, runs, 1, 1) == ANVIL_EINVAL,
-	   "history builder refuses a non-history kind");
+	plot_opts_default(&o);
+	o.height = 1000;
+	ok(plot_chart_history(&c, PLOT_HISTORY, runs, 6) == ANVIL_OK, "history chart built");
+	ok(c.nseries == 3 * 5 - 1, "history: three panels of five runs, Hertz's w left out");
+	is_script(&c, &o, "history");
+	plot_chart_free(&c);
 	for (int i = 0; i < 6; i++)
 		anvil_result_free(&r[i]);
 }
 
-/* Fig 8: layer points at three thicknesses and two velocities, the
- * half-space level, and Zener's curves. */
+/* Fig 8: layer points at two thicknesses and two velocities, a dense
+ * layer curve, the half-space level, Zener's curves, the paper's values
+ * and a marked thickness. */
 static void test_rf_thickness(void)
 {
 	struct anvil_result r[5];
 	struct plot_chart c;
 	struct plot_opts o;
 	double zx[] = {0.5, 1, 2, 5, 20}, z10[] = {0.02, 0.34, 0.76, 0.96, 0.997},
-	       z100[] = {0.003, 0.18, 0.65, 0.93, 0.995};
+	       z100[] = {0.003, 0.18, 0.65, 0.93, 0.995}, lx[] = {1, 1.5, 2},
+	       ly[] = {0.344, 0.6, 0.77};
 	struct plot_curve zc[] = {{10, 5, zx, z10}, {100, 5, zx, z100}};
+	struct plot_curve lc[] = {{10, 3, lx, ly}};
+	struct plot_paper paper = {2, {{10, 1, 0.344, 0.633, 0.3368, 6.856, 46},
+				       {100, INFINITY, 0.991, 0.0025, 0.9957, 161.5, 27}}};
 	for (int i = 0; i < 5; i++)
 		anvil_result_init(&r[i], i < 4 ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE);
 	r[0].Rf = 0.77, r[1].Rf = 0.344, r[2].Rf = 0.657, r[3].Rf = 0.177, r[4].Rf = 0.991;
@@ -176,20 +205,40 @@ static void test_rf_thickness(void)
 		{&r[4], ANVIL_MODEL_HALFSPACE, INFINITY, 100, 0},
 	};
 	plot_opts_default(&o);
-	ok(plot_chart_rf_thickness(&c, runs, 6, zc, 2) == ANVIL_OK, "restitution-thickness built");
+	ok(plot_chart_rf_thickness(&c, runs, 6, lc, 1, zc, 2, &paper, 0.004, 30) == ANVIL_OK,
+	   "restitution-thickness built");
+	ok(strstr(c.setup, "set xrange [0.5:45]") != NULL,
+	   "the axis widens to show a marked thickness of 30 r0");
+	ok(strstr(c.setup, "set x2range [2:180]") != NULL && strstr(c.setup, "r_0 = 4 mm"),
+	   "second axis in mm, r0 stated");
+	int open = 0;
+	for (int i = 0; i < c.nseries; i++)
+		open += c.s[i].mark == PLOT_OPEN;
+	ok(open == 1, "the paper's finite-h value as an open marker (the half-space is a level)");
 	is_script(&c, &o, "restitution-thickness");
 	plot_chart_free(&c);
-	ok(plot_chart_rf_thickness(&c, runs + 2, 1, NULL, 0) == ANVIL_EINVAL,
-	   "restitution-thickness with nothing computed: ANVIL_EINVAL");
+	ok(plot_chart_rf_thickness(&c, runs + 2, 1, NULL, 0, NULL, 0, NULL, 0.004, NAN) ==
+	   ANVIL_EINVAL, "restitution-thickness with nothing computed: ANVIL_EINVAL");
+	plot_chart_free(&c);
+	open = 0;
+	ok(plot_chart_rf_thickness(&c, runs + 3, 3, NULL, 0, NULL, 0, &paper, 0.004, NAN) ==
+	   ANVIL_OK, "restitution-thickness at 100 m/s only");
+	for (int i = 0; i < c.nseries; i++)
+		open += c.s[i].mark == PLOT_OPEN;
+	ok(open == 0, "the paper's values at 10 m/s are not drawn on a 100 m/s chart");
+	plot_chart_free(&c);
 }
 
-/* Fig 9: the paper's lambda* and R_f as if computed, and an ODE curve. */
+/* Fig 9: the paper's lambda* and R_f as if computed, an ODE curve and the
+ * paper's values. */
 static void test_rf_lambda(void)
 {
 	static const double lam[] = {0.633, 0.158, 0.025, 0.0063, 0, 1.003, 0.251, 0.040, 0.010, 0};
 	static const double rf[] = {0.344, 0.768, 0.965, 0.998, 1.0, 0.177, 0.657, 0.935, 0.986, 0.991};
-	double ox[] = {0, 0.5, 1.1}, oy[] = {1, 0.43, 0.16};
+	static const double hh[] = {1, 2, 5, 10, INFINITY};
+	double ox[] = {0.001, 0.5, 1.1}, oy[] = {1, 0.43, 0.16};
 	struct plot_curve ode = {0, 3, ox, oy};
+	struct plot_paper paper = {1, {{10, 2, 0.768, 0.1582, 0.7618, 9.639, 41}}};
 	struct anvil_result r[10];
 	struct plot_run runs[10];
 	struct plot_chart c;
@@ -199,17 +248,26 @@ static void test_rf_lambda(void)
 		enum anvil_model m = half ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 		anvil_result_init(&r[i], m);
 		r[i].Rf = rf[i];
-		runs[i] = (struct plot_run){&r[i], m, half ? INFINITY : 1, i < 5 ? 10 : 100, lam[i]};
+		runs[i] = (struct plot_run){&r[i], m, hh[i % 5], i < 5 ? 10 : 100, lam[i]};
 	}
 	plot_opts_default(&o);
-	ok(plot_chart_rf_lambda(&c, runs, 10, &ode) == ANVIL_OK, "restitution-lambda built");
-	ok(c.nseries == 4, "fit line, ODE line, diamonds, circles");
+	ok(plot_chart_rf_lambda(&c, runs, 10, &ode, &paper) == ANVIL_OK, "restitution-lambda built");
+	ok(c.nseries == 2 + 10 + 1, "fit line, ODE line, ten cases, one paper value");
+	ok(strstr(c.setup, "set logscale x") && strstr(c.setup, "set xrange [0.001:"),
+	   "lambda* from 0.0063 to 1: a log axis from the decade below");
+	ok(c.s[2].colour == plot_h_colour(1) && c.s[2].point == PLOT_PT_DIAMOND &&
+	   c.s[7].point == PLOT_PT_CIRCLE && c.s[6].colour == PLOT_BLACK,
+	   "markers: colour by h/r0, diamond at 10 m/s, circle at 100, half-space black");
+	ok(c.s[6].x[0] == 0.001, "the half-space (lambda* = 0) at the log axis' left end");
+	ok(c.s[12].mark == PLOT_OPEN && c.s[12].colour == plot_h_colour(2),
+	   "the paper's value open, in its thickness' colour");
 	is_script(&c, &o, "restitution-lambda");
 	plot_chart_free(&c);
 	/* Before the transform models exist: Zener's curves alone still draw. */
 	runs[0].r = NULL;
-	ok(plot_chart_rf_lambda(&c, runs, 1, NULL) == ANVIL_OK && c.nseries == 1,
-	   "restitution-lambda without computed cases: the fit line only");
+	ok(plot_chart_rf_lambda(&c, runs, 1, NULL, NULL) == ANVIL_OK && c.nseries == 1 &&
+	   strstr(c.setup, "logscale") == NULL,
+	   "restitution-lambda without computed cases: the fit line only, linear axis");
 	plot_chart_free(&c);
 }
 
@@ -235,14 +293,21 @@ static void test_accuracy(void)
 	r[3].Rf_err = 3.4e-6;
 	plot_opts_default(&o);
 	ok(plot_chart_accuracy(&c, runs) == ANVIL_OK, "accuracy chart built");
-	is_rel(c.s[0].y[0], 490.0 / 10010.0, 1e-12, "draft P_max error against 'fine'");
-	is_rel(c.s[0].y[2], 1e-4, 1e-12, "reference P_max error: its own estimate");
+	int targets = 1;
+	for (int i = 0; i < ANVIL_ACC_COUNT; i++)
+		targets &= c.s[i].n == 2 && c.s[i].y[0] == anvil_accuracy_target(i) &&
+			   c.s[i].colour == i;
+	ok(targets, "each level's target as a line in the level's colour");
+	is_rel(c.s[4].y[0], 490.0 / 10010.0, 1e-12, "draft P_max error against 'fine'");
+	ok(c.s[4].colour == 0 && c.s[4].x[0] == 0.01, "draft's point in its colour, at its time");
+	is_rel(c.s[6].y[0], 1e-4, 1e-12, "reference P_max error: its own estimate");
 	is_script(&c, &o, "accuracy");
 	plot_chart_free(&c);
 }
 
-/* The paper's ten curves: the legend moves outside the plot. */
-static void test_many_series(void)
+/* The key: below a history, inside a free corner of the restitution
+ * charts; image formats by extension. */
+static void test_layout(void)
 {
 	struct plot_chart c;
 	struct plot_opts o;
@@ -251,14 +316,81 @@ static void test_many_series(void)
 	size_t len = 0;
 	plot_opts_default(&o);
 	plot_chart_init(&c, PLOT_FORCE);
-	for (int i = 0; i < 10; i++)
-		plot_chart_add(&c, "s", PLOT_LINE, i, x, y, 2, 1e6, 1e-3, 0);
+	plot_chart_add(&c, "", PLOT_LINE, 0, x, y, 2, 1e6, 1e-3, 0);
+	plot_chart_key(&c, "a", PLOT_LINE, 0, 0);
+	plot_chart_key(&c, "a", PLOT_LINE, 1, 0);
+	ok(c.nkeys == 1, "a key entry is added once");
+	o.format = PLOT_PDF;
 	FILE *m = open_memstream(&text, &len);
 	ok(plot_write(m, &c, &o) == ANVIL_OK && fclose(m) == 0 &&
-	   strstr(text, "\nset key outside right top") != NULL,
-	   "ten series: the legend goes outside");
+	   strstr(text, "\nset key at screen 0.5,") && strstr(text, "pdfcairo size 8in,6in") &&
+	   strstr(text, "keyentry with lines"),
+	   "history: the key below, as key entries; PDF in inches");
+	free(text);
+	c.kind = PLOT_RESTITUTION_LAMBDA;
+	o.format = PLOT_SVG;
+	m = open_memstream(&text, &len);
+	ok(plot_write(m, &c, &o) == ANVIL_OK && fclose(m) == 0 &&
+	   strstr(text, "\nset key inside bottom left") && strstr(text, "set terminal svg size 800,600"),
+	   "restitution-lambda: the key inside; SVG");
 	free(text);
 	plot_chart_free(&c);
+	ok(plot_format_of("a.PNG") == PLOT_PNG && plot_format_of("x/b.svg") == PLOT_SVG &&
+	   plot_format_of("c.pdf") == PLOT_PDF && plot_format_of("d.jpg") == -1 &&
+	   plot_format_of(".png") == -1 && plot_format_of(NULL) == -1,
+	   "image format by extension");
+}
+
+/* The paper's table: read when ../shared is there; errors named. */
+static void test_paper(void)
+{
+	struct plot_paper p;
+	struct anvil_err err = {0};
+	const char *top = getenv("top_srcdir");
+	char path[1024];
+	snprintf(path, sizeof path, "%s/../shared/paper/tables.tsv", top ? top : ".");
+	FILE *f = fopen(path, "r");
+	if (!f) {
+		skip_test("the paper's table", "no ../shared/paper/tables.tsv");
+	} else {
+		fclose(f);
+		ok(plot_paper_load(&p, path, &err) == ANVIL_OK && p.n == 10 && p.row[0].V0 == 10 &&
+		   p.row[0].h_r0 == 1 && p.row[0].Rf == 0.344 && isinf(p.row[4].h_r0) &&
+		   p.row[9].lambda_star == 0.0025, "the paper's ten cases read");
+	}
+	ok(plot_paper_load(&p, "/nonexistent/tables.tsv", &err) == ANVIL_ENOTFOUND &&
+	   strstr(err.msg, "paper values not found"), "missing table: ANVIL_ENOTFOUND, said");
+	char tmp[] = "/tmp/anvil-test-paper-XXXXXX";
+	int fd = mkstemp(tmp);
+	f = fd >= 0 ? fdopen(fd, "w") : NULL;
+	if (f) {
+		fputs("# c\nV0\th_r0\tRf\tlambda_star\tRf_star\tPmax_kN\tts_us\n"
+		      "10\t1\t0.3\t0.6\t0.3\t6\t46\n10\t2\tx\t0.1\t0.7\t9\t41\n", f);
+		fclose(f);
+	}
+	ok(f && plot_paper_load(&p, tmp, &err) == ANVIL_EPARSE && strstr(err.msg, ":4: Rf") &&
+	   p.n == 0, "a bad number: ANVIL_EPARSE naming file, line and column");
+	if (!strstr(err.msg, ":4: Rf"))
+		diag("got: %s", err.msg);
+	unlink(tmp);
+}
+
+/* The scene named in the subtitle. */
+static void test_subtitle(void)
+{
+	struct anvil_scene sc;
+	struct plot_chart c;
+	anvil_scene_default(&sc);
+	plot_chart_init(&c, PLOT_FORCE);
+	plot_chart_subtitle(&c, &sc, 0, 0);
+	ok(strstr(c.subtitle, sc.title) && strstr(c.subtitle, "r₀ = 4 mm") &&
+	   strstr(c.subtitle, "V₀ = 10 m/s") && strstr(c.subtitle, "h = "),
+	   "subtitle: the scene's title, r0, h and V0");
+	if (!strstr(c.subtitle, "r₀ = 4 mm"))
+		diag("subtitle: %s", c.subtitle);
+	plot_chart_subtitle(&c, &sc, 1, 1);
+	ok(!strstr(c.subtitle, "V₀") && !strstr(c.subtitle, "h = "),
+	   "subtitle: what the chart varies is left out");
 }
 
 static void test_writer_errors(void)
@@ -294,18 +426,46 @@ static void is_quoted(const char *in, const char *want, const char *what)
 }
 
 /* Undo the quoting the way gnuplot reads it; -1 if it is not one
- * well-formed single-quoted string. */
+ * well-formed expression: pieces joined by '.', each "..." of quotes
+ * only, or '...' with text that neither starts with '' nor holds two
+ * doubled quotes in a row (gnuplot misreads both). */
 static int unquote(const char *q, char *out)
 {
-	size_t n = strlen(q);
-	if (n < 2 || q[0] != '\'' || q[n - 1] != '\'')
-		return -1;
-	for (size_t i = 1; i < n - 1; i++) {
-		if ((unsigned char)q[i] < 0x20 || q[i] == 0x7f)
+	for (int first = 1; *q; first = 0) {
+		if (!first && *q++ != '.')
 			return -1;
-		if (q[i] == '\'' && q[++i] != '\'')
-			return -1; /* a lone quote would end the string early */
-		*out++ = q[i];
+		if (*q == '"') {
+			size_t k = strspn(q + 1, "'");
+			if (k == 0 || q[1 + k] != '"')
+				return -1;
+			memset(out, '\'', k);
+			out += k;
+			q += k + 2;
+			continue;
+		}
+		if (*q++ != '\'')
+			return -1;
+		if (*q == '\'' && q[1] == '\'')
+			return -1; /* '' at the start */
+		if (*q == '\'') { /* the empty string, alone */
+			q++;
+			if (!first || *q)
+				return -1;
+			break;
+		}
+		for (;; q++) {
+			if (!*q || (unsigned char)*q < 0x20 || *q == 0x7f)
+				return -1;
+			if (*q == '\'' && q[1] == '\'' && q[2] == '\'' && q[3] == '\'')
+				return -1;
+			if (*q == '\'' && q[1] == '\'')
+				q++; /* a doubled quote: one */
+			else if (*q == '\'') {
+				q++;
+				break;
+			}
+			*out++ = *q;
+		}
 	}
 	*out = '\0';
 	return 0;
@@ -316,7 +476,12 @@ static void test_quote(void)
 	char buf[8];
 	is_quoted("Copper on steel", "'Copper on steel'", "plain text");
 	is_quoted("it's", "'it''s'", "a quote is doubled");
-	is_quoted("''", "''''''", "two quotes");
+	/* gnuplot misreads a leading '' and two doubled quotes in a row (the
+	 * old doubling gave '''''' for two quotes): such runs go in "...". */
+	is_quoted("''", "\"''\"", "two quotes: a double-quoted piece");
+	is_quoted("'x", "\"'\".'x'", "a leading quote");
+	is_quoted("a''b", "'a'.\"''\".'b'", "two quotes inside");
+	is_quoted("''it's'", "\"''\".'it''s'''", "leading quotes, then text with quotes");
 	is_quoted("a\nb\tc\rd\x1b[31m\x7f", "'a b c d [31m '", "control characters become spaces");
 	is_quoted("system(\"touch /tmp/pwned\") `touch /tmp/pwned`",
 		  "'system(\"touch /tmp/pwned\") `touch /tmp/pwned`'",
@@ -337,7 +502,8 @@ static void test_quote(void)
 		int n = t % 39;
 		for (int i = 0; i < n; i++) {
 			seed = seed * 1103515245u + 12345u;
-			in[i] = (char)(1 + (seed >> 16) % 255);
+			/* one byte in four a quote: runs of them, at the start too */
+			in[i] = (seed >> 12) % 4 == 0 ? '\'' : (char)(1 + (seed >> 16) % 255);
 			unsigned char u = (unsigned char)in[i];
 			want[i] = u < 0x20 || u == 0x7f ? ' ' : in[i];
 		}
@@ -365,16 +531,92 @@ static void test_kinds(void)
 	ok(named && plot_kind_name(PLOT_KIND_COUNT) == NULL, "every kind has a name and summary");
 }
 
+/* gnuplot itself reads each quoted string back as the text (when gnuplot
+ * is installed): the test of the quoting that matters. */
+static void test_quote_gnuplot(void)
+{
+	static const char *const texts[] = {"'x", "''", "'", "it's", "''it's'", "a''b",
+		"x'", "`echo no`", "@GPVAL_VERSION", "\\ \" \\n", "µs λ*", "end'''"};
+	const int n = (int)(sizeof texts / sizeof texts[0]);
+	char tmp[] = "/tmp/anvil-test-quote-XXXXXX", cmd[256], line[256];
+	int fd = mkstemp(tmp), same = 1;
+	FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+	if (!f || access("/usr/bin/gnuplot", X_OK) != 0) {
+		if (f)
+			fclose(f);
+		unlink(tmp);
+		skip_test("quotes read back by gnuplot", "no /usr/bin/gnuplot");
+		return;
+	}
+	fputs("set print '-'\n", f);
+	for (int i = 0; i < n; i++) {
+		char q[256];
+		plot_quote(q, sizeof q, texts[i]);
+		fprintf(f, "print %s\n", q);
+	}
+	fclose(f);
+	snprintf(cmd, sizeof cmd, "/usr/bin/gnuplot %s 2>&1", tmp);
+	FILE *p = popen(cmd, "r");
+	for (int i = 0; i < n && same; i++) {
+		int got = p && fgets(line, sizeof line, p) != NULL;
+		if (got)
+			line[strcspn(line, "\n")] = '\0';
+		same = got && strcmp(line, texts[i]) == 0;
+		if (!same)
+			diag("text %d: want [%s], gnuplot printed [%s]", i, texts[i], got ? line : "");
+	}
+	if (p)
+		pclose(p);
+	unlink(tmp);
+	ok(same, "gnuplot reads every quoted text back exactly");
+}
+
+/* The TUI's charts: ticks along the edges, dashes as in the PNGs. */
+static void test_tui_chart(void)
+{
+	double t[12];
+	int n = tui_ticks(0, 1.05, 0, 3, t);
+	ok(n == 3 && t[0] == 0 && t[1] == 0.5 && t[2] == 1, "ticks 0, 0.5, 1 for R_f");
+	n = tui_ticks(0, 47, 0, 6, t);
+	ok(n == 5 && t[1] == 10 && t[4] == 40, "ticks every 10 us up to 47");
+	n = tui_ticks(-10.4, 10.2, 0, 6, t);
+	ok(n == 5 && t[0] == -10 && t[2] == 0 && t[4] == 10, "ticks across zero: -10 .. 10 by 5");
+	n = tui_ticks(0.5, 20, 1, 10, t);
+	ok(n == 6 && t[0] == 0.5 && t[3] == 5 && t[5] == 20, "log ticks 0.5 1 2 5 10 20");
+	n = tui_ticks(1e-3, 1.5, 1, 5, t);
+	ok(n == 4 && t[0] == 1e-3 && t[3] == 1, "too many on a log axis: the decades");
+	ok(tui_ticks(1, 1, 0, 5, t) == 0 && tui_ticks(0, 1, 1, 5, t) == 0 &&
+	   tui_ticks(0, NAN, 0, 5, t) == 0, "empty, non-positive log or undefined range: none");
+	struct tui_canvas c;
+	double x[2] = {0, 1}, y[2] = {0.5, 0.5};
+	int dots[3] = {0};
+	unsigned dash[3] = {TUI_DASH_SOLID, TUI_DASH_DASHED, TUI_DASH_DOTTED};
+	for (int k = 0; k < 3; k++) {
+		if (tui_canvas_init(&c, 8, 1, TUI_CANVAS_BRAILLE))
+			break;
+		tui_canvas_polyline_dash(&c, 0, x, y, 2, dash[k]);
+		for (int i = 0; i < 8; i++)
+			dots[k] += __builtin_popcount(c.bits[i]);
+		tui_canvas_free(&c);
+	}
+	ok(dots[0] == 16 && dots[1] == 12 && dots[2] == 4,
+	   "16 dots of a line: all solid, 12 dashed (6 of 8), 4 dotted (1 of 4)");
+}
+
 int main(void)
 {
-	plan(44);
+	plan(82);
 	test_force();
 	test_rf_thickness();
 	test_rf_lambda();
 	test_accuracy();
-	test_many_series();
+	test_layout();
+	test_paper();
+	test_subtitle();
 	test_writer_errors();
 	test_quote();
+	test_quote_gnuplot();
 	test_kinds();
+	test_tui_chart();
 	return done_testing();
 }

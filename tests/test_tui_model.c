@@ -284,6 +284,10 @@ static void test_keys(void)
 	ok(tui_model_key(m, 'v') == TUI_ACT_REDRAW && m->quantity == TUI_Q_VELOCITY, "v: v(t)");
 	tui_model_key(m, 'v');
 	tui_model_key(m, 'v');
+	ok(m->quantity == TUI_Q_RF_LAMBDA, "v: then R_f against lambda*");
+	tui_model_key(m, 'v');
+	ok(m->quantity == TUI_Q_RF_THICKNESS, "v: then R_f against h");
+	tui_model_key(m, 'v');
 	ok(m->quantity == TUI_Q_FORCE, "v cycles back to P(t)");
 	ok(tui_model_key(m, '?') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_HELP, "? helps");
 	ok(tui_model_key(m, 'q') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_MAIN,
@@ -422,7 +426,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(101);
+	plan(103);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();

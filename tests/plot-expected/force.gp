@@ -6,34 +6,35 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 } else {
 	set terminal png size 800,600 enhanced
 }
-set title 'Contact force, V0 = 10 m/s' noenhanced
-set xlabel 't (µs)'
-set ylabel 'P (kN)'
-set grid
-set key top right box opaque
-set xrange [0:*]
-set yrange [0:*]
-set offsets 0, 0, graph 0.2, 0
+set label 1001 'Contact force P(t), V_0 = 10 m/s' at screen 0.5, screen 0.965 center font ',13'
+set lmargin at screen 0.11
+set rmargin at screen 0.965
+set tmargin at screen 0.9
+set bmargin at screen 0.2233
+set grid lc rgb '#dddddd'
+set tics out nomirror
+set border 3
+set key at screen 0.5, screen 0.008 center bottom horizontal maxcols 5 width -3 Left reverse box lc rgb '#bbbbbb' lw 1 opaque samplen 3.5 spacing 1.1 font ',10'
 $d1 << EOD
+0 0
+11 3.3
+22 4.4
+33 3.3
+44 0
+EOD
+$d2 << EOD
 0 0
 10 3
 20 4
 30 3
 40 0
 EOD
-$d2 << EOD
+$d3 << EOD
 0 0
 8 2.4
 16 3.2
 24 2.4
 32 0
-EOD
-$d3 << EOD
-0 0
-11 3.3
-22 4.4
-33 3.3
-44 0
 EOD
 $d4 << EOD
 0 0
@@ -49,8 +50,20 @@ $d5 << EOD
 36 3.6
 48 0
 EOD
-plot $d1 using 1:2 with lines lw 2 lc rgb '#0072b2' title 'layer, h = 1 r_0', \
-     $d2 using 1:2 with lines lw 2 lc rgb '#d55e00' title 'layer, h = 5 r_0', \
-     $d3 using 1:2 with lines lw 2 lc rgb '#009e73' title 'half-space', \
-     $d4 using 1:2 with lines lw 1.5 dt 2 lc rgb '#0072b2' title 'Zener, h = 1 r_0', \
-     $d5 using 1:2 with lines lw 1 lc rgb '#808080' title 'quasi-static Hertz'
+set xlabel 't (µs)'
+set ylabel 'contact force P (kN)'
+set xrange [0:*]
+set autoscale fix
+set offsets 0, graph 0.03, graph 0.05, graph 0.05
+set yrange [0:*]
+plot $d1 using 1:2 with lines lw 6 dt 1 lc rgb '#8c8c8c' notitle, \
+     $d2 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' notitle, \
+     $d3 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' notitle, \
+     $d4 using 1:2 with lines lw 2 dt (9,5) lc rgb '#0072b2' notitle, \
+     $d5 using 1:2 with lines lw 2.5 dt (1,4) lc rgb '#000000' notitle, \
+     keyentry with lines lw 2 dt 1 lc rgb '#0072b2' title 'h = 1 r_0', \
+     keyentry with lines lw 2 dt 1 lc rgb '#009e73' title 'h = 5 r_0', \
+     keyentry with lines lw 6 dt 1 lc rgb '#8c8c8c' title 'half-space, h = ∞', \
+     keyentry with lines lw 2 dt 1 lc rgb '#000000' title 'layer (transform)', \
+     keyentry with lines lw 2 dt (9,5) lc rgb '#000000' title 'Zener''s plate', \
+     keyentry with lines lw 2.5 dt (1,4) lc rgb '#000000' title 'Hertz, rigid layer'

@@ -583,7 +583,7 @@ static int map_png(const struct fctx *c, const struct fargs *a, const struct map
 	for (size_t i = 0; i < m->nr * m->nz; i++)
 		val[i] = v[i].v[m->q] * fq_scale(m->q);
 	hm.v = val;
-	snprintf(hm.title, sizeof hm.title, "%.*s: %s at t = %.4g us", ANVIL_TITLE_MAX,
+	snprintf(hm.title, sizeof hm.title, "%.*s: %s at t = %.4g µs", ANVIL_TITLE_MAX,
 		 c->sc.title, anvil_fq_title(m->q), m->t * 1e6);
 	snprintf(hm.cblabel, sizeof hm.cblabel, "%s", cb_label[m->q]);
 	plot_heatmap_fronts(&hm, m->t, c->p.r0, c->p.c1, c->p.c2, c->p.cR, c->p.h);
@@ -592,7 +592,14 @@ static int map_png(const struct fctx *c, const struct fargs *a, const struct map
 		o.width = 900;
 		o.height = (int)fmin(1000, fmax(320, 190 + 650 * m->depth / m->rmax));
 	}
-	int code = plot_heatmap_png(&hm, &o, a->png, a->script) ? EXIT_FAIL : EXIT_OK;
+	struct anvil_err err = {0};
+	if (a->png)
+		o.format = plot_format_of(a->png) < 0 ? PLOT_PNG : plot_format_of(a->png);
+	int code = EXIT_OK;
+	if (plot_heatmap_save(&hm, &o, a->png, a->script, &err)) {
+		cli_error("%s", err.msg);
+		code = EXIT_FAIL;
+	}
 	free(val);
 	return code;
 }
@@ -633,8 +640,11 @@ static int map_run(struct fargs *a)
 	int code = fctx_scene(&c, a);
 	if (code < 0)
 		code = map_spec(a, &c, &m);
-	if (code < 0 && a->png && plot_gnuplot_check())
+	struct anvil_err gerr = {0};
+	if (code < 0 && a->png && plot_gnuplot_check(&gerr)) {
+		cli_error("%s", gerr.msg);
 		code = EXIT_FAIL;
+	}
 	/* the TSV goes to standard output unless only the picture was asked for */
 	if (code < 0 && (a->out || !(a->png || a->script)) && cli_out_open(&o, a->out))
 		code = EXIT_FAIL;

@@ -1,14 +1,21 @@
-/* cmd_plot.c: `anvil plot KIND [SCENE] [-s KEY=VALUE]... -o FILE.png`.
+/* cmd_plot.c: `anvil plot KIND [SCENE] [-s KEY=VALUE]... -o FILE.png|svg|pdf`.
  *
  * Runs the models each chart needs (the paper's cases unless a scene fixes
  * them), hands the results to the builders of plot.c and renders the
  * chart with gnuplot.  A model that fails is left out of the chart and
- * reported once on stderr, so the chart shows whatever was computed. */
+ * reported once on stderr, so the chart shows whatever was computed.
+ * The plot library never prints: its messages are printed here. */
+#include <dirent.h>
 #include <getopt.h>
 #include <math.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <unistd.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_interp.h>
 
 #include "params.h"
 #include "zener.h"
@@ -25,8 +32,15 @@
 /* The paper's cases: Tables 2-3 and Figs 2-9. */
 static const double paper_h[] = {1, 2, 5, 10, INFINITY};
 static const double paper_v[] = {10, 100};
-/* Fig 8's axis, 0.5 to 20 r0, with points dense where R_f changes. */
-static const double sweep_h[] = {0.5, 0.75, 1, 1.5, 2, 3, 5, 7.5, 10, 15, 20};
+/* Fig 8's axis, 0.5 to 20 r0: SWEEP_N layer runs log-spaced (a ratio of
+ * 40^(1/16) = 1.26 between neighbours; the responses are cached, keyed by
+ * h/r0), joined by a monotone cubic (Steffen: no overshoot) in log h drawn
+ * with SWEEP_DENSE points.  The markers are the computed values; between
+ * them the curve is an interpolation, measured against runs at the 16
+ * midpoints of the paper's case: within 0.005 in R_f at 10 m/s (the worst
+ * at h = 0.56 r0, where R_f = 0.015 turns up), within 0.001 at 100 m/s. */
+#define SWEEP_N 17
+#define SWEEP_DENSE 160
 #define ZENER_CURVE_N 41
 #define ODE_CURVE_N 45
 /* Zener's ODE is cheap; this tolerance makes its curve exact on a chart. */
@@ -38,7 +52,9 @@ struct plot_args {
 	struct cli_sets sets;
 	const char *out, *script;
 	struct plot_opts opts;
+	const char *paper;     /* --paper FILE: the paper's tables.tsv */
 	int fixed_h, fixed_v;  /* the user chose the thickness / velocity */
+	int sized;             /* --size given */
 };
 
 /* The models run for one chart, and what they gave. */
@@ -53,8 +69,9 @@ struct batch {
 
 static void usage(FILE *f)
 {
-	fputs("usage: anvil plot KIND [SCENE] [-s KEY=VALUE]... -o FILE.png [--size WxH]\n"
-	      "                  [--font NAME,SIZE] [--title TEXT] [--script FILE]\n"
+	fputs("usage: anvil plot KIND [SCENE] [-s KEY=VALUE]... -o FILE.png|.svg|.pdf\n"
+	      "                  [--size WxH] [--font NAME,SIZE] [--title TEXT]\n"
+	      "                  [--script FILE] [--paper TABLES.tsv]\n"
 	      "charts (KIND):\n", f);
 	for (int k = 0; k < PLOT_KIND_COUNT; k++)
 		fprintf(f, "  %-22s %s\n", plot_kind_name(k), plot_kind_summary(k));
@@ -62,7 +79,9 @@ static void usage(FILE *f)
 	      "inf at the scene's V0 (restitution charts: V0 = 10 and 100 m/s).  A SCENE,\n"
 	      "or -s layer.thickness=... / -s impact.velocity=..., fixes what it sets.\n"
 	      "--script FILE also writes the gnuplot script ('-': standard output);\n"
-	      "with --script and no -o only the script is written.\n", f);
+	      "with --script and no -o only the script is written.  The image type\n"
+	      "follows -o's extension.  --paper names the paper's tables.tsv (the\n"
+	      "restitution charts show its printed values).\n", f);
 }
 
 /* ------------------------------------------------------------- options */
@@ -134,9 +153,18 @@ static int check_args(struct plot_args *a)
 		return EXIT_USAGE;
 	}
 	if (a->out && strcmp(a->out, "-") == 0) {
-		cli_error("plot: -o -: a PNG cannot go to standard output; give a file name");
+		cli_error("plot: -o -: an image cannot go to standard output; give a file name");
 		return EXIT_USAGE;
 	}
+	if (a->out && plot_format_of(a->out) < 0) {
+		cli_error("plot: -o %s: unknown image type; name it .png, .svg or .pdf", a->out);
+		return EXIT_USAGE;
+	}
+	if (a->out)
+		a->opts.format = (enum plot_format)plot_format_of(a->out);
+	/* Three stacked panels need the height of three charts, nearly. */
+	if (a->kind == PLOT_HISTORY && !a->sized)
+		a->opts.height = 1000;
 	a->fixed_h = a->scene || sets_has(&a->sets, "layer.thickness");
 	a->fixed_v = a->scene || sets_has(&a->sets, "impact.velocity");
 	return -1;
@@ -152,7 +180,7 @@ static int parse_option(struct plot_args *a, int c, char **argv)
 		return cli_sets_add(&a->sets, optarg) ? EXIT_FAIL : -1;
 	case 'S':
 		if (!parse_size(optarg, &a->opts))
-			return -1;
+			return a->sized = 1, -1;
 		cli_error("plot: --size '%s': expected WIDTHxHEIGHT in pixels, %d to %d, e.g. 800x600",
 			  optarg, SIZE_MIN, SIZE_MAX_PX);
 		return EXIT_USAGE;
@@ -164,6 +192,9 @@ static int parse_option(struct plot_args *a, int c, char **argv)
 		return -1;
 	case 'P':
 		a->script = optarg;
+		return -1;
+	case 'R':
+		a->paper = optarg;
 		return -1;
 	case 'h':
 		usage(stdout);
@@ -188,6 +219,7 @@ static int parse_args(struct plot_args *a, int argc, char **argv)
 		{"font", required_argument, NULL, 'F'},
 		{"title", required_argument, NULL, 'T'},
 		{"script", required_argument, NULL, 'P'},
+		{"paper", required_argument, NULL, 'R'},
 		{"help", no_argument, NULL, 'h'},
 		{NULL, 0, NULL, 0},
 	};
@@ -233,6 +265,13 @@ static double case_lambda(const struct anvil_scene *sc)
 	return anvil_params_from_scene(&p, sc, NULL) ? NAN : p.lambda_star;
 }
 
+/* The solver's statuses whose result holds usable values: success and the
+ * positive warnings (ANVIL_WTOL); failures are negative. */
+static int usable(int st)
+{
+	return st >= 0;
+}
+
 /* Report a model's trouble once per chart, not once per case. */
 static void batch_warn(struct batch *b, enum anvil_model m, int st,
 		       const struct anvil_err *err)
@@ -241,18 +280,19 @@ static void batch_warn(struct batch *b, enum anvil_model m, int st,
 		return;
 	b->warned |= 1u << m;
 	const char *why = err->msg[0] ? err->msg : anvil_strerror(st);
-	if (st > 0 && err->msg[0])
+	if (usable(st) && err->msg[0])
 		cli_error("plot: %s (drawn with its best values)", why);
-	else if (st > 0)
+	else if (usable(st))
 		cli_error("plot: %s model: %s (drawn with its best values)", anvil_model_name(m), why);
 	else
 		cli_error("plot: %s model left out of the chart: %s", anvil_model_name(m), why);
 }
 
-/* Run model m for sc if the scene asks for it; record the run.  Only
- * what makes the chart impossible (memory, cancel) is returned. */
-static int batch_run(struct batch *b, const struct anvil_scene *sc,
-		     enum anvil_model m, size_t nhist)
+/* Run model m for sc with solver s if the scene asks for it; record the
+ * run.  Only what makes the chart impossible (memory, cancel) is
+ * returned.  Every solver call of the plot command goes through here. */
+static int batch_run_with(struct batch *b, struct anvil_solver *s,
+			  const struct anvil_scene *sc, enum anvil_model m, size_t nhist)
 {
 	struct anvil_err err = {0};
 	if (!(sc->models & (1u << m)))
@@ -262,9 +302,9 @@ static int batch_run(struct batch *b, const struct anvil_scene *sc,
 		return ANVIL_EINVAL;
 	}
 	struct anvil_result *r = &b->res[b->n];
-	int st = cli_run_model(b->solver, sc, m, nhist, r, &err);
+	int st = cli_run_model(s, sc, m, nhist, r, &err);
 	cli_progress_done(&b->progress);
-	b->runs[b->n++] = (struct plot_run){st < 0 ? NULL : r, m,
+	b->runs[b->n++] = (struct plot_run){usable(st) ? r : NULL, m,
 		anvil_scene_h(sc) / sc->radius, sc->velocity, case_lambda(sc)};
 	if (st == ANVIL_ENOMEM || st == ANVIL_ECANCEL) {
 		cli_error("plot: %s", anvil_strerror(st));
@@ -273,6 +313,12 @@ static int batch_run(struct batch *b, const struct anvil_scene *sc,
 	if (st)
 		batch_warn(b, m, st, &err);
 	return ANVIL_OK;
+}
+
+static int batch_run(struct batch *b, const struct anvil_scene *sc,
+		     enum anvil_model m, size_t nhist)
+{
+	return batch_run_with(b, b->solver, sc, m, nhist);
 }
 
 static struct batch *batch_alloc(void)
@@ -359,19 +405,20 @@ static int run_rf_case(struct batch *b, const struct anvil_scene *base,
 	int st = set_case(&sc, h, V0);
 	if (st)
 		return st;
+	sc.models |= 1u << ANVIL_MODEL_LAYER | 1u << ANVIL_MODEL_HALFSPACE;
 	return batch_run(b, &sc, isfinite(anvil_scene_h(&sc)) ? ANVIL_MODEL_LAYER
 			 : ANVIL_MODEL_HALFSPACE, 0);
 }
 
-/* Zener's R*_f (eq. 54) against h/r0 at one velocity. */
-static int zener_curve(const struct anvil_scene *base, double V0, double *x,
-		       double *y, struct plot_curve *c)
+/* Zener's R*_f (eq. 54) against h/r0 at one velocity, over [x0, x1]. */
+static int zener_curve(const struct anvil_scene *base, double V0, double x0, double x1,
+		       double *x, double *y, struct plot_curve *c)
 {
 	struct anvil_scene sc = *base;
 	int st = ANVIL_OK;
 	for (int i = 0; i < ZENER_CURVE_N && !st; i++) {
 		struct anvil_params p;
-		x[i] = 0.5 * pow(40.0, (double)i / (ZENER_CURVE_N - 1)); /* 0.5 .. 20 */
+		x[i] = x0 * pow(x1 / x0, (double)i / (ZENER_CURVE_N - 1));
 		if (!(st = set_case(&sc, x[i], V0)))
 			st = anvil_params_from_scene(&p, &sc, NULL);
 		y[i] = st ? NAN : p.Rf_star;
@@ -380,31 +427,103 @@ static int zener_curve(const struct anvil_scene *base, double V0, double *x,
 	return st;
 }
 
+/* The layer's R_f at velocity V0 through the computed runs: a monotone
+ * cubic (Steffen: no overshoot between points) in log h, SWEEP_DENSE
+ * points over the computed span.  n = 0 when fewer than 3 points. */
+static void layer_curve(const struct batch *b, double V0, double *x, double *y,
+			struct plot_curve *c)
+{
+	double lh[BATCH_MAX], rf[BATCH_MAX];
+	size_t m = 0;
+	*c = (struct plot_curve){V0, 0, x, y};
+	for (int i = 0; i < b->n; i++) {
+		const struct plot_run *r = &b->runs[i];
+		if (!r->r || r->model != ANVIL_MODEL_LAYER || r->V0 != V0)
+			continue;
+		size_t j = 0;
+		while (j < m && lh[j] < log(r->h_r0))
+			j++;
+		if (j < m && lh[j] == log(r->h_r0))
+			continue; /* the scene's own h on the sweep: once */
+		memmove(lh + j + 1, lh + j, (m - j) * sizeof *lh);
+		memmove(rf + j + 1, rf + j, (m - j) * sizeof *rf);
+		lh[j] = log(r->h_r0);
+		rf[j] = r->r->Rf;
+		m++;
+	}
+	gsl_interp *in = m >= 3 ? gsl_interp_alloc(gsl_interp_steffen, m) : NULL;
+	if (!in || gsl_interp_init(in, lh, rf, m)) {
+		gsl_interp_free(in);
+		return;
+	}
+	for (int i = 0; i < SWEEP_DENSE; i++) {
+		/* fmin: rounding must not step past the last point (GSL_EDOM) */
+		double t = fmin(lh[0] + (lh[m - 1] - lh[0]) * i / (SWEEP_DENSE - 1), lh[m - 1]);
+		x[i] = exp(t);
+		y[i] = gsl_interp_eval(in, lh, rf, t, NULL);
+	}
+	c->n = SWEEP_DENSE;
+	gsl_interp_free(in);
+}
+
+/* The paper's printed values, or NULL after saying they are missing. */
+static const struct plot_paper *paper_values(const struct plot_args *a,
+					     struct plot_paper *p, struct plot_chart *c)
+{
+	struct anvil_err err = {0};
+	if (!plot_paper_load(p, a->paper, &err))
+		return p;
+	cli_error("plot: %s; drawn without them", err.msg);
+	snprintf(c->footnote, sizeof c->footnote, "paper values not found");
+	return NULL;
+}
+
 static int chart_rf_thickness(struct plot_chart *c, struct batch *b,
 			      const struct anvil_scene *base, const struct plot_args *a)
 {
 	const double *vs;
 	int nv = case_list(a->fixed_v, paper_v, NELEM(paper_v), &vs), st = ANVIL_OK;
 	double zx[NELEM(paper_v)][ZENER_CURVE_N], zy[NELEM(paper_v)][ZENER_CURVE_N];
-	struct plot_curve zc[NELEM(paper_v)];
+	double lx[NELEM(paper_v)][SWEEP_DENSE], ly[NELEM(paper_v)][SWEEP_DENSE];
+	struct plot_curve zc[NELEM(paper_v)], lc[NELEM(paper_v)];
+	struct plot_paper paper;
+	const struct plot_paper *p = paper_values(a, &paper, c);
+	/* A thickness the user fixed is marked, and computed exactly. */
+	double mark = a->fixed_h ? anvil_scene_h(base) / base->radius : NAN;
+	double x0 = isfinite(mark) ? fmin(0.5, mark / 1.5) : 0.5;
+	double x1 = isfinite(mark) ? fmax(20, mark * 1.5) : 20;
 	for (int v = 0; v < nv && !st; v++) {
-		for (int i = 0; i < NELEM(sweep_h) && !st; i++)
-			st = run_rf_case(b, base, sweep_h[i], vs[v]);
+		for (int i = 0; i < SWEEP_N && !st; i++)
+			st = run_rf_case(b, base, 0.5 * pow(40.0, (double)i / (SWEEP_N - 1)), vs[v]);
+		if (!st && isfinite(mark))
+			st = run_rf_case(b, base, mark, vs[v]);
 		if (!st)
 			st = run_rf_case(b, base, INFINITY, vs[v]);
 		if (!st)
-			st = zener_curve(base, vs[v], zx[v], zy[v], &zc[v]);
+			st = zener_curve(base, vs[v], x0, x1, zx[v], zy[v], &zc[v]);
+		if (!st)
+			layer_curve(b, b->runs[b->n - 1].V0, lx[v], ly[v], &lc[v]);
 	}
-	return st ? st : built(c, plot_chart_rf_thickness(c, b->runs, b->n, zc, nv));
+	if (st)
+		return st;
+	/* The builder starts a new chart: keep what paper_values said. */
+	char note[PLOT_TITLE_MAX];
+	snprintf(note, sizeof note, "%s", c->footnote);
+	st = built(c, plot_chart_rf_thickness(c, b->runs, b->n, lc, nv, zc, nv, p,
+					      base->radius, mark));
+	if (!st && note[0])
+		snprintf(c->footnote, sizeof c->footnote, "%s", note);
+	return st;
 }
 
-/* Zener's ODE R_f over [0, lmax]. */
-static int ode_curve(double lmax, double *x, double *y, struct plot_curve *c)
+/* Zener's ODE R_f over [0, lmax], log-spaced from lmin when lmin > 0. */
+static int ode_curve(double lmin, double lmax, double *x, double *y, struct plot_curve *c)
 {
 	for (int i = 0; i < ODE_CURVE_N; i++) {
 		struct anvil_zener_sol sol;
 		struct anvil_err err = {0};
-		x[i] = lmax * i / (ODE_CURVE_N - 1);
+		double f = (double)i / (ODE_CURVE_N - 1);
+		x[i] = lmin > 0 ? lmin * pow(lmax / lmin, f) : lmax * f;
 		int st = anvil_zener_solve(x[i], ODE_TOL, &sol, &err);
 		if (st) {
 			cli_error("plot: Zener's ODE at lambda* = %g: %s", x[i],
@@ -423,18 +542,73 @@ static int chart_rf_lambda(struct plot_chart *c, struct batch *b,
 	const double *hs, *vs;
 	int nh = case_list(a->fixed_h, paper_h, NELEM(paper_h), &hs);
 	int nv = case_list(a->fixed_v, paper_v, NELEM(paper_v), &vs), st = ANVIL_OK;
-	double x[ODE_CURVE_N], y[ODE_CURVE_N], lmax = 1.1;
+	double x[ODE_CURVE_N], y[ODE_CURVE_N], lmin = INFINITY, lmax = 1.1;
 	struct plot_curve ode;
+	struct plot_paper paper;
+	const struct plot_paper *p = paper_values(a, &paper, c);
 	for (int v = 0; v < nv && !st; v++)
 		for (int i = 0; i < nh && !st; i++)
 			st = run_rf_case(b, base, hs[i], vs[v]);
-	/* The ODE curve spans every case, as the fit line does. */
-	for (int i = 0; i < b->n; i++)
-		if (1.05 * b->runs[i].lambda_star > lmax)
-			lmax = 1.05 * b->runs[i].lambda_star;
+	/* The ODE curve spans every case and the paper's, as the fit does. */
+	for (int i = 0; i < b->n; i++) {
+		if (b->runs[i].lambda_star > 0)
+			lmin = fmin(lmin, b->runs[i].lambda_star);
+		lmax = fmax(lmax, 1.1 * b->runs[i].lambda_star);
+	}
+	for (int i = 0; p && i < p->n; i++)
+		if (p->row[i].lambda_star > 0)
+			lmin = fmin(lmin, p->row[i].lambda_star);
+	/* log axis (plot_rf.c): from the decade below the smallest lambda* */
+	lmin = isfinite(lmin) && lmax / lmin > 10 ? pow(10, floor(log10(lmin))) : 0;
 	if (!st)
-		st = ode_curve(lmax, x, y, &ode);
-	return st ? st : built(c, plot_chart_rf_lambda(c, b->runs, b->n, &ode));
+		st = ode_curve(lmin, lmax, x, y, &ode);
+	if (st)
+		return st;
+	char note[PLOT_TITLE_MAX];
+	snprintf(note, sizeof note, "%s", c->footnote);
+	st = built(c, plot_chart_rf_lambda(c, b->runs, b->n, &ode, p));
+	if (!st && note[0])
+		snprintf(c->footnote, sizeof c->footnote, "%s", note);
+	return st;
+}
+
+/* Remove the files of a private cache directory, then the directory. */
+static void remove_dir(const char *dir)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	char path[4096];
+	while (d && (e = readdir(d)))
+		if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") &&
+		    snprintf(path, sizeof path, "%s/%s", dir, e->d_name) < (int)sizeof path)
+			unlink(path);
+	if (d)
+		closedir(d);
+	rmdir(dir);
+}
+
+/* One level of the accuracy chart, cold: a new solver with a private,
+ * empty cache directory, so the time is the work the level costs. */
+static int accuracy_level(struct batch *b, const struct anvil_scene *sc, enum anvil_model m)
+{
+	char dir[] = "/tmp/anvil-plot-cold-XXXXXX";
+	struct anvil_err err = {0};
+	struct anvil_solver *s = anvil_solver_alloc();
+	int st = s ? ANVIL_OK : ANVIL_ENOMEM;
+	if (!st && !mkdtemp(dir)) {
+		cli_error("plot: cannot make a temporary cache directory: %s", strerror(errno));
+		st = ANVIL_EIO;
+	}
+	if (!st && (st = anvil_solver_set_cache_dir(s, dir, &err)))
+		cli_error("plot: %s", err.msg);
+	if (!st) {
+		anvil_solver_set_progress(s, cli_progress_cb, &b->progress);
+		st = batch_run_with(b, s, sc, m, 0);
+	}
+	if (s && dir[sizeof dir - 2] != 'X')
+		remove_dir(dir);
+	anvil_solver_free(s);
+	return st;
 }
 
 static int chart_accuracy(struct plot_chart *c, struct batch *b,
@@ -450,7 +624,7 @@ static int chart_accuracy(struct plot_chart *c, struct batch *b,
 		st = anvil_scene_set(&sc, "solver.accuracy", anvil_accuracy_name(i),
 				     "plot", 0, &err);
 		if (!st)
-			st = batch_run(b, &sc, m, 0);
+			st = accuracy_level(b, &sc, m);
 		else
 			cli_error("plot: %s", err.msg);
 	}
@@ -459,7 +633,7 @@ static int chart_accuracy(struct plot_chart *c, struct batch *b,
 	st = built(c, plot_chart_accuracy(c, b->runs));
 	if (!st)
 		snprintf(c->title, sizeof c->title,
-			 "%s model: error against wall time, accuracy draft to reference",
+			 "Error against cold wall time, accuracy draft to reference (%s model)",
 			 anvil_model_name(m));
 	return st;
 }
@@ -479,30 +653,63 @@ static int build_chart(struct plot_chart *c, struct batch *b,
 		return chart_accuracy(c, b, sc);
 	default:
 		st = runs_history(b, sc, a);
-		return st ? st : built(c, plot_chart_history(c, a->kind, b->runs, b->n,
-							    !a->fixed_h));
+		return st ? st : built(c, plot_chart_history(c, a->kind, b->runs, b->n));
 	}
+}
+
+/* A signal during rendering: plot_render ends gnuplot and removes its
+ * temporary file; the signal is then raised again with its default
+ * action, so the exit status tells what happened. */
+static volatile sig_atomic_t render_signal;
+
+static void on_render_signal(int sig)
+{
+	render_signal = sig;
+}
+
+static int render(const struct plot_chart *c, struct plot_args *a)
+{
+	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+	struct sigaction sa = {.sa_handler = on_render_signal}, old[3];
+	struct anvil_err err = {0};
+	sigemptyset(&sa.sa_mask);
+	for (int i = 0; i < 3; i++)
+		sigaction(sigs[i], &sa, &old[i]);
+	a->opts.cancel = &render_signal;
+	int st = plot_save(c, &a->opts, a->out, a->script, &err);
+	for (int i = 0; i < 3; i++)
+		sigaction(sigs[i], &old[i], NULL);
+	if (st)
+		cli_error("%s", err.msg);
+	if (st == ANVIL_ECANCEL && render_signal)
+		raise(render_signal);
+	return st ? EXIT_FAIL : EXIT_OK;
 }
 
 static int plot_scene(struct plot_args *a)
 {
 	struct anvil_scene sc;
 	struct plot_chart c;
+	struct anvil_err err = {0};
 	struct batch *b;
 	int st = cli_scene(&sc, a->scene, a->sets.v, a->sets.n), code = EXIT_FAIL;
 	if (st)
 		return cli_exit_code(st);
 	/* Fail on a missing gnuplot before minutes of layer runs. */
-	if (a->out && plot_gnuplot_check())
+	if (a->out && plot_gnuplot_check(&err)) {
+		cli_error("%s", err.msg);
 		return EXIT_FAIL;
+	}
 	if (!(b = batch_alloc()))
 		return EXIT_FAIL;
 	st = build_chart(&c, b, &sc, a);
 	if (!st) {
-		/* A scene's own title goes in front of the chart's. */
-		if (a->scene)
-			plot_chart_scene_title(&c, sc.title);
-		code = plot_png(&c, &a->opts, a->out, a->script);
+		int vary_h = a->kind == PLOT_RESTITUTION_THICKNESS ||
+			     (!a->fixed_h && a->kind != PLOT_ACCURACY);
+		int vary_v = !a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
+					     a->kind == PLOT_RESTITUTION_LAMBDA);
+		plot_chart_subtitle(&c, &sc, vary_h, vary_v);
+		code = render(&c, a);
 	}
 	plot_chart_free(&c);
 	batch_free(b);

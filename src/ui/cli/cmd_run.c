@@ -275,8 +275,11 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 		   const struct anvil_result *res, int n)
 {
 	char paths[4096] = "";
-	if (plot_run_charts(o->png, sc, res, n, paths, sizeof paths))
+	struct anvil_err err = {0};
+	if (plot_run_charts(o->png, sc, res, n, paths, sizeof paths, &err)) {
+		cli_error("%s", err.msg);
 		return EXIT_FAIL;
+	}
 	if (!o->quiet && paths[0])
 		fprintf(stderr, "%s%s", paths, paths[strlen(paths) - 1] == '\n' ? "" : "\n");
 	return EXIT_OK;

@@ -7,23 +7,47 @@
  * A chart is built in three steps:
  *   1. the caller runs the models and describes each run (struct plot_run);
  *   2. a builder (plot_chart_history, ..._rf_thickness, ..._rf_lambda,
- *      ..._accuracy) turns the runs into series of points with labels,
- *      line styles and axis units (us, kN, m/s, um);
- *   3. plot_write() prints the gnuplot script; plot_png() pipes it to
- *      gnuplot and writes the PNG atomically.
+ *      ..._accuracy) turns the runs into series of points with a style
+ *      (below), a key and axis units (µs, kN, m/s, µm);
+ *   3. plot_write() prints the gnuplot script; plot_save() pipes it to
+ *      gnuplot and writes the PNG, SVG or PDF atomically.
  *
- * Text from users (titles, font names) never reaches gnuplot as code: it
- * is quoted with plot_quote() and drawn `noenhanced`.  Output file names
- * never reach gnuplot at all: gnuplot writes the PNG to its standard
- * output, which anvil points at a temporary file renamed into place. */
+ * One visual language for every chart (PNG and TUI):
+ *   colour      = the layer thickness h/r0, by value (plot_h_colour): the
+ *                 same thickness has the same colour in every chart; the
+ *                 half-space (h = inf) is black (its band grey).  Okabe-Ito colours, safe
+ *                 with the common colour blindnesses.
+ *   line style  = the model: the transform models solid (the half-space
+ *                 a wide band drawn first, so that a thick layer lying on
+ *                 it stays visible), Zener's plate dashed, Zener's ODE
+ *                 dash-dot, rigid quasi-static Hertz dotted black.
+ *   marker      = the velocity: diamonds at the first (10 m/s), circles at
+ *                 the second (100 m/s), as in the paper's Fig. 9; filled
+ *                 for anvil's values, open for the paper's printed values.
+ * Where the thickness is the x axis (R_f against h) the curves are black
+ * and only the marked thickness and the paper's points carry its colour.
+ * So the charts stay legible in greyscale: style and marker alone tell the
+ * models and velocities apart, labels and the key the thicknesses.
+ *
+ * Text: anvil's own labels use gnuplot's enhanced mode (V_0, R_f, λ^*).
+ * Text from users (titles, font names, scene and material names) never
+ * reaches gnuplot as code: it is quoted with plot_quote() and drawn
+ * `noenhanced`.  Output file names never reach gnuplot at all: gnuplot
+ * writes the image to its standard output, which anvil points at a
+ * temporary file renamed into place.
+ *
+ * Errors: every function returns a status and leaves a one-line message in
+ * a struct anvil_err; nothing here prints (the callers decide). */
 #ifndef ANVIL_UI_PLOT_H
 #define ANVIL_UI_PLOT_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
 #include "result.h"
 #include "scene.h"
+#include "status.h"
 
 /* The charts `anvil plot KIND` draws (the paper's figures in brackets). */
 enum plot_kind {
@@ -33,6 +57,7 @@ enum plot_kind {
 	PLOT_RESTITUTION_THICKNESS, /* R_f against h/r0, Fig 8 */
 	PLOT_RESTITUTION_LAMBDA,    /* R_f against lambda*, Fig 9 */
 	PLOT_ACCURACY,              /* error against wall time per level */
+	PLOT_HISTORY,               /* P, v and w stacked, one time axis */
 	PLOT_KIND_COUNT
 };
 
@@ -46,53 +71,101 @@ int plot_kind_parse(const char *name);
  * when none is close. */
 const char *plot_kind_suggest(const char *name);
 
-/* Quote src as a gnuplot single-quoted string, quotes included, into dst
- * (size bytes, always terminated when size > 0).  Inside gnuplot single
- * quotes nothing is interpreted except '' (a literal quote), so every '
- * is doubled; control characters (newline, tab, ESC, DEL, ...) cannot be
- * kept on one script line and become spaces.  Returns the length of the
- * full quoted string, like snprintf: >= size means it was cut short. */
+/* The image formats, chosen by the output file's extension. */
+enum plot_format { PLOT_PNG, PLOT_SVG, PLOT_PDF, PLOT_FORMAT_COUNT };
+/* The format of path by its extension (.png, .svg, .pdf, any case), or -1
+ * for another or no extension. */
+int plot_format_of(const char *path);
+
+/* Quote src as a gnuplot string expression into dst (size bytes, always
+ * terminated when size > 0).  Inside gnuplot single quotes nothing is
+ * interpreted except '' (a literal quote), so a lone ' is doubled; but
+ * gnuplot misreads '' at the start of a string and two doubled quotes in
+ * a row, so a run of quotes, or a quote that would start a string, goes
+ * in a double-quoted piece of quotes alone, concatenated:
+ * "'".'x' for 'x, 'a'."''".'b' for a''b.  Control characters (newline,
+ * tab, ESC, DEL, ...) cannot be kept on one script line and become
+ * spaces.  Returns the length of the full expression, like snprintf:
+ * >= size means it was cut short. */
 size_t plot_quote(char *dst, size_t size, const char *src);
 
-/* How a series is drawn: an index into a table of gnuplot styles. */
+/* How a series is drawn; the colour and marker come with it. */
 enum plot_mark {
 	PLOT_LINE,        /* solid line: the transform models */
-	PLOT_DASH,        /* dashed line: Zener */
-	PLOT_THIN,        /* thin line: quasi-static Hertz, Zener's ODE */
-	PLOT_DOT,         /* dotted line: a limit (the half-space's R_f) */
-	PLOT_DIAMONDS,    /* points: Fig 9, V0 = 10 m/s */
-	PLOT_CIRCLES,     /* points: Fig 9, V0 = 100 m/s */
-	PLOT_LINESPOINTS, /* points joined by lines */
+	PLOT_BAND,        /* wide solid line drawn under the others: half-space */
+	PLOT_DASH,        /* dashed line: Zener's plate */
+	PLOT_DASHDOT,     /* dash-dot line: Zener's ODE */
+	PLOT_DOTS,        /* dotted line: quasi-static Hertz, a level */
+	PLOT_THIN,        /* thin solid line: a target, a fit */
+	PLOT_POINTS,      /* filled markers: anvil's values */
+	PLOT_OPEN,        /* open markers: the paper's printed values */
+	PLOT_LINESPOINTS, /* filled markers joined by thin lines */
 	PLOT_MARK_COUNT
 };
 
+/* Markers: the velocity's (diamond, circle) and more for other uses. */
+enum plot_point { PLOT_PT_DIAMOND, PLOT_PT_CIRCLE, PLOT_PT_SQUARE,
+		  PLOT_PT_TRIANGLE, PLOT_PT_COUNT };
+
 #define PLOT_LABEL_MAX 96
 #define PLOT_TITLE_MAX 256
-#define PLOT_MAX_SERIES 24
-#define PLOT_GREY (-1) /* colour index of reference curves */
+#define PLOT_MAX_SERIES 32
+#define PLOT_MAX_KEYS 12
+#define PLOT_MAX_NOTES 16
+/* Colours besides the palette's indices 0 .. 5. */
+#define PLOT_BLACK (-1)
+#define PLOT_GREY (-2)
+
+/* The colour of thickness h/r0: 0 blue (h <= 1.4 r0), 1 vermillion
+ * (<= 3.2), 2 bluish green (<= 7), 3 reddish purple (finite), PLOT_BLACK
+ * for the half-space.  The bins hold the paper's 1, 2, 5, 10 r0. */
+int plot_h_colour(double h_r0);
+/* The marker of velocity V0: diamond at or below 30 m/s, circle above. */
+enum plot_point plot_v_point(double V0);
+/* The palette's colour as "#rrggbb" (for the TUI's nearest colour). */
+const char *plot_colour_rgb(int colour);
 
 struct plot_series {
-	char label[PLOT_LABEL_MAX]; /* legend text: built by anvil, enhanced */
+	char label[PLOT_LABEL_MAX]; /* key text (anvil's own, enhanced), or
+				       "": not in the key */
 	enum plot_mark mark;
-	int colour;                 /* palette index, or PLOT_GREY */
+	int colour;                 /* palette index, PLOT_BLACK, PLOT_GREY */
+	enum plot_point point;      /* for the marker styles */
+	int panel;                  /* PLOT_HISTORY: 0 P, 1 v, 2 w */
 	size_t n;
 	const double *x, *y;        /* n points, SI; borrowed or in own */
 	double xs, ys;              /* factors to the axis units (1e6: s -> us) */
 	double *own;                /* storage this series owns, or NULL */
 };
 
-/* A word written beside a point (the accuracy levels' names). */
-#define PLOT_MAX_NOTES 8
+/* A key entry with no data: the key tells colours and styles apart once,
+ * not once per curve. */
+struct plot_key {
+	char label[PLOT_LABEL_MAX]; /* anvil's own text, enhanced */
+	enum plot_mark mark;
+	int colour;
+	enum plot_point point;
+};
+
+/* A word written beside a point (levels' names, thicknesses). */
 struct plot_note {
 	double x, y;   /* in axis units */
-	char text[24]; /* anvil's own text */
+	char text[40]; /* anvil's own text, enhanced */
+	int colour;
+	int panel;
+	int below;     /* 1: written under the point, else above it */
+	int left;      /* 1: written left of the point, else right of it */
 };
 
 struct plot_chart {
 	enum plot_kind kind;
-	char title[PLOT_TITLE_MAX]; /* default title, drawn noenhanced */
-	int nseries, nnotes;
+	char title[PLOT_TITLE_MAX];    /* anvil's own text, enhanced */
+	char subtitle[PLOT_TITLE_MAX]; /* the scene: user text, noenhanced */
+	char footnote[PLOT_TITLE_MAX]; /* under the plot, anvil's, enhanced */
+	char setup[512];               /* extra gnuplot commands (ranges) */
+	int nseries, nkeys, nnotes;
 	struct plot_series s[PLOT_MAX_SERIES];
+	struct plot_key keys[PLOT_MAX_KEYS];
 	struct plot_note notes[PLOT_MAX_NOTES];
 };
 
@@ -101,17 +174,26 @@ struct plot_chart {
 void plot_chart_init(struct plot_chart *c, enum plot_kind kind);
 void plot_chart_free(struct plot_chart *c);
 
-/* Title the chart "SCENE TITLE: what it shows" (the scene's title says
- * the rest); an empty or NULL scene_title keeps the chart's own title. */
-void plot_chart_scene_title(struct plot_chart *c, const char *scene_title);
+/* Name the scene in the subtitle: "TITLE: copper impactor, m = 12.2 g,
+ * r₀ = 4 mm, on a steel layer, h = 8 mm = 2 r₀, V₀ = 10 m/s"; vary_h and
+ * vary_v replace h and V0 by what the chart varies. */
+void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
+			 int vary_h, int vary_v);
 
 /* Add a series of n points.  With copy = 0 x and y are borrowed (they must
  * outlive the chart); with copy = 1 they are copied into storage the
  * series owns.  Returns ANVIL_OK, ANVIL_ENOMEM, or ANVIL_EINVAL when the
- * chart is full. */
+ * chart is full.  The point and panel are set afterwards if needed. */
 int plot_chart_add(struct plot_chart *c, const char *label,
 		   enum plot_mark mark, int colour, const double *x,
 		   const double *y, size_t n, double xs, double ys, int copy);
+/* A key entry (ignored when the key is full or it is already there). */
+void plot_chart_key(struct plot_chart *c, const char *label,
+		    enum plot_mark mark, int colour, enum plot_point point);
+/* A note at (x, y) in axis units; NULL (nothing added) when the chart's
+ * notes are full. */
+struct plot_note *plot_chart_note(struct plot_chart *c, double x, double y, int colour,
+				  const char *text);
 
 /* One model run of one case, as the charts see it. */
 struct plot_run {
@@ -123,12 +205,29 @@ struct plot_run {
 };
 
 /* A curve computed outside the chart (Zener's R*_f against h/r0 at one
- * velocity, Zener's ODE R_f against lambda*). */
+ * velocity, Zener's ODE R_f against lambda*, the layer's R_f against
+ * h/r0). */
 struct plot_curve {
 	double V0;          /* the velocity it belongs to, or 0 */
 	size_t n;
 	const double *x, *y;
 };
+
+/* The paper's printed values (Tables 2-3): one row per case. */
+#define PLOT_PAPER_MAX 16
+struct plot_paper {
+	int n;
+	struct plot_paper_row {
+		double V0, h_r0, Rf, lambda_star, Rf_star, Pmax_kN, ts_us;
+	} row[PLOT_PAPER_MAX];
+};
+/* Read tables.tsv (tab separated, '#' comments, a header naming the
+ * columns V0 h_r0 Rf lambda_star Rf_star Pmax_kN ts_us).  ANVIL_ENOTFOUND
+ * when the file is missing, ANVIL_EPARSE (file, line, column named) for a
+ * bad one.  Path NULL: $ANVIL_PAPER_TABLES, else
+ * shared/paper/tables.tsv beside the anvil binary's folder's parent
+ * (../shared of a worktree). */
+int plot_paper_load(struct plot_paper *p, const char *path, struct anvil_err *err);
 
 /* The builders.  Each starts from plot_chart_init, adds one series per
  * run (or group of runs) that has something to draw, and skips runs with
@@ -137,41 +236,54 @@ struct plot_curve {
  * ANVIL_ENOMEM, or ANVIL_EINVAL when the chart has no series at all. */
 
 /* P(t), v(t) or w(t) (kind PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION) of
- * every run with a history.  by_thickness = 1 (the paper's figures):
- * one colour per thickness, labels "layer, h = 2 r_0", Zener dashed in
- * its thickness's colour, Hertz thin grey; by_thickness = 0 (one scene):
- * one colour per model, labels the model names. */
+ * every run with a history, or all three stacked (PLOT_HISTORY).  Colour
+ * by thickness, style by model (see the top); Hertz's w = 0 is left out
+ * and said in the footnote. */
 int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
-		       const struct plot_run *runs, int n, int by_thickness);
+		       const struct plot_run *runs, int n);
 
-/* R_f against h/r0 (Fig 8): per velocity, the layer runs as points joined
- * by lines, the half-space run as a dotted level, and the Zener curve
- * (R*_f of eq. (54)) of the same velocity dashed. */
+/* R_f against h/r0 (Fig 8): per velocity, layer (a curve through the
+ * computed runs, each run a marker), the half-space as a dotted level,
+ * Zener's R*_f (eq. 54) dashed; the paper's layer values (paper may be
+ * NULL; only the rows of the velocities drawn) as open markers;
+ * mark_h_r0 (NaN: none) marked by a vertical line in its colour.  r0 (m) labels the second axis in mm. */
 int plot_chart_rf_thickness(struct plot_chart *c, const struct plot_run *runs,
-			    int n, const struct plot_curve *zener, int nzener);
+			    int n, const struct plot_curve *layer, int nlayer,
+			    const struct plot_curve *zener, int nzener,
+			    const struct plot_paper *paper, double r0,
+			    double mark_h_r0);
 
-/* R_f against lambda* (Fig 9): Zener's fit exp(-1.7191 lambda*) as a
- * line, Zener's ODE (may be NULL) as a thin line, and the runs as points,
- * diamonds for the first velocity and circles for the second. */
+/* R_f against lambda* (Fig 9): Zener's fit exp(-1.7191 lambda*) solid,
+ * Zener's ODE (may be NULL) dash-dot, the runs as filled markers coloured
+ * by h/r0 and labelled with it, the paper's values (paper may be NULL) as
+ * open markers.  The lambda* axis is logarithmic when the points span
+ * more than a decade; the half-space (lambda* = 0) then sits at its left
+ * end, labelled so. */
 int plot_chart_rf_lambda(struct plot_chart *c, const struct plot_run *runs,
-			 int n, const struct plot_curve *ode);
+			 int n, const struct plot_curve *ode,
+			 const struct plot_paper *paper);
 
 /* Error of P_max, t_s and R_f against wall time, log-log: runs[i] is the
- * run at accuracy level i (i < ANVIL_ACC_COUNT); the error of a level is
- * the relative change to the next finer level that succeeded, the finest
- * uses its own error estimate.  The levels' names label the P_max points. */
+ * run at accuracy level i (i < ANVIL_ACC_COUNT), timed cold; the error of
+ * a level is the relative change to the next finer level that succeeded,
+ * the finest uses its own error estimate.  Each level's target is a thin
+ * line in the level's colour, its points in the same colour. */
 int plot_chart_accuracy(struct plot_chart *c,
 			const struct plot_run runs[ANVIL_ACC_COUNT]);
 
-/* How the PNG looks. */
+/* How the image looks, and how its making can be stopped. */
 struct plot_opts {
-	int width, height;   /* pixels */
-	const char *font;    /* "NAME,SIZE", or NULL/"" for gnuplot's default */
+	int width, height;   /* pixels (PDF: 100 pixels an inch) */
+	const char *font;    /* "NAME,SIZE", or NULL/"" for the default */
 	const char *title;   /* replaces the chart's title; NULL/"": keep it */
+	enum plot_format format;
+	/* While gnuplot runs, *cancel != 0 (a signal handler's flag) kills it,
+	 * removes the temporary file and returns ANVIL_ECANCEL.  NULL: none. */
+	const volatile sig_atomic_t *cancel;
 };
-void plot_opts_default(struct plot_opts *o); /* 800 x 600, default font */
+void plot_opts_default(struct plot_opts *o); /* 800 x 600 PNG, default font */
 
-/* Write the whole gnuplot script for c (terminal pngcairo, else png,
+/* Write the whole gnuplot script for c (the terminal of o->format,
  * writing to standard output; the data inline as datablocks).
  * ANVIL_OK, ANVIL_EINVAL when c has no point to draw, ANVIL_EIO. */
 int plot_write(FILE *f, const struct plot_chart *c,
@@ -180,21 +292,23 @@ int plot_write(FILE *f, const struct plot_chart *c,
 /* The gnuplot program: $ANVIL_GNUPLOT if set and not empty, else the one
  * configure found. */
 const char *plot_gnuplot_path(void);
-/* 0 if the gnuplot program exists and is executable, else 1 after
- * printing one line naming gnuplot (so a chart fails before its work). */
-int plot_gnuplot_check(void);
+/* ANVIL_OK if the gnuplot program exists and is executable, else
+ * ANVIL_EEXTERN with a message naming it (so a chart fails before its
+ * work). */
+int plot_gnuplot_check(struct anvil_err *err);
 
-/* Run gnuplot on the script (len bytes) and write the PNG it prints to
- * png_path atomically (nothing is left there if anything fails).
- * Returns 0, or 1 after printing one line naming gnuplot followed by
- * gnuplot's own error output. */
-int plot_render(const char *script, size_t len, const char *png_path);
+/* Run gnuplot on the script (len bytes) and write the image it prints to
+ * path atomically: nothing is left there, nor a temporary file nor a
+ * gnuplot process, if anything fails or o->cancel is raised.  Returns
+ * ANVIL_OK; ANVIL_EEXTERN (gnuplot missing or failing: its own first
+ * words in the message), ANVIL_EIO, ANVIL_ECANCEL, ANVIL_EINVAL (no path). */
+int plot_render(const char *script, size_t len, const char *path,
+		const struct plot_opts *o, struct anvil_err *err);
 
 /* Write c's script to script_path (if not NULL; "-" is standard output)
- * and render it to png_path (if not NULL).  0, or 1 with the error
- * printed. */
-int plot_png(const struct plot_chart *c, const struct plot_opts *o,
-	     const char *png_path, const char *script_path);
+ * and render it to path (if not NULL).  Statuses as plot_render. */
+int plot_save(const struct plot_chart *c, const struct plot_opts *o,
+	      const char *path, const char *script_path, struct anvil_err *err);
 
 /* ---- heat maps (`anvil map`) ------------------------------------------------
  *
@@ -239,22 +353,42 @@ struct plot_heatmap {
 void plot_heatmap_fronts(struct plot_heatmap *hm, double t, double r0, double c1,
 			 double c2, double cR, double h);
 
-/* The gnuplot script of a heat map (data inline, PNG to standard output,
- * as plot_write).  ANVIL_EINVAL when there is no finite value, ANVIL_EIO. */
+/* The gnuplot script of a heat map (data inline, image to standard
+ * output, as plot_write).  ANVIL_EINVAL when there is no finite value,
+ * ANVIL_EIO. */
 int plot_heatmap_write(FILE *f, const struct plot_heatmap *hm,
 		       const struct plot_opts *o);
 
-/* Script to script_path (if not NULL, "-" standard output) and PNG to
- * png_path (if not NULL), as plot_png.  0, or 1 with the error printed. */
-int plot_heatmap_png(const struct plot_heatmap *hm, const struct plot_opts *o,
-		     const char *png_path, const char *script_path);
+/* Script to script_path (if not NULL, "-" standard output) and image to
+ * path (if not NULL), as plot_save. */
+int plot_heatmap_save(const struct plot_heatmap *hm, const struct plot_opts *o,
+		      const char *path, const char *script_path,
+		      struct anvil_err *err);
 
 /* Write the charts of one run (histories of every model in res that has
  * them: force, velocity, deflection) into directory dir as PNG files.
  * The paths written are listed, one per line, into paths (may be NULL).
- * Returns 0, or 1 after printing a one-line error naming gnuplot. */
+ * Statuses as plot_render, plus ANVIL_EIO when dir cannot be made. */
 int plot_run_charts(const char *dir, const struct anvil_scene *sc,
 		    const struct anvil_result *res, int nres, char *paths,
-		    size_t paths_len);
+		    size_t paths_len, struct anvil_err *err);
+
+/* ---- internal, shared by the plot_*.c files --------------------------- */
+
+/* Everything that differs between kinds (plot.c). */
+struct plot_kind_info {
+	const char *name, *summary;
+	const char *xlabel, *ylabel; /* enhanced */
+	const char *setup;           /* gnuplot commands: ranges, scales */
+};
+const struct plot_kind_info *plot_kind_info(enum plot_kind k);
+/* Write s to f as plot_quote makes it. */
+void plot_put_quoted(FILE *f, const char *s);
+/* The terminal lines for o (plot_write.c). */
+void plot_write_terminal(FILE *f, const struct plot_opts *o);
+/* Script into a malloc'd buffer through write_fn, then script file and
+ * image (plot_gnuplot.c). */
+int plot_emit(const char *buf, size_t len, const struct plot_opts *o,
+	      const char *path, const char *script_path, struct anvil_err *err);
 
 #endif

@@ -328,8 +328,8 @@ static void capture_end(struct capture *c, char *said, size_t n)
 static void export_charts(struct tui *t)
 {
 	struct anvil_result res[ANVIL_MODEL_COUNT];
-	struct capture cap;
-	char paths[4096] = "", said[512];
+	struct anvil_err err = {0};
+	char paths[4096] = "";
 	const char *dir = getenv("ANVIL_PNG_DIR");
 	int n = 0;
 	if (tui_model_busy(&t->m)) {
@@ -347,12 +347,9 @@ static void export_charts(struct tui *t)
 	}
 	tui_model_message(&t->m, 0, "exporting charts...");
 	tui_draw(&t->m, &t->view);
-	capture_begin(&cap);
-	int rc = plot_run_charts(dir && *dir ? dir : ".", tui_model_scene(&t->m), res,
-				 n, paths, sizeof paths);
-	capture_end(&cap, said, sizeof said);
-	if (rc) {
-		tui_model_message(&t->m, 1, "export failed: %s", said[0] ? said : "gnuplot failed");
+	if (plot_run_charts(dir && *dir ? dir : ".", tui_model_scene(&t->m), res,
+			    n, paths, sizeof paths, &err)) {
+		tui_model_message(&t->m, 1, "export failed: %s", err.msg);
 		return;
 	}
 	for (char *p = paths; (p = strchr(p, '\n')) != NULL;)

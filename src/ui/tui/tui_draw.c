@@ -8,6 +8,10 @@
 
 #include <curses.h>
 
+#include "params.h"
+#include "plot.h"
+#include "problem.h"
+#include "zener.h"
 #include "tui_draw.h"
 #include "tui_plot.h"
 
@@ -15,7 +19,7 @@
 
 enum role {
 	R_NORMAL, R_TITLE, R_HEAD, R_SEL, R_DIM, R_ERROR, R_INFO, R_KEYS,
-	R_SERIES0, R_SERIES1, R_SERIES2, R_SERIES3, R_COUNT
+	R_SERIES0, R_SERIES1, R_SERIES2, R_SERIES3, R_SERIES4, R_COUNT
 };
 
 static const struct {
@@ -31,11 +35,15 @@ static const struct {
 	[R_ERROR] = {COLOR_RED, -1, A_BOLD, A_BOLD},
 	[R_INFO] = {COLOR_GREEN, -1, A_NORMAL, A_NORMAL},
 	[R_KEYS] = {COLOR_BLACK, COLOR_WHITE, A_NORMAL, A_REVERSE},
-	/* curves: without colour, attributes keep them apart */
-	[R_SERIES0] = {COLOR_RED, -1, A_BOLD, A_BOLD},
-	[R_SERIES1] = {COLOR_GREEN, -1, A_BOLD, A_NORMAL},
-	[R_SERIES2] = {COLOR_YELLOW, -1, A_BOLD, A_UNDERLINE},
+	/* curves: the PNG charts' colours of thickness (plot_h_colour: blue,
+	 * vermillion, bluish green, reddish purple), the nearest curses has,
+	 * and the default colour where the PNGs use black (the half-space,
+	 * Hertz, Zener's curves); without colour, attributes keep them apart */
+	[R_SERIES0] = {COLOR_BLUE, -1, A_BOLD, A_BOLD},
+	[R_SERIES1] = {COLOR_RED, -1, A_BOLD, A_NORMAL},
+	[R_SERIES2] = {COLOR_GREEN, -1, A_BOLD, A_UNDERLINE},
 	[R_SERIES3] = {COLOR_MAGENTA, -1, A_BOLD, A_DIM},
+	[R_SERIES4] = {-1, -1, A_BOLD, A_BOLD},
 };
 
 static int use_color;
@@ -259,7 +267,25 @@ static void draw_table(const struct tui_model *m, const struct tui_view *v)
 	draw_notes(m, TOP + 1 + NQUANT);
 }
 
-/* ---- the plot ---- */
+/* ---- the plot ----
+ *
+ * The same visual language as the PNG charts (plot.h): colour = the
+ * thickness h/r0 (the default colour for the half-space and for Hertz,
+ * black in the PNGs), line style = the model (layer solid, Zener dashed,
+ * Hertz dotted).  Ticks along the left and bottom edges. */
+
+#define TICKS_MAX 12
+#define RF_CURVE_N 60
+#define ODE_N 60
+#define ODE_TOL 1e-8 /* R_f to 1e-8: exact at any terminal's resolution */
+
+/* A canvas on the screen, and the colour role of each of its series. */
+struct area {
+	struct tui_canvas c;
+	int top, rows, cols;
+	int role[TUI_CANVAS_SERIES];
+	int xlog;            /* x given to the canvas as log10 */
+};
 
 static const double *quantity_data(const struct anvil_history *h,
 				   enum tui_quantity q)
@@ -276,6 +302,139 @@ static double quantity_scale(enum tui_quantity q)
 static int plottable(const struct tui_row *row)
 {
 	return row->state != TUI_ROW_OFF && row->have && row->res.hist.n > 1;
+}
+
+static int has_value(const struct tui_row *row)
+{
+	return row->state != TUI_ROW_OFF && row->have && isfinite(row->res.Rf);
+}
+
+/* The colour role of thickness h/r0, as plot_h_colour. */
+static int h_role(double h_r0)
+{
+	int c = plot_h_colour(h_r0);
+	return c < 0 ? R_SERIES4 : R_SERIES0 + c;
+}
+
+static double scene_h_r0(const struct tui_model *m)
+{
+	const struct anvil_scene *sc = tui_model_scene(m);
+	return anvil_scene_h(sc) / sc->radius;
+}
+
+/* A model's curve: colour role and dash, as in the PNGs. */
+static int model_role(enum anvil_model k, double h_r0)
+{
+	return k == ANVIL_MODEL_LAYER || k == ANVIL_MODEL_ZENER ? h_role(h_r0) : R_SERIES4;
+}
+
+static unsigned model_dash(enum anvil_model k)
+{
+	return k == ANVIL_MODEL_ZENER ? TUI_DASH_DASHED
+		: k == ANVIL_MODEL_HERTZ ? TUI_DASH_DOTTED : TUI_DASH_SOLID;
+}
+
+/* A legend sample of a dash: a line piece, or the series' glyph. */
+static const char *dash_sample(const struct tui_view *v, unsigned dash, int series,
+			       char ascii[2])
+{
+	ascii[0] = tui_canvas_glyph(series);
+	ascii[1] = '\0';
+	if (!v->utf8)
+		return ascii;
+	return dash == TUI_DASH_DASHED ? "\xe2\x95\x8d" /* ╍ */
+		: dash == TUI_DASH_DOTTED ? "\xe2\x94\x88" /* ┈ */ : "\xe2\x94\x81"; /* ━ */
+}
+
+/* One legend entry at *x on row y: a sample, then the text. */
+static void legend_item(int y, int *x, attr_t a, const char *sample, const char *text)
+{
+	if (*x >= COLS - 4)
+		return;
+	put(y, *x, 1, a, sample);
+	put(y, *x + 2, COLS - *x - 2, attr(R_NORMAL), text);
+	*x += 4 + ncols(text);
+}
+
+static int area_init(struct area *a, const struct tui_view *v, int top, int bottom)
+{
+	memset(a, 0, sizeof *a);
+	a->top = top + 1;
+	a->rows = bottom - top - 1;
+	a->cols = COLS - PLOT_LEFT - 1;
+	return a->rows >= 2 && a->cols >= 8 &&
+	       !tui_canvas_init(&a->c, a->cols, a->rows, v->utf8 ? TUI_CANVAS_BRAILLE
+							       : TUI_CANVAS_ASCII);
+}
+
+static void area_line(struct area *a, int series, int role, const double *x,
+		      const double *y, size_t n, unsigned dash)
+{
+	double lx[RF_CURVE_N > ODE_N ? RF_CURVE_N : ODE_N];
+	a->role[series % TUI_CANVAS_SERIES] = role;
+	if (a->xlog) { /* short curves only: the charts' own */
+		n = n < sizeof lx / sizeof lx[0] ? n : sizeof lx / sizeof lx[0];
+		for (size_t i = 0; i < n; i++)
+			lx[i] = x[i] > 0 ? log10(x[i]) : NAN;
+		x = lx;
+	}
+	tui_canvas_polyline_dash(&a->c, series, x, y, n, dash);
+}
+
+static void area_draw(const struct area *a)
+{
+	for (int row = 0; row < a->c.rows; ++row)
+		for (int col = 0; col < a->c.cols; ++col) {
+			char cell[4];
+			int s = tui_canvas_cell(&a->c, col, row, cell);
+			if (s >= 0)
+				put(a->top + row, PLOT_LEFT + col, 1, attr(a->role[s]), cell);
+		}
+}
+
+/* A glyph over the canvas at data point (x, y): a mark. */
+static void area_mark(const struct area *a, double x, double y, attr_t at, const char *g)
+{
+	if (a->xlog)
+		x = x > 0 ? log10(x) : NAN;
+	if (!isfinite(x) || !isfinite(y))
+		return;
+	int col = tui_canvas_xdot(&a->c, x) / a->c.xdots;
+	int row = tui_canvas_ydot(&a->c, y) / a->c.ydots;
+	if (col >= 0 && col < a->c.cols && row >= 0 && row < a->c.rows)
+		put(a->top + row, PLOT_LEFT + col, 1, at, g);
+}
+
+/* Ticks on the left edge (y in display units = data * ys) and under the
+ * bottom edge (x, log or linear, in display units = data * xs), the x
+ * axis' name at the right end. */
+static void area_ticks(const struct area *a, const struct tui_view *v, double ys,
+		       double xs, const char *xname)
+{
+	double t[TICKS_MAX];
+	int n = tui_ticks(a->c.y0 * ys, a->c.y1 * ys, 0, a->rows / 3 + 2 < TICKS_MAX
+			  ? a->rows / 3 + 2 : TICKS_MAX, t);
+	for (int i = 0; i < n; i++) {
+		int row = tui_canvas_ydot(&a->c, t[i] / ys) / a->c.ydots;
+		putf(a->top + row, 0, PLOT_LEFT - 2, attr(R_DIM), "%7.4g", t[i]);
+		put(a->top + row, PLOT_LEFT - 1, 1, attr(R_DIM), v->utf8 ? "\xe2\x94\xa4" : "+");
+	}
+	int y = a->top + a->rows, name = ncols(xname), last = -1;
+	double lo = a->xlog ? pow(10, a->c.x0) : a->c.x0 * xs;
+	double hi = a->xlog ? pow(10, a->c.x1) : a->c.x1 * xs;
+	n = tui_ticks(lo, hi, a->xlog, a->cols / 7 < TICKS_MAX ? a->cols / 7 : TICKS_MAX, t);
+	for (int i = 0; i < n; i++) {
+		char s[24];
+		double x = a->xlog ? log10(t[i]) : t[i] / xs;
+		int col = PLOT_LEFT + tui_canvas_xdot(&a->c, x) / a->c.xdots;
+		snprintf(s, sizeof s, "%g", t[i]);
+		int x0 = col - ncols(s) / 2;
+		if (x0 <= last || x0 + ncols(s) >= COLS - name - 2)
+			continue;
+		put(y, x0, ncols(s), attr(R_DIM), s);
+		last = x0 + ncols(s);
+	}
+	put_right(y, PLOT_LEFT, COLS - PLOT_LEFT - 1, attr(R_HEAD), xname);
 }
 
 /* The range over every curve shown, always including y = 0. */
@@ -302,77 +461,182 @@ static int plot_range(const struct tui_model *m, double r[4])
 	return any;
 }
 
-static void draw_legend(const struct tui_model *m, const struct tui_view *v, int y)
+static void history_legend(const struct tui_model *m, const struct tui_view *v, int y)
 {
 	char head[64];
-	snprintf(head, sizeof head, "%s [%s] vs t [%s]", tui_quantity_name(m->quantity),
+	double h = scene_h_r0(m);
+	snprintf(head, sizeof head, "%s [%s] vs t", tui_quantity_name(m->quantity),
 		 v->utf8 && m->quantity == TUI_Q_DEFLECTION ? "\xc2\xb5m"
-							    : tui_quantity_unit(m->quantity),
-		 v->utf8 ? "\xc2\xb5s" : "us");
+							    : tui_quantity_unit(m->quantity));
 	put(y, 1, COLS - 2, attr(R_HEAD), head);
 	int x = 1 + ncols(head) + 2;
 	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i) {
-		const struct tui_row *row = &m->rows[tui_model_order[i]];
-		const char *title = tui_model_title(tui_model_order[i]);
-		char sample[4] = {tui_canvas_glyph(i), '\0'};
-		if (!plottable(row))
-			continue;
-		put(y, x + 1, 1, attr(R_SERIES0 + i), v->utf8 ? "\xe2\x96\xa0" : sample);
-		put(y, x + 3, COLS - x - 3, attr(R_NORMAL), title);
-		x += 4 + (int)strlen(title);
+		enum anvil_model k = tui_model_order[i];
+		char ascii[2];
+		if (plottable(&m->rows[k]))
+			legend_item(y, &x, attr(model_role(k, h)),
+				    dash_sample(v, model_dash(k), i, ascii), tui_model_title(k));
 	}
 }
 
-static void draw_axes(const struct tui_model *m, const struct tui_view *v,
-		      const double r[4], int top, int bottom)
+static void draw_history(const struct tui_model *m, const struct tui_view *v,
+			 int top, int bottom)
 {
-	double ys = quantity_scale(m->quantity);
-	putf(top, 0, PLOT_LEFT - 1, attr(R_DIM), "%8.3g", r[3] * ys);
-	putf(bottom, 0, PLOT_LEFT - 1, attr(R_DIM), "%8.3g", r[2] * ys);
-	put(bottom + 1, PLOT_LEFT, 1, attr(R_DIM), "0");
-	char t[32];
-	snprintf(t, sizeof t, "%.4g %s", r[1] * 1e6, v->utf8 ? "\xc2\xb5s" : "us");
-	put_right(bottom + 1, PLOT_LEFT, COLS - PLOT_LEFT - 1, attr(R_DIM), t);
+	struct area a;
+	double r[4], h = scene_h_r0(m);
+	history_legend(m, v, top);
+	if (!plot_range(m, r)) {
+		putf((top + bottom) / 2, PLOT_LEFT, COLS - PLOT_LEFT - 1, attr(R_DIM), "%s",
+		     tui_model_busy(m) ? "computing" : "no histories to plot");
+		return;
+	}
+	if (!area_init(&a, v, top, bottom))
+		return;
+	tui_canvas_range(&a.c, r[0], r[1], r[2], r[3]);
+	/* backwards, so the first model of the legend ends up on top */
+	for (int i = ANVIL_MODEL_COUNT - 1; i >= 0; --i) {
+		enum anvil_model k = tui_model_order[i];
+		const struct tui_row *row = &m->rows[k];
+		if (plottable(row))
+			area_line(&a, i, model_role(k, h), row->res.hist.t,
+				  quantity_data(&row->res.hist, m->quantity), row->res.hist.n,
+				  model_dash(k));
+	}
+	area_draw(&a);
+	area_ticks(&a, v, quantity_scale(m->quantity), 1e6, v->utf8 ? "t [\xc2\xb5s]" : "t [us]");
+	tui_canvas_free(&a.c);
 }
 
-static void draw_canvas(const struct tui_canvas *c, int top)
+/* Zener's ODE R_f(lambda*), the same for every scene: solved once. */
+static int ode_curve(const double **x, const double **y)
 {
-	for (int row = 0; row < c->rows; ++row)
-		for (int col = 0; col < c->cols; ++col) {
-			char cell[4];
-			int s = tui_canvas_cell(c, col, row, cell);
-			if (s >= 0)
-				put(top + row, PLOT_LEFT + col, 1, attr(R_SERIES0 + s % 4), cell);
+	static double ox[ODE_N], oy[ODE_N];
+	static int n = -1;
+	if (n < 0) {
+		n = 0;
+		for (int i = 0; i < ODE_N; i++) {
+			struct anvil_zener_sol sol;
+			double l = 1e-4 * pow(4e4, (double)i / (ODE_N - 1)); /* 1e-4 .. 4 */
+			if (anvil_zener_solve(l, ODE_TOL, &sol, NULL) == ANVIL_OK) {
+				ox[n] = l;
+				oy[n++] = sol.rf;
+			}
 		}
+	}
+	*x = ox;
+	*y = oy;
+	return n;
+}
+
+static void draw_rf_lambda(const struct tui_model *m, const struct tui_view *v,
+			   int top, int bottom)
+{
+	struct anvil_params p;
+	struct area a;
+	double fx[RF_CURVE_N], fy[RF_CURVE_N], h = scene_h_r0(m);
+	const double *ox, *oy;
+	char ascii[2], text[96];
+	int x = 1, ok = anvil_params_from_scene(&p, tui_model_scene(m), NULL) == ANVIL_OK;
+	double lam = ok ? p.lambda_star : NAN;
+	double lo = lam > 0 && lam < 1e-3 ? pow(10, floor(log10(lam))) : 1e-3;
+	double hi = fmax(1.5, lam > 0 ? 1.5 * lam : 0);
+	put(top, x, COLS - 2, attr(R_HEAD), v->utf8 ? "R_f vs \xce\xbb* (log)" : "R_f vs lambda* (log)");
+	x += 22;
+	legend_item(top, &x, attr(R_SERIES4), dash_sample(v, TUI_DASH_SOLID, 0, ascii), "Zener fit");
+	legend_item(top, &x, attr(R_SERIES4), dash_sample(v, TUI_DASH_DASHED, 1, ascii), "Zener ODE");
+	if (!area_init(&a, v, top, bottom))
+		return;
+	a.xlog = 1;
+	tui_canvas_range(&a.c, log10(lo), log10(hi), 0, 1.05);
+	for (int i = 0; i < RF_CURVE_N; i++) {
+		fx[i] = lo * pow(hi / lo, (double)i / (RF_CURVE_N - 1));
+		fy[i] = anvil_zener_rf_fit(fx[i]);
+	}
+	area_line(&a, 0, R_SERIES4, fx, fy, RF_CURVE_N, TUI_DASH_SOLID);
+	int nodes = ode_curve(&ox, &oy);
+	area_line(&a, 1, R_SERIES4, ox, oy, (size_t)nodes, TUI_DASH_DASHED);
+	/* The scene: a dotted line at its lambda*, a mark on the fit. */
+	double vx[2] = {lam, lam}, vy[2] = {0, 1.05};
+	if (lam > 0)
+		area_line(&a, 2, h_role(h), vx, vy, 2, TUI_DASH_DOTTED);
+	area_draw(&a);
+	area_mark(&a, lam, ok ? p.Rf_star : NAN, attr(h_role(h)), v->utf8 ? "\xe2\x97\x86" : "X");
+	const struct tui_row *layer = &m->rows[ANVIL_MODEL_LAYER];
+	if (has_value(layer))
+		area_mark(&a, lam, layer->res.Rf, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
+	const char *name = v->utf8 ? "\xce\xbb*" : "lambda*";
+	int k = lam > 0 ? snprintf(text, sizeof text, "this scene: %s = %.3g, R*_f = %.3g",
+				   name, lam, p.Rf_star)
+		: snprintf(text, sizeof text, "this scene: half-space, %s = 0", name);
+	if (has_value(layer) && k > 0 && (size_t)k < sizeof text)
+		snprintf(text + k, sizeof text - (size_t)k, ", layer R_f = %.3g", layer->res.Rf);
+	legend_item(top, &x, attr(h_role(h)), v->utf8 ? "\xe2\x97\x86" : "X", text);
+	area_ticks(&a, v, 1, 1, v->utf8 ? "\xce\xbb*" : "lambda*");
+	tui_canvas_free(&a.c);
+}
+
+static void draw_rf_thickness(const struct tui_model *m, const struct tui_view *v,
+			      int top, int bottom)
+{
+	struct anvil_scene sc = *tui_model_scene(m);
+	struct area a;
+	double zx[RF_CURVE_N], zy[RF_CURVE_N], h = scene_h_r0(m);
+	char ascii[2], text[96];
+	int x = 1;
+	double lo = isfinite(h) ? fmin(0.5, h / 1.5) : 0.5, hi = isfinite(h) ? fmax(20, 1.5 * h) : 20;
+	put(top, x, COLS - 2, attr(R_HEAD), "R_f vs h/r0 (log)");
+	x += 19;
+	legend_item(top, &x, attr(R_SERIES4), dash_sample(v, TUI_DASH_DASHED, 0, ascii),
+		    "Zener R*_f");
+	if (!area_init(&a, v, top, bottom))
+		return;
+	a.xlog = 1;
+	tui_canvas_range(&a.c, log10(lo), log10(hi), 0, 1.05);
+	/* Zener's R*_f (54) of this scene at every thickness: cheap, live. */
+	sc.thickness_per_r0 = 1;
+	for (int i = 0; i < RF_CURVE_N; i++) {
+		struct anvil_params p;
+		sc.thickness = zx[i] = lo * pow(hi / lo, (double)i / (RF_CURVE_N - 1));
+		zy[i] = anvil_params_from_scene(&p, &sc, NULL) ? NAN : p.Rf_star;
+	}
+	area_line(&a, 0, R_SERIES4, zx, zy, RF_CURVE_N, TUI_DASH_DASHED);
+	const struct tui_row *half = &m->rows[ANVIL_MODEL_HALFSPACE];
+	const struct tui_row *layer = &m->rows[ANVIL_MODEL_LAYER];
+	if (has_value(half)) {
+		double hx[2] = {lo, hi}, hy[2] = {half->res.Rf, half->res.Rf};
+		area_line(&a, 1, R_SERIES4, hx, hy, 2, TUI_DASH_DOTTED);
+		legend_item(top, &x, attr(R_SERIES4), dash_sample(v, TUI_DASH_DOTTED, 1, ascii),
+			    "half-space");
+	}
+	double vx[2] = {h, h}, vy[2] = {0, 1.05};
+	if (isfinite(h))
+		area_line(&a, 2, h_role(h), vx, vy, 2, TUI_DASH_DOTTED);
+	area_draw(&a);
+	if (has_value(layer) && isfinite(h))
+		area_mark(&a, h, layer->res.Rf, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
+	if (isfinite(h))
+		snprintf(text, sizeof text, "this scene: h = %.3g r0%s", h,
+			 has_value(layer) ? "" : " (layer R_f: not computed)");
+	else
+		snprintf(text, sizeof text, "this scene: half-space");
+	if (has_value(layer) && isfinite(h)) {
+		size_t k = strlen(text);
+		snprintf(text + k, sizeof text - k, ", layer R_f = %.3g", layer->res.Rf);
+	}
+	legend_item(top, &x, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O", text);
+	area_ticks(&a, v, 1, 1, "h/r0");
+	tui_canvas_free(&a.c);
 }
 
 static void draw_plot(const struct tui_model *m, const struct tui_view *v,
 		      int top, int bottom)
 {
-	struct tui_canvas c;
-	double r[4];
-	int rows = bottom - top - 1, cols = COLS - PLOT_LEFT - 1;
-	draw_legend(m, v, top);
-	if (!plot_range(m, r)) {
-		putf((top + bottom) / 2, PLOT_LEFT, cols, attr(R_DIM), "%s",
-		     tui_model_busy(m) ? "computing" : "no histories to plot");
-		return;
-	}
-	if (rows < 1 || tui_canvas_init(&c, cols, rows, v->utf8 ? TUI_CANVAS_BRAILLE
-								: TUI_CANVAS_ASCII))
-		return;
-	tui_canvas_range(&c, r[0], r[1], r[2], r[3]);
-	/* backwards, so the first model of the legend ends up on top */
-	for (int i = ANVIL_MODEL_COUNT - 1; i >= 0; --i) {
-		const struct tui_row *row = &m->rows[tui_model_order[i]];
-		if (plottable(row))
-			tui_canvas_polyline(&c, i, row->res.hist.t,
-					    quantity_data(&row->res.hist, m->quantity),
-					    row->res.hist.n);
-	}
-	draw_canvas(&c, top + 1);
-	draw_axes(m, v, r, top + 1, top + rows);
-	tui_canvas_free(&c);
+	if (m->quantity == TUI_Q_RF_LAMBDA)
+		draw_rf_lambda(m, v, top, bottom);
+	else if (m->quantity == TUI_Q_RF_THICKNESS)
+		draw_rf_thickness(m, v, top, bottom);
+	else
+		draw_history(m, v, top, bottom);
 }
 
 /* ---- the bottom lines ---- */

@@ -27,7 +27,7 @@ const char *const tui_help_lines[] = {
 	"  m                     next material of the selected body (clears its",
 	"                        E, nu, rho and yield overrides)",
 	"  a                     next accuracy level",
-	"  v                     plot P(t), v(t) or w(t)",
+	"  v                     plot P(t), v(t), w(t), R_f(lambda*) or R_f(h)",
 	"  p                     export the charts as PNG (gnuplot) into the",
 	"                        current directory or $ANVIL_PNG_DIR",
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
@@ -53,13 +53,14 @@ const char *tui_model_title(enum anvil_model m)
 
 const char *tui_quantity_name(enum tui_quantity q)
 {
-	static const char *const n[TUI_Q_COUNT] = {"P(t)", "v(t)", "w(t)"};
+	static const char *const n[TUI_Q_COUNT] = {"P(t)", "v(t)", "w(t)", "R_f(lambda*)",
+						   "R_f(h)"};
 	return (unsigned)q < TUI_Q_COUNT ? n[q] : "?";
 }
 
 const char *tui_quantity_unit(enum tui_quantity q)
 {
-	static const char *const u[TUI_Q_COUNT] = {"kN", "m/s", "um"};
+	static const char *const u[TUI_Q_COUNT] = {"kN", "m/s", "um", "1", "1"};
 	return (unsigned)q < TUI_Q_COUNT ? u[q] : "?";
 }
 

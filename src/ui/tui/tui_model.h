@@ -67,7 +67,9 @@ enum tui_field {
 	TUI_F_COUNT
 };
 
-enum tui_quantity { TUI_Q_FORCE, TUI_Q_VELOCITY, TUI_Q_DEFLECTION, TUI_Q_COUNT };
+/* What the plot shows: a history, or R_f against lambda* / h (charts). */
+enum tui_quantity { TUI_Q_FORCE, TUI_Q_VELOCITY, TUI_Q_DEFLECTION, TUI_Q_RF_LAMBDA,
+		    TUI_Q_RF_THICKNESS, TUI_Q_COUNT };
 
 enum tui_screen { TUI_SCREEN_MAIN, TUI_SCREEN_HELP };
 

@@ -112,15 +112,17 @@ static long to_dot(double v, double lo, double hi, int ndots, int flip)
 	return lround(d);
 }
 
-/* Bresenham: every dot between the two ends, both included. */
+/* Bresenham: every dot between the two ends, both included; the dash
+ * pattern counts dots along the whole polyline (*k). */
 static void line(struct tui_canvas *c, int series, long xa, long ya, long xb,
-		 long yb)
+		 long yb, unsigned pattern, unsigned *k)
 {
 	long dx = labs(xb - xa), dy = -labs(yb - ya);
 	long sx = xa < xb ? 1 : -1, sy = ya < yb ? 1 : -1;
 	long e = dx + dy;
 	for (;;) {
-		tui_canvas_dot(c, series, (int)xa, (int)ya);
+		if ((pattern >> (*k)++ % 8) & 1u)
+			tui_canvas_dot(c, series, (int)xa, (int)ya);
 		if (xa == xb && ya == yb)
 			break;
 		long e2 = 2 * e;
@@ -138,9 +140,28 @@ static void line(struct tui_canvas *c, int series, long xa, long ya, long xb,
 void tui_canvas_polyline(struct tui_canvas *c, int series, const double *x,
 			 const double *y, size_t n)
 {
+	tui_canvas_polyline_dash(c, series, x, y, n, TUI_DASH_SOLID);
+}
+
+int tui_canvas_xdot(const struct tui_canvas *c, double x)
+{
+	return (int)to_dot(x, c->x0, c->x1, c->cols * c->xdots, 0);
+}
+
+int tui_canvas_ydot(const struct tui_canvas *c, double y)
+{
+	return (int)to_dot(y, c->y0, c->y1, c->rows * c->ydots, 1);
+}
+
+void tui_canvas_polyline_dash(struct tui_canvas *c, int series, const double *x,
+			      const double *y, size_t n, unsigned pattern)
+{
 	int nx = c->cols * c->xdots, ny = c->rows * c->ydots;
 	long px = 0, py = 0;
 	int have = 0;
+	unsigned k = 0;
+	if (!(pattern & 0xFFu))
+		pattern = TUI_DASH_SOLID;
 	for (size_t i = 0; i < n; ++i) {
 		if (!isfinite(x[i]) || !isfinite(y[i])) {
 			have = 0;
@@ -149,7 +170,7 @@ void tui_canvas_polyline(struct tui_canvas *c, int series, const double *x,
 		long qx = to_dot(x[i], c->x0, c->x1, nx, 0);
 		long qy = to_dot(y[i], c->y0, c->y1, ny, 1);
 		if (have)
-			line(c, series, px, py, qx, qy);
+			line(c, series, px, py, qx, qy, pattern, &k);
 		else
 			tui_canvas_dot(c, series, (int)qx, (int)qy);
 		px = qx;
@@ -198,4 +219,46 @@ void tui_canvas_row(const struct tui_canvas *c, int row, char *buf, size_t len)
 		k += n;
 	}
 	buf[k] = '\0';
+}
+
+/* Linear ticks: the smallest step of 1, 2, 5 x 10^k giving at most max. */
+static int linear_ticks(double lo, double hi, int max, double *out)
+{
+	static const double m[] = {1, 2, 5};
+	double span = hi - lo, step = 0;
+	for (int e = (int)floor(log10(span / max)) - 1; !(step > 0); e++)
+		for (int i = 0; i < 3 && !(step > 0); i++)
+			if (floor(span / (m[i] * pow(10, e)) + 1e-9) + 1 <= max)
+				step = m[i] * pow(10, e);
+	int n = 0;
+	for (double t = ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step && n < max; t += step)
+		out[n++] = fabs(t) < 1e-12 * step ? 0 : t;
+	return n;
+}
+
+int tui_ticks(double lo, double hi, int log, int max, double *out)
+{
+	if (!isfinite(lo) || !isfinite(hi) || !(hi > lo) || max < 1 || (log && !(lo > 0)))
+		return 0;
+	if (!log)
+		return linear_ticks(lo, hi, max, out);
+	/* 1, 2, 5 per decade; just the decades when that is too many. */
+	for (int dense = 1; dense >= 0; dense--) {
+		static const double m[] = {1, 2, 5};
+		int n = 0, fits = 1;
+		for (int e = (int)floor(log10(lo)); e <= (int)ceil(log10(hi)) && fits; e++)
+			for (int i = 0; i < (dense ? 3 : 1); i++) {
+				double t = m[i] * pow(10, e);
+				if (t < lo * (1 - 1e-9) || t > hi * (1 + 1e-9))
+					continue;
+				if (n == max) {
+					fits = 0;
+					break;
+				}
+				out[n++] = t;
+			}
+		if (fits || !dense)
+			return n;
+	}
+	return 0;
 }

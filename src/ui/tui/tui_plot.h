@@ -47,6 +47,26 @@ void tui_canvas_dot(struct tui_canvas *c, int series, int dx, int dy);
 void tui_canvas_polyline(struct tui_canvas *c, int series, const double *x,
 			 const double *y, size_t n);
 
+/* Dash patterns, as in the PNG charts: bit k (k = 0 .. 7) says whether
+ * the k-th dot of every 8 along a line is drawn. */
+#define TUI_DASH_SOLID 0xFFu
+#define TUI_DASH_DASHED 0x3Fu /* 6 on, 2 off: Zener's plate */
+#define TUI_DASH_DOTTED 0x11u /* 1 on, 3 off: Hertz, a level */
+/* tui_canvas_polyline with a dash pattern (0: solid). */
+void tui_canvas_polyline_dash(struct tui_canvas *c, int series, const double *x,
+			      const double *y, size_t n, unsigned pattern);
+
+/* The dot column (x) or row (y) of a data value, as polylines map them;
+ * for axis ticks and marks. */
+int tui_canvas_xdot(const struct tui_canvas *c, double x);
+int tui_canvas_ydot(const struct tui_canvas *c, double y);
+
+/* Tick values for an axis over [lo, hi], at most max of them, into out:
+ * 1, 2 or 5 times a power of ten apart (linear), or at 1, 2, 5 times the
+ * powers of ten, thinned to the decades when too many (log = 1, lo > 0).
+ * Returns the count (0 when the range is empty or not finite). */
+int tui_ticks(double lo, double hi, int log, int max, double *out);
+
 /* The text of cell (col, row) into out (NUL-terminated, at most 3 bytes of
  * UTF-8): a braille character, the series' ASCII glyph, or " " when empty.
  * Returns the series that drew the cell last, -1 when empty. */
