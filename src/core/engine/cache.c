@@ -64,8 +64,17 @@ double anvil_cache_grid(int idx)
 	return exp2((double)idx / ANVIL_CACHE_STEPS);
 }
 
+/* Grid indices are clamped to +-GRID_MAX_IDX (2^+-1000, far beyond any
+ * window or bandwidth): (int) of an infinite or huge log2 would be
+ * undefined behaviour, and NaN or x <= 0 has no grid point at all. */
+#define GRID_MAX_IDX (1000 * ANVIL_CACHE_STEPS)
+
 int anvil_cache_grid_up(double x)
 {
+	if (!(x > anvil_cache_grid(-GRID_MAX_IDX)))
+		return -GRID_MAX_IDX;
+	if (!(x <= anvil_cache_grid(GRID_MAX_IDX)))
+		return GRID_MAX_IDX;
 	int k = (int)ceil(ANVIL_CACHE_STEPS * log2(x));
 	/* log2 may be off by an ulp either way: settle on the exact answer */
 	while (anvil_cache_grid(k - 1) >= x)
