@@ -507,7 +507,9 @@ static int samples_ok(const struct anvil_green_samples *s)
 	    !(s->dtau > 0 && isfinite(s->dtau)) || !(s->abserr >= 0 && isfinite(s->abserr)) ||
 	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
 	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) ||
-	    !s->ramp || s->n < 4 || s->n != (size_t)floor(s->tau_end / s->dtau) + 2 ||
+	    /* the quotient first: (size_t) of one beyond its range is undefined */
+	    !s->ramp || s->n < 4 || !(s->tau_end / s->dtau < (double)s->n) ||
+	    s->n != (size_t)floor(s->tau_end / s->dtau) + 2 ||
 	    s->ramp[0] != 0.0)
 		return 0;
 	for (size_t j = 0; j < s->n; j++)
