@@ -3,7 +3,8 @@
  * Besides the sanitizers, one property is checked: a scene that parses and
  * passes anvil_scene_check is written, read back and written again, and
  * the two texts must be equal to the byte (anvil_scene_write promises a
- * text that reads back to exactly the same scene). */
+ * text that reads back to exactly the same scene); a text that fails to
+ * parse must leave the scene unchanged. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,9 +22,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	memcpy(text, data, size);
 	text[size] = '\0';
 	anvil_scene_default(&sc);
-	if (anvil_scene_parse(&sc, text, "fuzz", &err) == ANVIL_OK &&
-	    anvil_scene_check(&sc, &err) == ANVIL_OK)
+	struct anvil_scene before = sc;
+	int st = anvil_scene_parse(&sc, text, "fuzz", &err);
+	if (st == ANVIL_OK && anvil_scene_check(&sc, &err) == ANVIL_OK)
 		fuzz_roundtrip(&sc);
+	/* a failed parse leaves the scene as it was (scene.h) */
+	if (st != ANVIL_OK && memcmp(&before, &sc, sizeof sc) != 0) {
+		fprintf(stderr, "a failed parse changed the scene: %s\n", err.msg);
+		abort();
+	}
 	free(text);
 	return 0;
 }

@@ -149,7 +149,7 @@ void anvil_scene_default(struct anvil_scene *sc);
 
 /* Parse scene text on top of what sc holds already (start from
  * anvil_scene_default).  origin names the text in messages (a file name).
- * On error sc may be partly changed; callers keep a copy if they need one. */
+ * On error sc is left as it was. */
 int anvil_scene_parse(struct anvil_scene *sc, const char *text,
 		      const char *origin, struct anvil_err *err);
 /* Read and parse a file ("-" is standard input).  Refused (ANVIL_EPARSE,
