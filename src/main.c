@@ -36,7 +36,8 @@ static void usage(FILE *f)
 	for (int i = 0; i < NCOMMANDS; i++)
 		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
 	fputs("\nWithout a command: the TUI on a terminal, else 'anvil run'.\n"
-	      "'anvil COMMAND --help' describes a command; man anvil tells all.\n",
+	      "'anvil COMMAND --help' describes a command; man anvil tells all.\n"
+	      "--strict, with any command: implausible scene values are errors.\n",
 	      f);
 }
 
@@ -86,10 +87,29 @@ static int unknown(const char *name)
 	return EXIT_USAGE;
 }
 
+/* --strict is global: taken out of argv wherever it is (up to a "--"),
+ * so that every command accepts it.  Returns the new argc. */
+static int take_strict(int argc, char **argv)
+{
+	int j = 1;
+	for (int i = 1; i < argc; i++) {
+		if (!strcmp(argv[i], "--"))
+			for (; i < argc; i++)
+				argv[j++] = argv[i];
+		else if (!strcmp(argv[i], "--strict"))
+			cli_strict = 1;
+		else
+			argv[j++] = argv[i];
+	}
+	argv[j] = NULL;
+	return j;
+}
+
 int main(int argc, char **argv)
 {
 	static char *run_argv[] = {"run", NULL}, *tui_argv[] = {"tui", NULL};
 	cli_init();
+	argc = take_strict(argc, argv);
 	if (argc < 2) {
 		if (isatty(STDIN_FILENO) && isatty(STDOUT_FILENO))
 			return anvil_cmd_tui(1, tui_argv);

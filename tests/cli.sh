@@ -134,7 +134,7 @@ check_exit 2 'accuracy with an unknown model exits 2' "$ANVIL" accuracy -m nope
 
 # ---- table ----
 # The unstarred rows need the layer model: the exit status is not checked.
-run "$ANVIL" table --v0 10 -f tsv
+run "$ANVIL" table --v0 10m/s -f tsv
 assert 'table: Zener P*_max at h = r0, 10 m/s' awk -F '\t' \
 	'$2 == "Pmax_star_kN" && $3 == "1" { good = $4 > 6.7 && $4 < 6.9 } END { exit !good }' "$tmp/out"
 if [ -f "$SHARED/paper/tables.tsv" ]; then

@@ -116,7 +116,7 @@ assert "leading quotes in their own piece" grep -q \
 check_exit 2 "an unknown image type is a usage error" "$ANVIL" plot force -o "$tmp/x.jpg"
 assert "the image types are named" grep -q "png, .svg or .pdf" "$tmp/err"
 check "restitution-thickness respects -s layer.thickness" \
-	"$ANVIL" plot restitution-thickness $draft -s layer.thickness=5mm -s impact.velocity=10 --script -
+	"$ANVIL" plot restitution-thickness $draft -s layer.thickness=5mm -s impact.velocity=10m/s --script -
 assert "the scene's thickness is marked" grep -q "this scene: h = 1.25 r_0" "$tmp/out"
 assert "h also in mm" grep -q "x2label 'h (mm), with r_0 = 4 mm'" "$tmp/out"
 check "restitution-lambda without the paper's table" env ANVIL_PAPER_TABLES=/nonexistent \

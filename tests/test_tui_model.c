@@ -257,8 +257,13 @@ static void test_edit(void)
 	for (int i = 0; i < 10; ++i)
 		tui_model_key(m, TUI_KEY_BACKSPACE);
 	type(m, "8");
-	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "a bare number is accepted");
-	is_rel(anvil_scene_h(&m->sc), 8e-3, 1e-15, "and means the row's unit (8 mm)");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW && m->editing && m->msg_error &&
+		   strstr(m->msg, "needs a unit"),
+	   "a bare number is refused, as in scene files: %s", m->msg);
+	is_rel(anvil_scene_h(&m->sc), 4e-3, 1e-15, "the thickness is unchanged");
+	type(m, " mm");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "with its unit it is taken");
+	is_rel(anvil_scene_h(&m->sc), 8e-3, 1e-15, "8 mm");
 	tui_model_key(m, TUI_KEY_ENTER);
 	tui_model_key(m, TUI_CTRL('u'));
 	type(m, "inf\n");
@@ -426,7 +431,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(103);
+	plan(105);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();

@@ -144,6 +144,56 @@ int main(void)
 		ok(anvil_units_parse(text, (enum anvil_dim)d, &v, NULL) == ANVIL_OK && v == 2,
 		   "'%s' reads as 2 SI", text);
 	}
+
+	/* The unit rule of scene files, -s and the TUI. */
+	static const struct {
+		const char *text;
+		enum anvil_dim dim;
+		const char *msg; /* NULL: accepted */
+		double si;
+	} rule[] = {
+		{"4", ANVIL_DIM_LENGTH, "'4' needs a unit, e.g. 4 mm (lengths: m, cm, mm, um)", 0},
+		{" 12.5 ", ANVIL_DIM_MASS, "'12.5' needs a unit, e.g. 12.5 g (masses: kg, g, mg)", 0},
+		{"10", ANVIL_DIM_VELOCITY, "'10' needs a unit, e.g. 10 m/s (velocities: m/s, km/s", 0},
+		{"200e9", ANVIL_DIM_PRESSURE, "'200e9' needs a unit, e.g. 200e9 GPa", 0},
+		{"7830", ANVIL_DIM_DENSITY, "'7830' needs a unit, e.g. 7830 g/cm3", 0},
+		{"1e-7", ANVIL_DIM_TIME, "'1e-7' needs a unit, e.g. 1e-7 us", 0},
+		{"4 x", ANVIL_DIM_LENGTH, "expected a length such as '4 mm', got 'x'", 0},
+		{"4 mm", ANVIL_DIM_LENGTH, NULL, 4e-3},
+		{"0.3", ANVIL_DIM_NONE, NULL, 0.3},
+	};
+	for (size_t i = 0; i < sizeof rule / sizeof rule[0]; ++i) {
+		v = -1;
+		anvil_err_clear(&err);
+		int st = anvil_units_parse_with_unit(rule[i].text, rule[i].dim, &v, &err);
+		if (rule[i].msg)
+			ok(st == ANVIL_EPARSE && v == -1 && strstr(err.msg, rule[i].msg),
+			   "with unit: '%s' refused: %s", rule[i].text, err.msg);
+		else
+			ok(st == ANVIL_OK && v == rule[i].si, "with unit: '%s' is %g", rule[i].text,
+			   rule[i].si);
+	}
+
+	/* Readable quantities for titles and warnings. */
+	static const struct {
+		double si;
+		enum anvil_dim dim;
+		const char *text;
+	} fmt[] = {
+		{0.05, ANVIL_DIM_MASS, "50 g"},        {12.2e-3, ANVIL_DIM_MASS, "12.2 g"},
+		{2000, ANVIL_DIM_MASS, "2e+03 kg"},    {1e-9, ANVIL_DIM_MASS, "0.001 mg"},
+		{4e-3, ANVIL_DIM_LENGTH, "4 mm"},      {0.5, ANVIL_DIM_LENGTH, "50 cm"},
+		{10, ANVIL_DIM_VELOCITY, "10 m/s"},    {6000, ANVIL_DIM_VELOCITY, "6 km/s"},
+		{1e6, ANVIL_DIM_PRESSURE, "1 MPa"},    {209e9, ANVIL_DIM_PRESSURE, "209 GPa"},
+		{7830, ANVIL_DIM_DENSITY, "7.83 g/cm^3"}, {0.16e-6, ANVIL_DIM_TIME, "160 ns"},
+		{0.3, ANVIL_DIM_NONE, "0.3"},          {INFINITY, ANVIL_DIM_LENGTH, "inf m"},
+	};
+	for (size_t i = 0; i < sizeof fmt / sizeof fmt[0]; ++i) {
+		char buf[40];
+		anvil_units_format(fmt[i].si, fmt[i].dim, buf, sizeof buf);
+		ok(strcmp(buf, fmt[i].text) == 0, "format %g: '%s' (want '%s')", fmt[i].si, buf,
+		   fmt[i].text);
+	}
 	plan(tap_n);
 	return done_testing();
 }

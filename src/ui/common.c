@@ -38,6 +38,29 @@ int cli_exit_code(int status)
 	return EXIT_FAIL;
 }
 
+int cli_strict;
+
+/* The plausibility warnings of sc, one line each; ANVIL_EINVAL if there
+ * are any and --strict is on. */
+static int scene_warnings(const struct anvil_scene *sc, const char *path)
+{
+	struct anvil_scene_warning w[ANVIL_SCENE_WARNINGS_MAX];
+	int n = anvil_scene_warnings(sc, w, ANVIL_SCENE_WARNINGS_MAX);
+	const char *origin = path ? (strcmp(path, "-") == 0 ? "<stdin>" : path) : "default scene";
+	for (int i = 0; i < n && i < ANVIL_SCENE_WARNINGS_MAX; i++) {
+		char at[32] = "";
+		if (w[i].line > 0)
+			snprintf(at, sizeof at, ":%d", w[i].line);
+		fprintf(stderr, "anvil: %s: %s%s: %s: %s\n", cli_strict ? "error" : "warning",
+			w[i].line < 0 ? "command line" : origin, at, w[i].key, w[i].msg);
+	}
+	if (n > 0 && cli_strict) {
+		cli_error("%d implausible value%s: refused (--strict)", n, n == 1 ? "" : "s");
+		return ANVIL_EINVAL;
+	}
+	return ANVIL_OK;
+}
+
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets)
 {
@@ -60,9 +83,11 @@ int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	}
 	if (!st)
 		st = anvil_scene_check(sc, &err);
-	if (st)
+	if (st) {
 		cli_error("%s", err.msg[0] ? err.msg : anvil_strerror(st));
-	return st;
+		return st;
+	}
+	return scene_warnings(sc, path);
 }
 
 int cli_sets_add(struct cli_sets *s, char *kv)

@@ -25,9 +25,16 @@ void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* Map a core status to an exit code: input errors -> 2, others -> 1. */
 int cli_exit_code(int status);
 
+/* --strict, a global option (main.c takes it out of argv before the
+ * command sees it): plausibility warnings are errors. */
+extern int cli_strict;
+
 /* The scene of a command line: start from the embedded default, load path
  * (NULL: none), then apply each "KEY=VALUE" of sets in order.  On error
- * prints the one-line message and returns the core status. */
+ * prints the one-line message and returns the core status.  Then prints
+ * each plausibility warning (anvil_scene_warnings) as "anvil: warning:
+ * FILE:LINE: KEY: ..." on stderr; with --strict they are errors
+ * (ANVIL_EINVAL, exit 2). */
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets);
 

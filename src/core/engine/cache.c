@@ -23,17 +23,6 @@
 /* The file header.  Fixed-size fields in an order that leaves no padding
  * (checked below), zero-filled, so that its bytes are well defined and can
  * be checksummed. */
-struct header {
-	char magic[8];
-	uint32_t format, bom;
-	char version[16]; /* PACKAGE_VERSION, NUL-padded */
-	uint32_t mode, acc;
-	int32_t omega_idx;
-	int32_t tau_idx;
-	double hh, nu, omega, tau_end, dtau, abserr;
-	uint64_t n, checksum;
-};
-_Static_assert(sizeof(struct header) == 112, "cache header has padding");
 
 enum kind { EMPTY, HALFSPACE, CORR };
 
@@ -65,8 +54,17 @@ double anvil_cache_grid(int idx)
 	return exp2((double)idx / ANVIL_CACHE_STEPS);
 }
 
+/* Grid indices are clamped to +-GRID_MAX_IDX (2^+-1000, far beyond any
+ * window or bandwidth): (int) of an infinite or huge log2 would be
+ * undefined behaviour, and NaN or x <= 0 has no grid point at all. */
+#define GRID_MAX_IDX (1000 * ANVIL_CACHE_STEPS)
+
 int anvil_cache_grid_up(double x)
 {
+	if (!(x > anvil_cache_grid(-GRID_MAX_IDX)))
+		return -GRID_MAX_IDX;
+	if (!(x <= anvil_cache_grid(GRID_MAX_IDX)))
+		return GRID_MAX_IDX;
 	int k = (int)ceil(ANVIL_CACHE_STEPS * log2(x));
 	/* log2 may be off by an ulp either way: settle on the exact answer */
 	while (anvil_cache_grid(k - 1) >= x)
@@ -297,7 +295,7 @@ static int make_dir(const char *dir)
 	return 0;
 }
 
-static void header_fill(struct header *hd, const struct anvil_cache_key *key,
+static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_key *key,
 			const struct anvil_green_samples *s)
 {
 	memset(hd, 0, sizeof *hd);
@@ -318,16 +316,16 @@ static void header_fill(struct header *hd, const struct anvil_cache_key *key,
 	hd->n = s->n;
 }
 
-static uint64_t checksum(const struct header *hd, const double *ramp)
+static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp)
 {
-	struct header h = *hd;
+	struct anvil_cache_header h = *hd;
 	h.checksum = 0;
 	return fnv1a(fnv1a(FNV_SEED, &h, sizeof h), ramp, (size_t)hd->n * sizeof *ramp);
 }
 
 /* ---- disk: write ---- */
 
-static int write_all(FILE *f, const struct header *hd, const double *ramp)
+static int write_all(FILE *f, const struct anvil_cache_header *hd, const double *ramp)
 {
 	if (fwrite(hd, sizeof *hd, 1, f) != 1 || fwrite(ramp, sizeof *ramp, hd->n, f) != hd->n ||
 	    fflush(f) != 0)
@@ -340,7 +338,7 @@ int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 		      const struct anvil_green *g, struct anvil_err *err)
 {
 	struct anvil_green_samples s;
-	struct header hd;
+	struct anvil_cache_header hd;
 	char tmp[3200];
 	anvil_green_export(g, &s);
 	header_fill(&hd, key, &s);
@@ -368,7 +366,7 @@ int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 
 /* ---- disk: read ---- */
 
-static int header_read(FILE *f, const char *path, struct header *hd, struct anvil_err *err)
+static int header_read(FILE *f, const char *path, struct anvil_cache_header *hd, struct anvil_err *err)
 {
 	if (fread(hd, sizeof *hd, 1, f) != 1 || memcmp(hd->magic, MAGIC, 8) != 0)
 		return anvil_err_set(err, ANVIL_EIO, "%s: not a response file (short or bad magic)",
@@ -383,7 +381,7 @@ static int header_read(FILE *f, const char *path, struct header *hd, struct anvi
 }
 
 /* The header's version and key against ours; EPARSE (quiet) if they differ. */
-static int header_match(const struct header *hd, const char *path,
+static int header_match(const struct anvil_cache_header *hd, const char *path,
 			const struct anvil_cache_key *key, struct anvil_err *err)
 {
 	char version[sizeof hd->version + 1];
@@ -398,7 +396,7 @@ static int header_match(const struct header *hd, const char *path,
 	return ANVIL_OK;
 }
 
-static struct anvil_green *samples_read(FILE *f, const char *path, const struct header *hd,
+static struct anvil_green *samples_read(FILE *f, const char *path, const struct anvil_cache_header *hd,
 					struct anvil_err *err)
 {
 	struct stat sb;
@@ -434,7 +432,7 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 struct anvil_green *anvil_cache_read(const char *path, const struct anvil_cache_key *key,
 				     struct anvil_err *err)
 {
-	struct header hd;
+	struct anvil_cache_header hd;
 	FILE *f = fopen(path, "rb");
 	if (!f) {
 		anvil_err_set(err, errno == ENOENT ? ANVIL_ENOTFOUND : ANVIL_EIO, "%s: %s", path,
@@ -454,7 +452,7 @@ struct anvil_green *anvil_cache_read(const char *path, const struct anvil_cache_
 static int disk_check(const char *path, const struct anvil_cache_key *key,
 		      struct anvil_err *err)
 {
-	struct header hd;
+	struct anvil_cache_header hd;
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return anvil_err_set(err, ANVIL_ENOTFOUND, "%s: no file", path);

@@ -129,7 +129,21 @@ void anvil_cache_release(struct anvil_cache *c, const void *resp);
 /* The holds outstanding (a solver between runs has none). */
 int anvil_cache_held(const struct anvil_cache *c);
 
-/* The disk format, for the cache itself and for tests. */
+/* The disk format, for the cache itself and for tests (the fuzzer builds
+ * files with it): the header, then n ramp samples as native doubles. */
+#include <stdint.h>
+struct anvil_cache_header {
+	char magic[8];
+	uint32_t format, bom;
+	char version[16]; /* the anvil version, NUL-padded */
+	uint32_t mode, acc;
+	int32_t omega_idx;
+	int32_t tau_idx;
+	double hh, nu, omega, tau_end, dtau, abserr;
+	uint64_t n, checksum;
+};
+_Static_assert(sizeof(struct anvil_cache_header) == 112, "cache header has padding");
+
 /* The file for key in dir ("DIR/corr-LEVEL-HASH.bin") into buf; ANVIL_EINVAL
  * when it does not fit. */
 int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *buf, size_t n);

@@ -13,6 +13,7 @@
 
 #include "scene.h"
 #include "scene_keys.h"
+#include "units.h"
 
 /* examples/default.scene holds the same scene; a test keeps them equal. */
 static const char default_text[] =
@@ -39,7 +40,7 @@ static const char default_text[] =
 	"dt = auto\n"
 	"models = all\n";
 
-#define LINE_MAX_CHARS 1024
+#define LINE_MAX_CHARS (ANVIL_SCENE_LINE_MAX + 1)
 #define SEEN_MAX 128 /* more than all keys of all sections and materials */
 #define LABEL_MAX 80
 
@@ -113,6 +114,7 @@ struct parser {
 	char name[ANVIL_NAME_MAX];  /* NAME of the current [material NAME] */
 	int material_line[2];       /* where impactor, layer material was set */
 	int custom_line[ANVIL_MAX_CUSTOM]; /* header of each material defined */
+	int nkeys;                  /* KEY = VALUE lines read */
 	int nseen;
 	struct {
 		char label[LABEL_MAX];
@@ -131,13 +133,27 @@ static char *trim(char *s)
 }
 
 /* '#' or ';' at the start of a line or after white space starts a comment;
- * elsewhere ("title = Run#3") it is text. */
+ * elsewhere ("title = Run#3") it is text, as it is inside a value in double
+ * quotes (title = "#3", with \" and \\ escapes): a quote opens one only as
+ * the first character after '='. */
 static void strip_comment(char *s)
 {
+	char *eq = strchr(s, '=');
 	for (char *p = s; *p; ++p) {
 		if ((*p == '#' || *p == ';') && (p == s || isspace((unsigned char)p[-1]))) {
 			*p = '\0';
 			return;
+		}
+		if (p == eq) {
+			while (isspace((unsigned char)p[1]))
+				++p;
+			if (p[1] != '"')
+				continue;
+			for (p += 2; *p && *p != '"'; ++p)
+				if (*p == '\\' && (p[1] == '"' || p[1] == '\\'))
+					++p;
+			if (!*p)
+				return; /* unterminated: anvil_scene_key_set says so */
 		}
 	}
 }
@@ -213,8 +229,9 @@ static int parse_assignment(struct parser *p, char *s, struct anvil_err *err)
 		if (strcasecmp(p->seen[i].label, label) == 0)
 			return perr(p, err, label, "set twice (first on line %d)",
 				    p->seen[i].line);
-	if (anvil_scene_key_set(p->sc, p->sec, p->name, key, value, 1, &in))
+	if (anvil_scene_key_set(p->sc, p->sec, p->name, key, value, 1, p->line, &in))
 		return perr(p, err, label, "%s", in.msg);
+	p->nkeys++;
 	if (p->nseen < SEEN_MAX) {
 		snprintf(p->seen[p->nseen].label, LABEL_MAX, "%s", label);
 		p->seen[p->nseen++].line = p->line;
@@ -260,12 +277,17 @@ static int parse_finish(struct parser *p, struct anvil_err *err)
 	return ANVIL_OK;
 }
 
+/* Lines end in LF, CRLF or a lone CR (old Mac files: otherwise the whole
+ * file would be one line, and a comment).  A UTF-8 byte order mark, which
+ * some Windows editors write, is skipped. */
 static int parse_text(struct parser *p, const char *text, struct anvil_err *err)
 {
 	char buf[LINE_MAX_CHARS];
 	int st;
+	if (strncmp(text, "\xef\xbb\xbf", 3) == 0)
+		text += 3;
 	while (*text) {
-		size_t n = strcspn(text, "\n");
+		size_t n = strcspn(text, "\r\n");
 		++p->line;
 		if (n >= sizeof buf)
 			return perr(p, err, NULL, "line longer than %d characters",
@@ -274,13 +296,25 @@ static int parse_text(struct parser *p, const char *text, struct anvil_err *err)
 		buf[n] = '\0';
 		if ((st = parse_line(p, buf, err)))
 			return st;
-		text += n + (text[n] == '\n');
+		text += n;
+		if (text[0] == '\r')
+			text += 1 + (text[1] == '\n');
+		else if (text[0] == '\n')
+			++text;
 	}
 	return parse_finish(p, err);
 }
 
-int anvil_scene_parse(struct anvil_scene *sc, const char *text, const char *origin,
-		      struct anvil_err *err)
+static void title_update(struct anvil_scene *sc)
+{
+	if (!sc->title_set)
+		anvil_scene_title(sc, sc->title, sizeof sc->title);
+}
+
+/* Parse text into sc; when need_keys, text without one KEY = VALUE is an
+ * error (a file, anvil_scene_load). */
+static int parse_impl(struct anvil_scene *sc, const char *text, const char *origin,
+		      int need_keys, struct anvil_err *err)
 {
 	/* Work on a copy, so that a failed parse leaves sc as it was. */
 	struct anvil_scene work = *sc;
@@ -292,12 +326,23 @@ int anvil_scene_parse(struct anvil_scene *sc, const char *text, const char *orig
 	p->origin = origin ? origin : "scene";
 	p->sec = -1;
 	st = parse_text(p, text ? text : "", err);
+	if (st == ANVIL_OK && need_keys && p->nkeys == 0)
+		st = anvil_err_set(err, ANVIL_EPARSE,
+				   "%s: no KEY = VALUE in the scene (empty, or only comments); "
+				   "refusing to run the default scene in its place", p->origin);
 	free(p);
 	if (st == ANVIL_OK) {
+		title_update(&work);
 		*sc = work;
 		anvil_err_clear(err);
 	}
 	return st;
+}
+
+int anvil_scene_parse(struct anvil_scene *sc, const char *text, const char *origin,
+		      struct anvil_err *err)
+{
+	return parse_impl(sc, text, origin, 0, err);
 }
 
 int anvil_scene_load(struct anvil_scene *sc, const char *path, struct anvil_err *err)
@@ -312,6 +357,12 @@ int anvil_scene_load(struct anvil_scene *sc, const char *path, struct anvil_err 
 		return anvil_err_set(err, ANVIL_EIO, "%s: cannot open: %s", origin,
 				     strerror(errno));
 	for (;;) {
+		if (len > ANVIL_SCENE_MAX_BYTES) {
+			st = anvil_err_set(err, ANVIL_EPARSE,
+					   "%s: larger than %d bytes (1 MiB): not a scene file?",
+					   origin, ANVIL_SCENE_MAX_BYTES);
+			goto done;
+		}
 		if (cap - len < 2) {
 			cap = cap ? 2 * cap : 4096;
 			if (!(more = realloc(buf, cap))) {
@@ -320,7 +371,11 @@ int anvil_scene_load(struct anvil_scene *sc, const char *path, struct anvil_err 
 			}
 			buf = more;
 		}
-		size_t got = fread(buf + len, 1, cap - len - 1, f);
+		/* at most one byte past the limit, to see that it is passed */
+		size_t want = cap - len - 1;
+		if (want > ANVIL_SCENE_MAX_BYTES + 1 - len)
+			want = ANVIL_SCENE_MAX_BYTES + 1 - len;
+		size_t got = fread(buf + len, 1, want, f);
 		len += got;
 		if (got == 0)
 			break;
@@ -334,7 +389,7 @@ int anvil_scene_load(struct anvil_scene *sc, const char *path, struct anvil_err 
 		st = anvil_err_set(err, ANVIL_EPARSE, "%s: contains a NUL byte (not a text file?)",
 				   origin);
 	else
-		st = anvil_scene_parse(sc, buf, origin, err);
+		st = parse_impl(sc, buf, origin, 1, err);
 done:
 	if (!is_stdin)
 		fclose(f);
@@ -355,7 +410,7 @@ int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 	if (!origin)
 		origin = "command line";
 	if (!dot) {
-		anvil_scene_key_set(&work, -1, NULL, key, value, 0, &in);
+		anvil_scene_key_set(&work, -1, NULL, key, value, 0, -1, &in);
 		return located(err, ANVIL_EPARSE, origin, line, key, in.msg);
 	}
 	snprintf(sec_name, sizeof sec_name, "%.*s", (int)(dot - key), key);
@@ -370,13 +425,15 @@ int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 		snprintf(name, sizeof name, "%.*s", (int)(last - field), field);
 		field = last + 1;
 	}
-	int st = anvil_scene_key_set(&work, sec, name, field, value ? value : "", 0, &in);
+	int st = anvil_scene_key_set(&work, sec, name, field, value ? value : "", 0,
+				     line > 0 ? line : -1, &in);
 	if (!st)
 		st = anvil_scene_resolve(&work, &work.impactor, &in);
 	if (!st)
 		st = anvil_scene_resolve(&work, &work.layer, &in);
 	if (st)
 		return located(err, ANVIL_EPARSE, origin, line, key, in.msg);
+	title_update(&work);
 	*sc = work;
 	anvil_err_clear(err);
 	return ANVIL_OK;
@@ -401,7 +458,11 @@ int anvil_scene_default(struct anvil_scene *sc)
 	sc->output.table = 1;
 	/* Fails only if default_text is broken, which test_scene catches; the
 	 * core never aborts: the status goes back to the caller. */
-	return anvil_scene_parse(sc, default_text, "default scene", NULL);
+	int st = anvil_scene_parse(sc, default_text, "default scene", NULL);
+	/* The default's title is the default's only while it is the default. */
+	sc->title_set = 0;
+	memset(sc->key_line, 0, sizeof sc->key_line);
+	return st;
 }
 
 /* ---- validation ---- */
@@ -411,25 +472,32 @@ int anvil_scene_check(const struct anvil_scene *sc, struct anvil_err *err)
 	static const struct {
 		const char *label, *unit;
 		size_t off;
-	} positive[] = {
-		{"impactor.mass", "kg", offsetof(struct anvil_scene, mass)},
-		{"impactor.radius", "m", offsetof(struct anvil_scene, radius)},
-		{"impact.velocity", "m/s", offsetof(struct anvil_scene, velocity)},
+		double lo, hi;
+	} ranged[] = {
+		{"impactor.mass", "kg", offsetof(struct anvil_scene, mass), ANVIL_RANGE_MASS},
+		{"impactor.radius", "m", offsetof(struct anvil_scene, radius), ANVIL_RANGE_LENGTH},
+		{"impact.velocity", "m/s", offsetof(struct anvil_scene, velocity),
+		 ANVIL_RANGE_VELOCITY},
 	};
 	struct anvil_err in;
-	for (size_t i = 0; i < sizeof positive / sizeof positive[0]; ++i) {
-		double v = *(const double *)((const char *)sc + positive[i].off);
-		if (!(isfinite(v) && v > 0))
-			return anvil_err_set(err, ANVIL_EINVAL, "%s: must be > 0, got %g %s",
-					     positive[i].label, v, positive[i].unit);
+	char text[64];
+	for (size_t i = 0; i < sizeof ranged / sizeof ranged[0]; ++i) {
+		double v = *(const double *)((const char *)sc + ranged[i].off);
+		snprintf(text, sizeof text, "%g %s", v, ranged[i].unit);
+		if (anvil_scene_range_check(v, ranged[i].lo, ranged[i].hi, ranged[i].unit, text, &in))
+			return anvil_err_set(err, ANVIL_EINVAL, "%s: %s", ranged[i].label, in.msg);
 	}
-	if (!(sc->thickness > 0) || (sc->thickness_per_r0 && isinf(sc->thickness)))
+	double h = anvil_scene_h(sc);
+	snprintf(text, sizeof text, "h = %g m", h);
+	if (!(sc->thickness > 0) || (sc->thickness_per_r0 && isinf(sc->thickness)) ||
+	    (!isinf(h) && anvil_scene_range_check(h, ANVIL_RANGE_LENGTH, "m", text, &in)))
 		return anvil_err_set(err, ANVIL_EINVAL,
-				     "layer.thickness: must be > 0 or inf, got %g %s",
-				     sc->thickness, sc->thickness_per_r0 ? "r0" : "m");
-	if (!(isfinite(sc->dt) && sc->dt >= 0))
-		return anvil_err_set(err, ANVIL_EINVAL, "solver.dt: must be >= 0 (0 is auto), got %g s",
-				     sc->dt);
+				     "layer.thickness: must give h within %g .. %g m or inf, "
+				     "got %g %s", ANVIL_RANGE_LENGTH, sc->thickness,
+				     sc->thickness_per_r0 ? "r0" : "m");
+	snprintf(text, sizeof text, "%g s", sc->dt);
+	if (sc->dt != 0 && anvil_scene_range_check(sc->dt, ANVIL_RANGE_DT, "s", text, &in))
+		return anvil_err_set(err, ANVIL_EINVAL, "solver.dt: %s (or 0, auto)", in.msg);
 	if ((unsigned)sc->accuracy >= ANVIL_ACC_COUNT)
 		return anvil_err_set(err, ANVIL_EINVAL, "solver.accuracy: no level %d",
 				     (int)sc->accuracy);
@@ -491,4 +559,132 @@ int anvil_scene_write(const struct anvil_scene *sc, FILE *out)
 	if (fflush(out) != 0 || ferror(out))
 		return ANVIL_EIO;
 	return ANVIL_OK;
+}
+
+/* ---- plausibility ---- */
+
+/* Bounds of what real materials and impacts have (scene.h lists them).
+ * Solids: the softest rubbers and foams are near 1 MPa, diamond 1050-1200
+ * GPa, so 2000 GPa leaves room; densities from aerogels (~10 kg/m^3) to
+ * osmium (22590 kg/m^3).  5 km/s is beyond light-gas-gun hypervelocity
+ * work, where the elastic model has long stopped holding. */
+#define PLAUS_E 1e6, 2000e9
+#define PLAUS_RHO 10.0, 30000.0
+#define PLAUS_RADIUS 1e-6, 1.0
+#define PLAUS_MASS 1e-9, 1000.0
+#define PLAUS_THICKNESS 1e-6, 100.0
+#define PLAUS_VELOCITY_MAX 5000.0
+
+struct warn_list {
+	const struct anvil_scene *sc;
+	struct anvil_scene_warning *w;
+	int max, n;
+};
+
+/* The line sec.key was set on (sc->key_line). */
+static int key_line(const struct anvil_scene *sc, int sec, const char *key)
+{
+	int i = anvil_scene_key_index(sec, key);
+	return i >= 0 ? sc->key_line[i] : 0;
+}
+
+static void warn_add(struct warn_list *l, int sec, const char *key, double v,
+		     enum anvil_dim dim, double lo, double hi, const char *why)
+{
+	char val[40], lim[40];
+	if (v >= lo && v <= hi)
+		return;
+	if (l->n < l->max) {
+		struct anvil_scene_warning *w = &l->w[l->n];
+		anvil_units_format(v, dim, val, sizeof val);
+		anvil_units_format(v < lo ? lo : hi, dim, lim, sizeof lim);
+		snprintf(w->key, sizeof w->key, "%s.%s", anvil_scene_section_name(sec), key);
+		w->line = key_line(l->sc, sec, key);
+		snprintf(w->msg, sizeof w->msg, "%s is %s %s (%s)", val,
+			 v < lo ? "below" : "above", lim, why);
+	}
+	l->n++;
+}
+
+/* E and rho of a body: named after its override when one is set, else after
+ * its material key (where the material was chosen). */
+static void warn_body(struct warn_list *l, int sec, const struct anvil_body *b)
+{
+	warn_add(l, sec, isnan(b->E) ? "material" : "E", b->mat.E, ANVIL_DIM_PRESSURE, PLAUS_E,
+		 "E of real solids is 1 MPa .. 2000 GPa");
+	warn_add(l, sec, isnan(b->rho) ? "material" : "rho", b->mat.rho, ANVIL_DIM_DENSITY,
+		 PLAUS_RHO, "solids are 10 .. 30000 kg/m^3");
+}
+
+int anvil_scene_warnings(const struct anvil_scene *sc, struct anvil_scene_warning *w, int max)
+{
+	struct warn_list l = {sc, w, max < 0 ? 0 : max, 0};
+	double h = anvil_scene_h(sc);
+	warn_add(&l, ANVIL_SEC_IMPACTOR, "mass", sc->mass, ANVIL_DIM_MASS, PLAUS_MASS,
+		 "no impactor of 1 ug .. 1 t");
+	warn_add(&l, ANVIL_SEC_IMPACTOR, "radius", sc->radius, ANVIL_DIM_LENGTH, PLAUS_RADIUS,
+		 "no contact radius of 1 um .. 1 m");
+	warn_body(&l, ANVIL_SEC_IMPACTOR, &sc->impactor);
+	warn_body(&l, ANVIL_SEC_LAYER, &sc->layer);
+	if (!isinf(h))
+		warn_add(&l, ANVIL_SEC_LAYER, "thickness", h, ANVIL_DIM_LENGTH, PLAUS_THICKNESS,
+			 "no layer of 1 um .. 100 m");
+	warn_add(&l, ANVIL_SEC_IMPACT, "velocity", sc->velocity, ANVIL_DIM_VELOCITY, 0,
+		 PLAUS_VELOCITY_MAX, "hypervelocity: the elastic model does not hold");
+	return l.n;
+}
+
+/* ---- the title ---- */
+
+static int same_double(double a, double b)
+{
+	return isnan(a) ? isnan(b) : memcmp(&a, &b, sizeof a) == 0;
+}
+
+static int same_body(const struct anvil_body *a, const struct anvil_body *b)
+{
+	return strcmp(a->material, b->material) == 0 && same_double(a->E, b->E) &&
+	       same_double(a->nu, b->nu) && same_double(a->rho, b->rho) &&
+	       same_double(a->yield, b->yield);
+}
+
+/* The default scene's physics (what the title describes; solver settings
+ * and outputs are not in it). */
+static int default_physics(const struct anvil_scene *sc)
+{
+	struct anvil_scene d;
+	anvil_scene_default(&d);
+	return same_body(&sc->impactor, &d.impactor) && same_body(&sc->layer, &d.layer) &&
+	       same_double(sc->mass, d.mass) && same_double(sc->radius, d.radius) &&
+	       same_double(sc->thickness, d.thickness) &&
+	       sc->thickness_per_r0 == d.thickness_per_r0 && same_double(sc->velocity, d.velocity);
+}
+
+void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n)
+{
+	char mass[40], radius[40], v[40], h[48];
+	if (n == 0)
+		return;
+	if (sc->title_set) {
+		if (buf != sc->title)
+			snprintf(buf, n, "%s", sc->title);
+		return;
+	}
+	if (default_physics(sc)) {
+		struct anvil_scene d;
+		anvil_scene_default(&d);
+		snprintf(buf, n, "%s", d.title);
+		return;
+	}
+	anvil_units_format(sc->mass, ANVIL_DIM_MASS, mass, sizeof mass);
+	anvil_units_format(sc->radius, ANVIL_DIM_LENGTH, radius, sizeof radius);
+	anvil_units_format(sc->velocity, ANVIL_DIM_VELOCITY, v, sizeof v);
+	if (isinf(anvil_scene_h(sc))) {
+		snprintf(buf, n, "%s %s impactor, r0 = %s, at %s on a %s half-space", mass,
+			 sc->impactor.material, radius, v, sc->layer.material);
+		return;
+	}
+	anvil_units_format(anvil_scene_h(sc), ANVIL_DIM_LENGTH, h, sizeof h);
+	snprintf(buf, n, "%s %s impactor, r0 = %s, at %s on a %s %s layer", mass,
+		 sc->impactor.material, radius, v, h, sc->layer.material);
 }

@@ -17,9 +17,19 @@
  *               field = FILE|off
  *   [material NAME]  E = ..  nu = ..  rho = ..  yield = ..  (a new material)
  *
- * '#' and ';' start comments.  Every key can also be set as SECTION.KEY
+ * '#' and ';' start comments (at the start of a line or after white space).
+ * A value may be written in double quotes, "like # this", to keep '#', ';'
+ * and white space at its ends; inside, \" is a quote and \\ a backslash.
+ * Lines end in LF, CRLF or CR; a leading UTF-8 byte order mark is skipped.
+ * Dimensional values need their unit ("4 mm", not "4"); 'inf' (thickness)
+ * and 'auto' (dt) are words; nu is a bare number.  Every key can also be set as SECTION.KEY
  * (e.g. "layer.thickness", "impactor.E") with anvil_scene_set(), which is
  * what `-s KEY=VALUE` on the command line and the TUI use.
+ *
+ * Values must lie in a physical range (anvil_scene_check lists them:
+ * refused outside it, with the key and the range in the message); values
+ * off any real material or impact, but possible, are only warned about
+ * (anvil_scene_warnings).
  *
  * Errors: ANVIL_EPARSE with a one-line message "FILE:LINE: KEY: what was
  * expected" (with "did you mean 'X'?" for a misspelt key or material).
@@ -46,6 +56,12 @@ struct anvil_output {
 };
 #define ANVIL_MAX_CUSTOM 16
 #define ANVIL_TITLE_MAX 128
+/* The largest scene file read (a scene is a few hundred bytes; this bounds
+ * what a wrong file, such as /dev/zero, can cost), and its longest line. */
+#define ANVIL_SCENE_MAX_BYTES (1024 * 1024)
+#define ANVIL_SCENE_LINE_MAX 1023
+/* Keys whose line is remembered (more than the key table holds). */
+#define ANVIL_SCENE_KEYS_MAX 64
 
 struct anvil_body {
 	char material[ANVIL_NAME_MAX]; /* the named material */
@@ -73,6 +89,14 @@ struct anvil_scene {
 	struct anvil_material custom[ANVIL_MAX_CUSTOM];
 	struct anvil_effects effects; /* defaults: auto, on, on, off */
 	struct anvil_output output;   /* defaults: table on, the rest off */
+	/* 1 when the title was set (scene file or key).  Otherwise every
+	 * function here that changes the scene rewrites title from the scene
+	 * (anvil_scene_title), so that it never describes another scene. */
+	int title_set;
+	/* Where each key was last set, by key number (internal to scene_keys.c):
+	 * > 0 a line of the scene text, -1 anvil_scene_set, 0 not set (the
+	 * default).  For messages such as anvil_scene_warnings'. */
+	int key_line[ANVIL_SCENE_KEYS_MAX];
 };
 
 /* The embedded default scene (the paper's copper rod on a 1 r0 steel layer at
@@ -83,24 +107,57 @@ int anvil_scene_default(struct anvil_scene *sc);
 
 /* Parse scene text on top of what sc holds already (start from
  * anvil_scene_default).  origin names the text in messages (a file name).
- * On error sc may be partly changed; callers keep a copy if they need one. */
+ * On error sc is left as it was. */
 int anvil_scene_parse(struct anvil_scene *sc, const char *text,
 		      const char *origin, struct anvil_err *err);
-/* Read and parse a file ("-" is standard input). */
+/* Read and parse a file ("-" is standard input).  Refused (ANVIL_EPARSE,
+ * naming the file): more than ANVIL_SCENE_MAX_BYTES, a NUL byte, a line
+ * longer than ANVIL_SCENE_LINE_MAX, and a file with no KEY = VALUE at all
+ * (empty or only comments: running the default case instead of what the
+ * user meant to write would be a silent mistake). */
 int anvil_scene_load(struct anvil_scene *sc, const char *path,
 		     struct anvil_err *err);
 /* Set one key, "section.key" (e.g. "layer.thickness") to value with units.
  * origin/line are for messages (line 0: no line). */
 int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 		    const char *origin, int line, struct anvil_err *err);
-/* Whole-scene validation (materials, positive mass/radius/velocity/thickness,
- * dt >= 0).  Parse and set already call it for what they change. */
+/* Whole-scene validation: materials, the ranges below, dt >= 0.  Parse and
+ * set already check each value they read.  The ranges, refused outside
+ * (wide: a warning, anvil_scene_warnings, comes first):
+ *   mass 1 ng .. 1000 t, radius 1 nm .. 1 km, velocity 1 um/s .. 100 km/s,
+ *   thickness h 1 nm .. 1 km (inf: a half-space),
+ *   dt 0 (auto) or 1 fs .. 1 s;
+ * and, as keys are read (the material constants are only checked for sign
+ * and finiteness here, so that code may model a limit such as a rigid
+ * anvil): E 1 kPa .. 1e6 GPa, rho 0.01 .. 1e6 kg/m^3, nu -0.99 .. 0.49999,
+ * yield 0 .. 1e6 GPa. */
 int anvil_scene_check(const struct anvil_scene *sc, struct anvil_err *err);
 
 /* Write sc as scene text that anvil_scene_parse reads back to exactly the
  * same numbers (SI values printed with %.17g).  Returns ANVIL_EIO on a write
  * error. */
 int anvil_scene_write(const struct anvil_scene *sc, FILE *out);
+
+/* Plausibility: values that anvil_scene_check accepts but no real material
+ * or impact has: E below 1 MPa or above 2000 GPa, rho outside 10 .. 30000
+ * kg/m^3 (impactor, layer), a radius below 1 um or above 1 m, a mass below
+ * 1 ug or above 1 t, V0 above 5 km/s, a thickness below 1 um or above
+ * 100 m.  Up to max are stored in w (ANVIL_SCENE_WARNINGS_MAX holds all);
+ * returns how many there are.  Nothing is printed. */
+struct anvil_scene_warning {
+	char key[48];  /* "impactor.mass"; for E and rho the key that set it */
+	int line;      /* as key_line: > 0 a line of the scene text */
+	char msg[160]; /* "2 t is above 1 t (...)" */
+};
+#define ANVIL_SCENE_WARNINGS_MAX 16
+int anvil_scene_warnings(const struct anvil_scene *sc, struct anvil_scene_warning *w,
+			 int max);
+
+/* The title sc should carry: the title set, else the default scene's
+ * title while the physics is the default's, else one made from the scene
+ * ("50 g steel impactor, r0 = 4 mm, at 10 m/s on a 4 mm steel layer").
+ * sc->title is kept equal to it by parse, set and default. */
+void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n);
 
 /* Layer thickness in metres (INFINITY for a half-space). */
 double anvil_scene_h(const struct anvil_scene *sc);

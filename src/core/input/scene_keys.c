@@ -14,7 +14,9 @@
 #include "scene_keys.h"
 #include "units.h"
 
-#define VALUE_MAX 256 /* longest value text; titles are shorter still */
+/* Longest value text: a path of ANVIL_PATH_MAX - 1 bytes, each byte
+ * escaped, in quotes. */
+#define VALUE_MAX (2 * ANVIL_PATH_MAX + 8)
 #define CUSTOM_SOURCE "defined in the scene"
 #define OVERRIDE_SOURCE "overridden in the scene"
 
@@ -132,18 +134,43 @@ static struct anvil_material *custom_find(const struct anvil_scene *sc, const ch
 	return NULL;
 }
 
+/* Real materials anvil has no numbers for: a name one or two letters from
+ * a built-in one ("brass", "glass") is not a typo of it. */
+static const char *const lacking[] = {
+	"brass", "bronze", "iron", "cast-iron", "lead", "gold", "silver", "nickel", "zinc",
+	"tin", "magnesium", "platinum", "rubber", "nylon", "wood", "concrete", "granite",
+	"marble", "ice", "bone", "ceramic", "alumina", "diamond", "quartz"};
+
+/* Material names are short and many differ by two letters ("brass",
+ * "glass"): one edit is a typo, two only when the first letter is right
+ * ("copr", "copper"), as it nearly always is in a typo. */
+static void material_suggest(struct anvil_suggest *s, const char *cand)
+{
+	struct anvil_suggest one = *s;
+	anvil_suggest_try(&one, cand);
+	if (one.dist <= 1 || one.dist == SUGGEST_PREFIX_DIST ||
+	    (one.dist == 2 && tolower((unsigned char)s->word[0]) == tolower((unsigned char)cand[0])))
+		*s = one;
+}
+
 static int material_unknown(const struct anvil_scene *sc, const char *name,
 			    struct anvil_err *err)
 {
 	struct anvil_suggest s;
 	char known[320] = "";
 	size_t len = 0;
+	for (size_t i = 0; i < sizeof lacking / sizeof lacking[0]; ++i)
+		if (strcasecmp(name, lacking[i]) == 0)
+			return anvil_err_set(err, ANVIL_EPARSE,
+					     "'%s' is not a built-in material: define it with "
+					     "[material %s] (E, nu, rho and optionally yield)",
+					     name, name);
 	anvil_suggest_init(&s, name);
 	for (int i = 0; i < anvil_material_count() + sc->ncustom; ++i) {
 		const char *cand = i < anvil_material_count()
 					   ? anvil_material_at(i)->name
 					   : sc->custom[i - anvil_material_count()].name;
-		anvil_suggest_try(&s, cand);
+		material_suggest(&s, cand);
 		if (len < sizeof known)
 			len += (size_t)snprintf(known + len, sizeof known - len, "%s%s",
 						len ? ", " : "", cand);
@@ -220,7 +247,6 @@ int anvil_scene_resolve(struct anvil_scene *sc, struct anvil_body *b,
 
 /* ---- the key table ---- */
 
-enum rule { RULE_ANY, RULE_POSITIVE, RULE_NONNEG, RULE_POISSON };
 enum base { BASE_SCENE, BASE_BODY, BASE_MATERIAL };
 
 struct key;
@@ -238,20 +264,19 @@ struct key {
 	enum base base;
 	size_t off;         /* of the double in the base struct */
 	enum anvil_dim dim; /* of that double */
-	enum rule rule;
+	double lo, hi;      /* its range (ANVIL_RANGE_*) */
 };
 
 #define FIELD(base, k) ((double *)((char *)(base) + (k)->off))
 #define CFIELD(base, k) ((const double *)((const char *)(base) + (k)->off))
 
-static int rule_check(enum rule r, double v, const char *text, struct anvil_err *err)
+int anvil_scene_range_check(double v, double lo, double hi, const char *unit,
+			    const char *text, struct anvil_err *err)
 {
-	static const char *const need[] = {"", "> 0", ">= 0", "in (-1, 0.5)"};
-	int ok = r == RULE_ANY || (r == RULE_POSITIVE && v > 0) ||
-		 (r == RULE_NONNEG && v >= 0) || (r == RULE_POISSON && v > -1 && v < 0.5);
-	if (ok)
+	if (v >= lo && v <= hi)
 		return ANVIL_OK;
-	return anvil_err_set(err, ANVIL_EPARSE, "must be %s, got '%s'", need[r], text);
+	return anvil_err_set(err, ANVIL_EPARSE, "must be within %g .. %g%s%s, got '%s'", lo, hi,
+			     unit[0] ? " " : "", unit, text);
 }
 
 /* The shortest text that reads back to the same double: the fewest %g
@@ -280,8 +305,9 @@ static int set_quantity(struct anvil_scene *sc, void *base, const struct key *k,
 	int st;
 	(void)sc;
 	(void)deferred;
-	if ((st = anvil_units_parse(value, k->dim, &v, err)) ||
-	    (st = rule_check(k->rule, v, value, err)))
+	if ((st = anvil_units_parse_with_unit(value, k->dim, &v, err)) ||
+	    (st = anvil_scene_range_check(v, k->lo, k->hi, anvil_units_si_name(k->dim), value,
+					  err)))
 		return st;
 	*FIELD(base, k) = v;
 	return ANVIL_OK;
@@ -296,31 +322,98 @@ static int put_quantity(const void *base, const struct key *k, char *buf, size_t
 	return 1;
 }
 
+/* Free text (titles, file names) goes into charts, TSV and JSON: one line
+ * of valid UTF-8. */
+static int text_check(const char *value, struct anvil_err *err)
+{
+	for (const char *p = value; *p; ++p)
+		if (iscntrl((unsigned char)*p))
+			return anvil_err_set(err, ANVIL_EPARSE, "must be one line of text");
+	if (!anvil_utf8_valid(value, strlen(value)))
+		return anvil_err_set(err, ANVIL_EPARSE, "is not valid UTF-8 text");
+	return ANVIL_OK;
+}
+
+/* Text as the parser will read it back: bare when it would survive, else
+ * in double quotes with '"' and '\\' escaped (a '#' or ';' starting a
+ * comment, white space at an end, a leading quote). */
+static void put_text(char *buf, size_t n, const char *text)
+{
+	size_t len = strlen(text), j = 0;
+	int quote = len > 0 && (isspace((unsigned char)text[0]) ||
+				isspace((unsigned char)text[len - 1]) || text[0] == '"');
+	for (size_t i = 0; i < len && !quote; ++i)
+		quote = (text[i] == '#' || text[i] == ';') &&
+			(i == 0 || isspace((unsigned char)text[i - 1]));
+	if (!quote) {
+		snprintf(buf, n, "%s", text);
+		return;
+	}
+	if (n < 3) {
+		buf[0] = '\0';
+		return;
+	}
+	buf[j++] = '"';
+	for (size_t i = 0; i < len && j + 3 < n; ++i) {
+		if (text[i] == '"' || text[i] == '\\')
+			buf[j++] = '\\';
+		buf[j++] = text[i];
+	}
+	buf[j++] = '"';
+	buf[j] = '\0';
+}
+
+int anvil_utf8_valid(const char *s, size_t n)
+{
+	const unsigned char *p = (const unsigned char *)s, *end = p + n;
+	while (p < end) {
+		unsigned c = *p++, more, cp;
+		if (c < 0x80)
+			continue;
+		if (c >= 0xc2 && c <= 0xdf)
+			more = 1, cp = c & 0x1f;
+		else if (c >= 0xe0 && c <= 0xef)
+			more = 2, cp = c & 0x0f;
+		else if (c >= 0xf0 && c <= 0xf4)
+			more = 3, cp = c & 0x07;
+		else
+			return 0;
+		if ((size_t)(end - p) < more)
+			return 0;
+		for (unsigned i = 0; i < more; ++i, ++p) {
+			if ((*p & 0xc0) != 0x80)
+				return 0;
+			cp = cp << 6 | (*p & 0x3f);
+		}
+		/* overlong 3- and 4-byte forms, surrogates, beyond U+10FFFF */
+		if ((more == 2 && cp < 0x800) || (more == 3 && cp < 0x10000) ||
+		    (cp >= 0xd800 && cp <= 0xdfff) || cp > 0x10ffff)
+			return 0;
+	}
+	return 1;
+}
+
 static int set_title(struct anvil_scene *sc, void *base, const struct key *k,
 		     const char *value, int deferred, struct anvil_err *err)
 {
+	int st;
 	(void)base;
 	(void)k;
 	(void)deferred;
-	for (const char *p = value; *p; ++p) {
-		if (iscntrl((unsigned char)*p))
-			return anvil_err_set(err, ANVIL_EPARSE, "must be one line of text");
-		/* It would not survive anvil_scene_write and a new parse. */
-		if ((*p == '#' || *p == ';') && p > value && isspace((unsigned char)p[-1]))
-			return anvil_err_set(err, ANVIL_EPARSE,
-					     "'%c' after a space would start a comment", *p);
-	}
+	if ((st = text_check(value, err)))
+		return st;
 	if (strlen(value) >= sizeof sc->title)
-		return anvil_err_set(err, ANVIL_EPARSE, "longer than %d characters",
+		return anvil_err_set(err, ANVIL_EPARSE, "longer than %d bytes",
 				     (int)sizeof sc->title - 1);
 	snprintf(sc->title, sizeof sc->title, "%s", value);
+	sc->title_set = 1;
 	return ANVIL_OK;
 }
 
 static int put_title(const void *base, const struct key *k, char *buf, size_t n)
 {
 	(void)k;
-	snprintf(buf, n, "%s", ((const struct anvil_scene *)base)->title);
+	put_text(buf, n, ((const struct anvil_scene *)base)->title);
 	return 1;
 }
 
@@ -368,9 +461,18 @@ static int set_thickness(struct anvil_scene *sc, void *base, const struct key *k
 			goto bad;
 	} else if (anvil_units_parse(value, ANVIL_DIM_LENGTH, &v, NULL)) {
 		goto bad;
+	} else if (anvil_units_parse_with_unit(value, ANVIL_DIM_LENGTH, &v, err)) {
+		return anvil_err_set(err, ANVIL_EPARSE, "'%s' needs a unit, e.g. %s mm or %s r0 "
+				     "(lengths: m, cm, mm, um; or 'inf')", value, value, value);
 	}
 	if (!(v > 0))
 		return anvil_err_set(err, ANVIL_EPARSE, "must be > 0, got '%s'", value);
+	/* h itself is checked against its range by anvil_scene_check (r0 may
+	 * change after); here only what no r0 can make sensible. */
+	if (!per_r0 && !isinf(v) && anvil_scene_range_check(v, ANVIL_RANGE_LENGTH, "m", value, err))
+		return ANVIL_EPARSE;
+	if (per_r0 && anvil_scene_range_check(v, 1e-6, 1e6, "r0", value, err))
+		return ANVIL_EPARSE;
 	sc->thickness = v;
 	sc->thickness_per_r0 = per_r0;
 	return ANVIL_OK;
@@ -398,13 +500,15 @@ static int set_dt(struct anvil_scene *sc, void *base, const struct key *k,
 	(void)base;
 	(void)k;
 	(void)deferred;
-	if (strcasecmp(value, "auto") != 0 &&
-	    anvil_units_parse(value, ANVIL_DIM_TIME, &v, NULL))
-		return anvil_err_set(err, ANVIL_EPARSE,
-				     "expected a time such as '0.16 us' or 'auto', got '%s'",
-				     value);
-	if (v < 0)
-		return anvil_err_set(err, ANVIL_EPARSE, "must be >= 0, got '%s'", value);
+	if (strcasecmp(value, "auto") != 0) {
+		if (anvil_units_parse(value, ANVIL_DIM_TIME, &v, NULL))
+			return anvil_err_set(err, ANVIL_EPARSE,
+					     "expected a time such as '0.16 us' or 'auto', got '%s'",
+					     value);
+		if (anvil_units_parse_with_unit(value, ANVIL_DIM_TIME, &v, err) ||
+		    anvil_scene_range_check(v, ANVIL_RANGE_DT, "s", value, err))
+			return ANVIL_EPARSE;
+	}
 	sc->dt = v;
 	return ANVIL_OK;
 }
@@ -631,15 +735,11 @@ static int set_path(struct anvil_scene *sc, void *base, const struct key *k,
 	char *dst = (char *)base + k->off;
 	(void)sc;
 	(void)deferred;
+	int st;
 	if (!*value)
 		return anvil_err_set(err, ANVIL_EPARSE, "expected a file name or 'off'");
-	for (const char *p = value; *p; ++p) {
-		if (iscntrl((unsigned char)*p))
-			return anvil_err_set(err, ANVIL_EPARSE, "must be one line of text");
-		if ((*p == '#' || *p == ';') && isspace((unsigned char)p[-1]))
-			return anvil_err_set(err, ANVIL_EPARSE,
-					     "'%c' after a space would start a comment", *p);
-	}
+	if ((st = text_check(value, err)))
+		return st;
 	if (strlen(value) >= ANVIL_PATH_MAX)
 		return anvil_err_set(err, ANVIL_EPARSE, "longer than %d characters",
 				     ANVIL_PATH_MAX - 1);
@@ -650,44 +750,45 @@ static int set_path(struct anvil_scene *sc, void *base, const struct key *k,
 static int put_path(const void *base, const struct key *k, char *buf, size_t n)
 {
 	const char *path = (const char *)base + k->off;
+	char text[ANVIL_PATH_MAX + 2];
 	/* a file really called "off" is written so that it reads back as one */
-	snprintf(buf, n, "%s%s", strcasecmp(path, "off") == 0 ? "./" : "", *path ? path : "off");
+	snprintf(text, sizeof text, "%s%s", strcasecmp(path, "off") == 0 ? "./" : "",
+		 *path ? path : "off");
+	put_text(buf, n, text);
 	return 1;
 }
 
 #define S(sec) ANVIL_SEC_##sec
 #define D(dim) ANVIL_DIM_##dim
-#define Q(sec, key, base, type, field, dim, rule)                                   \
+#define Q(sec, key, base, type, field, dim, range)                                  \
 	{S(sec), key, set_quantity, put_quantity, base, offsetof(type, field), D(dim), \
-	 RULE_##rule}
-#define SCENE_Q(sec, key, field, dim, rule) \
-	Q(sec, key, BASE_SCENE, struct anvil_scene, field, dim, rule)
-#define BODY_Q(sec, key, field, dim, rule) \
-	Q(sec, key, BASE_BODY, struct anvil_body, field, dim, rule)
+	 ANVIL_RANGE_##range}
+#define SCENE_Q(sec, key, field, dim, range) \
+	Q(sec, key, BASE_SCENE, struct anvil_scene, field, dim, range)
 #define FN(sec, key, base, fn) \
-	{S(sec), key, set_##fn, put_##fn, base, 0, ANVIL_DIM_NONE, RULE_ANY}
+	{S(sec), key, set_##fn, put_##fn, base, 0, ANVIL_DIM_NONE, 0, 0}
 /* An int or a char array of the scene, handled by set_/put_fn. */
 #define AT(sec, key, field, fn) \
 	{S(sec), key, set_##fn, put_##fn, BASE_SCENE, offsetof(struct anvil_scene, field), \
-	 ANVIL_DIM_NONE, RULE_ANY}
+	 ANVIL_DIM_NONE, 0, 0}
 /* E, nu, rho, yield: of a body (an override) or of a [material NAME]. */
 #define ELASTIC(sec, base, type)                                    \
-	Q(sec, "E", base, type, E, PRESSURE, POSITIVE),             \
-	Q(sec, "nu", base, type, nu, NONE, POISSON),                \
-	Q(sec, "rho", base, type, rho, DENSITY, POSITIVE),          \
-	Q(sec, "yield", base, type, yield, PRESSURE, NONNEG)
+	Q(sec, "E", base, type, E, PRESSURE, E),                    \
+	Q(sec, "nu", base, type, nu, NONE, NU),                     \
+	Q(sec, "rho", base, type, rho, DENSITY, RHO),               \
+	Q(sec, "yield", base, type, yield, PRESSURE, YIELD)
 
 /* In the order anvil_scene_write prints them. */
 static const struct key keys[] = {
 	FN(SCENE, "title", BASE_SCENE, title),
 	FN(IMPACTOR, "material", BASE_BODY, material),
-	SCENE_Q(IMPACTOR, "mass", mass, MASS, POSITIVE),
-	SCENE_Q(IMPACTOR, "radius", radius, LENGTH, POSITIVE),
+	SCENE_Q(IMPACTOR, "mass", mass, MASS, MASS),
+	SCENE_Q(IMPACTOR, "radius", radius, LENGTH, LENGTH),
 	ELASTIC(IMPACTOR, BASE_BODY, struct anvil_body),
 	FN(LAYER, "material", BASE_BODY, material),
 	FN(LAYER, "thickness", BASE_SCENE, thickness),
 	ELASTIC(LAYER, BASE_BODY, struct anvil_body),
-	SCENE_Q(IMPACT, "velocity", velocity, VELOCITY, POSITIVE),
+	SCENE_Q(IMPACT, "velocity", velocity, VELOCITY, VELOCITY),
 	FN(SOLVER, "accuracy", BASE_SCENE, accuracy),
 	FN(SOLVER, "scheme", BASE_SCENE, scheme),
 	FN(SOLVER, "dt", BASE_SCENE, dt),
@@ -703,6 +804,7 @@ static const struct key keys[] = {
 	ELASTIC(MATERIAL, BASE_MATERIAL, struct anvil_material),
 };
 #define NKEYS ((int)(sizeof keys / sizeof keys[0]))
+_Static_assert(NKEYS <= ANVIL_SCENE_KEYS_MAX, "sc->key_line is too short");
 
 static void *key_base(struct anvil_scene *sc, const struct key *k,
 		      struct anvil_material *m)
@@ -761,8 +863,33 @@ static int key_unknown(int sec, const char *name, const char *key, struct anvil_
 			     section_names[sec], list);
 }
 
+int anvil_scene_key_index(int sec, const char *key)
+{
+	const struct key *k = key_find(sec, key);
+	return k ? (int)(k - keys) : -1;
+}
+
+/* value[0..n) without its double quotes and escapes into v (size VALUE_MAX);
+ * ANVIL_EPARSE when the closing quote is missing or not last. */
+static int unquote(const char *value, size_t n, char *v, struct anvil_err *err)
+{
+	size_t j = 0, i = 1;
+	for (; i < n && value[i] != '"'; ++i) {
+		if (value[i] == '\\' && i + 1 < n && (value[i + 1] == '"' || value[i + 1] == '\\'))
+			++i;
+		v[j++] = value[i];
+	}
+	v[j] = '\0';
+	if (i >= n)
+		return anvil_err_set(err, ANVIL_EPARSE, "missing the closing '\"'");
+	if (i + 1 < n)
+		return anvil_err_set(err, ANVIL_EPARSE, "unexpected text after the closing '\"': '%.*s'",
+				     (int)(n - i - 1), value + i + 1);
+	return ANVIL_OK;
+}
+
 int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
-			const char *key, const char *value, int deferred,
+			const char *key, const char *value, int deferred, int line,
 			struct anvil_err *err)
 {
 	char v[VALUE_MAX];
@@ -779,10 +906,18 @@ int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 	if (n >= sizeof v)
 		return anvil_err_set(err, ANVIL_EPARSE, "value longer than %d characters",
 				     (int)sizeof v - 1);
-	snprintf(v, sizeof v, "%.*s", (int)n, value);
+	if (n > 0 && value[0] == '"') {
+		if ((st = unquote(value, n, v, err)))
+			return st;
+	} else {
+		snprintf(v, sizeof v, "%.*s", (int)n, value);
+	}
 	if (sec == ANVIL_SEC_MATERIAL && (st = anvil_scene_custom_define(sc, name, &m, err)))
 		return st;
-	return k->set(sc, key_base(sc, k, m), k, v, deferred, err);
+	if ((st = k->set(sc, key_base(sc, k, m), k, v, deferred, err)))
+		return st;
+	sc->key_line[k - keys] = line;
+	return ANVIL_OK;
 }
 
 void anvil_scene_keys_write(const struct anvil_scene *sc, int sec, int custom,

@@ -29,13 +29,35 @@ const char *anvil_scene_section_name(int sec);
  * err) when there is none. */
 int anvil_scene_section_find(const char *name, struct anvil_err *err);
 
-/* Set key of section sec to value (trimmed).  name is the NAME of a
- * [material NAME] section, else unused.  When deferred (while parsing), a
- * body's material may be one defined later in the text: call
- * anvil_scene_resolve at the end.  Checks the value alone; ANVIL_EPARSE. */
+/* Set key of section sec to value (trimmed; a value in double quotes is
+ * unquoted).  name is the NAME of a [material NAME] section, else unused.
+ * When deferred (while parsing), a body's material may be one defined later
+ * in the text: call anvil_scene_resolve at the end.  Checks the value alone
+ * (its unit and range); ANVIL_EPARSE.  line goes to sc->key_line. */
 int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
-			const char *key, const char *value, int deferred,
+			const char *key, const char *value, int deferred, int line,
 			struct anvil_err *err);
+/* The key number of SECTION's key (an index of sc->key_line), -1 if none. */
+int anvil_scene_key_index(int sec, const char *key);
+
+/* The ranges values are refused outside of, SI (see anvil_scene_check). */
+#define ANVIL_RANGE_MASS 1e-12, 1e6
+#define ANVIL_RANGE_LENGTH 1e-9, 1e3   /* radius and thickness h */
+#define ANVIL_RANGE_VELOCITY 1e-6, 1e5
+#define ANVIL_RANGE_E 1e3, 1e15
+#define ANVIL_RANGE_YIELD 0.0, 1e15
+#define ANVIL_RANGE_RHO 1e-2, 1e6
+/* nu -> -1 or 0.5 sends mu or c1 to infinity: these keep the wave speeds
+ * finite and the solver's steps bounded. */
+#define ANVIL_RANGE_NU -0.99, 0.49999
+#define ANVIL_RANGE_DT 1e-15, 1.0
+/* "must be within LO .. HI UNIT, got 'TEXT'" when v is outside [lo, hi]. */
+int anvil_scene_range_check(double v, double lo, double hi, const char *unit,
+			    const char *text, struct anvil_err *err);
+
+/* Whether s[0..n) is valid UTF-8 (no overlong forms, surrogates or code
+ * points above U+10FFFF). */
+int anvil_utf8_valid(const char *s, size_t n);
 
 /* Print "key = value" lines for the keys of sec that are set; for
  * ANVIL_SEC_MATERIAL those of sc->custom[custom]. */

@@ -39,6 +39,8 @@ static const struct unit time_units[] = {
 
 struct dim_info {
 	const char *noun;    /* "a mass" */
+	const char *plural;  /* "masses" */
+	const char *unit;    /* "g": the unit of the example */
 	const char *example; /* "12.2 g" */
 	const char *si;      /* "kg" */
 	const struct unit *units;
@@ -46,13 +48,13 @@ struct dim_info {
 
 /* Indexed by enum anvil_dim. */
 static const struct dim_info dims[] = {
-	{"a number", "0.3", "", none_units},
-	{"a mass", "12.2 g", "kg", mass_units},
-	{"a length", "4 mm", "m", length_units},
-	{"a velocity", "10 m/s", "m/s", velocity_units},
-	{"a pressure", "200 GPa", "Pa", pressure_units},
-	{"a density", "7.8 g/cm3", "kg/m^3", density_units},
-	{"a time", "0.16 us", "s", time_units},
+	{"a number", "numbers", "", "0.3", "", none_units},
+	{"a mass", "masses", "g", "12.2 g", "kg", mass_units},
+	{"a length", "lengths", "mm", "4 mm", "m", length_units},
+	{"a velocity", "velocities", "m/s", "10 m/s", "m/s", velocity_units},
+	{"a pressure", "pressures", "GPa", "200 GPa", "Pa", pressure_units},
+	{"a density", "densities", "g/cm3", "7.8 g/cm3", "kg/m^3", density_units},
+	{"a time", "times", "us", "0.16 us", "s", time_units},
 };
 #define NDIMS ((int)(sizeof dims / sizeof dims[0]))
 
@@ -185,4 +187,58 @@ int anvil_units_parse(const char *text, enum anvil_dim dim, double *si,
 		return anvil_err_set(err, ANVIL_EPARSE, "'%.*s' is out of range", (int)n, text);
 	*si = v;
 	return ANVIL_OK;
+}
+
+int anvil_units_parse_with_unit(const char *text, enum anvil_dim dim, double *si,
+				struct anvil_err *err)
+{
+	double v;
+	int st = anvil_units_parse(text, dim, &v, err);
+	if (st || dim == ANVIL_DIM_NONE)
+		goto done;
+	/* It parsed: is there anything after the number? */
+	while (isspace((unsigned char)*text))
+		++text;
+	size_t n = strlen(text);
+	while (n > 0 && isspace((unsigned char)text[n - 1]))
+		--n;
+	char *end;
+	strtod(text, &end);
+	if ((size_t)(end - text) >= n) {
+		char list[96];
+		unit_list(dims[dim].units, list, sizeof list);
+		return anvil_err_set(err, ANVIL_EPARSE, "'%.*s' needs a unit, e.g. %.*s %s (%s: %s)",
+				     (int)n, text, (int)n, text, dims[dim].unit, dims[dim].plural,
+				     list);
+	}
+done:
+	if (!st)
+		*si = v;
+	return st;
+}
+
+/* The unit among dims[] (factor 1, so not km/h; ASCII names) whose number
+ * is nearest 10^1.5 on a log scale (ties to the larger unit): any number in [1, 1000) is nearer than
+ * one outside, so that one is taken when there is one. */
+void anvil_units_format(double si, enum anvil_dim dim, char *buf, size_t n)
+{
+	const struct unit *best = NULL;
+	double best_d = 0;
+	if ((int)dim < 0 || (int)dim >= NDIMS || !isfinite(si) || si == 0 ||
+	    dim == ANVIL_DIM_NONE) {
+		snprintf(buf, n, "%.3g%s%s", si, dim == ANVIL_DIM_NONE ? "" : " ",
+			 anvil_units_si_name(dim));
+		return;
+	}
+	for (const struct unit *u = dims[dim].units; u->name; ++u) {
+		if (u->factor != 1 || !ascii_only(u->name))
+			continue;
+		/* 1.4999: 1 MPa rather than 1000 kPa */
+		double d = fabs(log10(fabs(si)) - u->exp10 - 1.4999);
+		if (!best || d < best_d) {
+			best = u;
+			best_d = d;
+		}
+	}
+	snprintf(buf, n, "%.3g %s", si / pow(10.0, best->exp10), best->name);
 }

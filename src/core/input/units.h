@@ -5,6 +5,8 @@
 #ifndef ANVIL_UNITS_H
 #define ANVIL_UNITS_H
 
+#include <stddef.h>
+
 #include "status.h"
 
 enum anvil_dim {
@@ -23,6 +25,19 @@ enum anvil_dim {
  * infinity and trailing text. */
 int anvil_units_parse(const char *text, enum anvil_dim dim, double *si,
 		      struct anvil_err *err);
+
+/* As anvil_units_parse, but a dimensional quantity must carry its unit:
+ * a bare number is ANVIL_EPARSE with "'4' needs a unit, e.g. 4 mm
+ * (lengths: m, cm, mm, um)".  Dimensionless numbers (ANVIL_DIM_NONE) stay
+ * bare.  This is the rule of scene files, -s KEY=VALUE and the TUI. */
+int anvil_units_parse_with_unit(const char *text, enum anvil_dim dim, double *si,
+				struct anvil_err *err);
+
+/* si (in the SI unit of dim) as "50 g", "4 mm", "10 m/s": three significant
+ * digits in the listed unit that puts the number in [1, 1000) where there
+ * is one (else the nearest).  For titles and messages, not for reading
+ * back exactly (anvil_scene_write prints SI with all digits). */
+void anvil_units_format(double si, enum anvil_dim dim, char *buf, size_t n);
 
 /* The name of a dimension's SI unit, e.g. "kg", "m/s". */
 const char *anvil_units_si_name(enum anvil_dim dim);

@@ -21,7 +21,7 @@ const char *const tui_help_lines[] = {
 	"  Left/Right, h/l       change it by a fine step",
 	"  Shift-Left/Right, H/L change it by a coarse step",
 	"  Enter                 type a value with its unit (e.g. 8 mm, 2 r0, inf);",
-	"                        a bare number takes the unit shown; Esc cancels",
+	"                        a number needs its unit, as in files; Esc cancels",
 	"  Space                 switch a model on or off (on a model row)",
 	"  :                     set any scene key: KEY=VALUE (e.g. layer.E=200GPa)",
 	"  m                     next material of the selected body (clears its",
@@ -538,20 +538,6 @@ static void trim(char *s)
 	memmove(s, s + i, n - i + 1);
 }
 
-/* A bare number in a row that shows a unit means that unit (the file
- * format would read it as SI, but "8" typed beside "4 mm" means 8 mm). */
-static void add_unit(char *v, size_t n, const char *unit)
-{
-	char *end;
-	if (!unit[0] || !v[0])
-		return;
-	double x = strtod(v, &end);
-	if (*end != '\0' || end == v || !isfinite(x)) /* "inf" is a word here */
-		return;
-	size_t len = strlen(v);
-	snprintf(v + len, n - len, "%s%s", strcmp(unit, "r0") ? " " : "", unit);
-}
-
 /* ':' KEY=VALUE */
 static enum tui_action commit_any(struct tui_model *m, char *text)
 {
@@ -577,10 +563,8 @@ static enum tui_action edit_commit(struct tui_model *m)
 	else if (strcmp(m->edit_key, "impactor.material") == 0 ||
 		 strcmp(m->edit_key, "layer.material") == 0)
 		a = set_material(m, m->edit_key[0] == 'i', v);
-	else {
-		add_unit(v, sizeof v, m->edit_unit);
+	else /* the line starts with the unit; a bare number is refused as in files */
 		a = apply(m, m->edit_key, v);
-	}
 	/* on an error the field stays open, with the message, to be fixed */
 	if (a == TUI_ACT_RECOMPUTE)
 		m->editing = 0;
