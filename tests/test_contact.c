@@ -46,9 +46,9 @@ static void test_hertz_limit(void)
 	anvil_result_init(&h, ANVIL_MODEL_HERTZ);
 	anvil_hertz_run(&p, 0, &h, NULL);
 	run(&p, 0.0, TOL, &r, NULL);
-	is_rel(r.ts, h.ts, 1e-9, "beta = 0: t_s is Hertz's");
-	is_rel(r.Pmax, h.Pmax, 1e-9, "beta = 0: P_max is Hertz's");
-	is_abs(r.Rf, 1.0, 1e-9, "beta = 0: R_f = 1");
+	is_rel(r.ts.val, h.ts.val, 1e-9, "beta = 0: t_s is Hertz's");
+	is_rel(r.Pmax.val, h.Pmax.val, 1e-9, "beta = 0: P_max is Hertz's");
+	is_abs(r.Rf.val, 1.0, 1e-9, "beta = 0: R_f = 1");
 
 	/* a block a million times stiffer: beta ~ E^(-3/2) -> 0 */
 	struct anvil_scene sc;
@@ -60,9 +60,9 @@ static void test_hertz_limit(void)
 	anvil_params_from_scene(&p, &sc, NULL);
 	anvil_hertz_run(&p, 0, &h, NULL);
 	run(&p, beta_of(&p), TOL, &r, NULL);
-	is_rel(r.ts, h.ts, 1e-6, "rigid block (E x 1e6): t_s = Hertz's to 1e-6");
-	is_rel(r.Pmax, h.Pmax, 1e-6, "rigid block: P_max = Hertz's to 1e-6");
-	is_abs(r.Rf, 1.0, 1e-6, "rigid block: R_f = 1 to 1e-6");
+	is_rel(r.ts.val, h.ts.val, 1e-6, "rigid block (E x 1e6): t_s = Hertz's to 1e-6");
+	is_rel(r.Pmax.val, h.Pmax.val, 1e-6, "rigid block: P_max = Hertz's to 1e-6");
+	is_abs(r.Rf.val, 1.0, 1e-6, "rigid block: R_f = 1 to 1e-6");
 }
 
 /* A sphere of radius 5 mm of the block's material (steel) at V0. */
@@ -148,12 +148,12 @@ static void test_errors(void)
 	paper_params(&p, INFINITY, 10);
 	run(&p, beta_of(&p), 1e-7, &a, NULL);
 	run(&p, beta_of(&p), 1e-13, &b, NULL);
-	ok(fabs(a.Pmax - b.Pmax) <= a.Pmax_err && fabs(a.ts - b.ts) <= a.ts_err &&
-	   fabs(a.tmax - b.tmax) <= a.tmax_err && fabs(a.Rf - b.Rf) <= a.Rf_err,
+	ok(fabs(a.Pmax.val - b.Pmax.val) <= a.Pmax.err && fabs(a.ts.val - b.ts.val) <= a.ts.err &&
+	   fabs(a.tmax.val - b.tmax.val) <= a.tmax.err && fabs(a.Rf.val - b.Rf.val) <= a.Rf.err,
 	   "tol 1e-7: the error estimates cover the error (P_max %.2g <= %.2g, R_f %.2g <= %.2g)",
-	   fabs(a.Pmax - b.Pmax), a.Pmax_err, fabs(a.Rf - b.Rf), a.Rf_err);
-	ok(b.Pmax_err < 1e-9 * b.Pmax && b.Rf_err < 1e-10, "tol 1e-13: P_max to %.1g, R_f to %.1g",
-	   b.Pmax_err / b.Pmax, b.Rf_err);
+	   fabs(a.Pmax.val - b.Pmax.val), a.Pmax.err, fabs(a.Rf.val - b.Rf.val), a.Rf.err);
+	ok(b.Pmax.err < 1e-9 * b.Pmax.val && b.Rf.err < 1e-10, "tol 1e-13: P_max to %.1g, R_f to %.1g",
+	   b.Pmax.err / b.Pmax.val, b.Rf.err);
 
 	struct anvil_contact_opts o = { 1e-8, 0 };
 	struct anvil_err e;
@@ -171,8 +171,8 @@ static void test_errors(void)
 		pm = fmax(pm, a.hist.P[i]);
 		worst = fmax(worst, fabs(a.hist.W[i] - a.hist.w[i] - a.hist.alpha[i]));
 	}
-	ok(st == ANVIL_OK && a.hist.n == 201 && pm <= a.Pmax * (1 + 1e-9) && pm > 0.999 * a.Pmax &&
-	   worst < 1e-12 && a.hist.P[200] == 0 && fabs(a.hist.v[200] + a.Vs) < 1e-12,
+	ok(st == ANVIL_OK && a.hist.n == 201 && pm <= a.Pmax.val * (1 + 1e-9) && pm > 0.999 * a.Pmax.val &&
+	   worst < 1e-12 && a.hist.P[200] == 0 && fabs(a.hist.v[200] + a.Vs.val) < 1e-12,
 	   "histories: W - w = alpha, max P = P_max, the end state exact");
 	anvil_result_free(&a);
 }
@@ -218,13 +218,13 @@ static void test_paper(void)
 	run(&p, beta_of(&p), TOL, &r, &en);
 	diag("paper's scene (copper rod 12.2 g, r0 4 mm, steel, 10 m/s): eps = %.5g", en.eps);
 	diag("  contact: P_max %.2f N (+- %.1g), t_s %.4f us, t_max %.4f us, R_f %.6f (+- %.1g)",
-	     r.Pmax, r.Pmax_err, r.ts * 1e6, r.tmax * 1e6, r.Rf, r.Rf_err);
+	     r.Pmax.val, r.Pmax.err, r.ts.val * 1e6, r.tmax.val * 1e6, r.Rf.val, r.Rf.err);
 	diag("  Hertz:   P_max %.2f N, t_s %.4f us; paper's half-space row 10780 N, R_f 0.9942",
-	     h.Pmax, h.ts * 1e6);
-	diag("  P_max / Hertz - 1 = %.4f; radiated %.4f of the impact energy", r.Pmax / h.Pmax - 1,
-	     1 - r.Rf * r.Rf);
-	double f = 1 - r.Rf * r.Rf;
-	ok(r.Pmax < h.Pmax && r.Pmax > h.Pmax * (1 - f), "P_max below Hertz's by less than f = %.4f",
+	     h.Pmax.val, h.ts.val * 1e6);
+	diag("  P_max / Hertz - 1 = %.4f; radiated %.4f of the impact energy", r.Pmax.val / h.Pmax.val - 1,
+	     1 - r.Rf.val * r.Rf.val);
+	double f = 1 - r.Rf.val * r.Rf.val;
+	ok(r.Pmax.val < h.Pmax.val && r.Pmax.val > h.Pmax.val * (1 - f), "P_max below Hertz's by less than f = %.4f",
 	   f);
 }
 

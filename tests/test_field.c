@@ -196,7 +196,7 @@ static int impact_make(struct impact *m, const char *thick, const char *acc)
 		diag("impact: %s", e.msg);
 	m->h = anvil_scene_h(&m->sc);
 	m->r0 = m->sc.radius;
-	m->p0max = 3 * m->r.Pmax / (2 * M_PI * m->r0 * m->r0);
+	m->p0max = 3 * m->r.Pmax.val / (2 * M_PI * m->r0 * m->r0);
 	return m->f ? 0 : -1;
 }
 
@@ -224,7 +224,7 @@ static void test_faces(struct impact *m)
 	struct anvil_fval v[NT * NR];
 	struct anvil_field_grid g = {0, 3 * m->r0, 0, 0, NR, 1};
 	for (int i = 0; i < NT; i++)
-		t[i] = m->r.ts * (i + 1) / (NT + 1.0);
+		t[i] = m->r.ts.val * (i + 1) / (NT + 1.0);
 	int st = anvil_field_map(m->f, NT, t, &g, 0, v, NULL);
 	for (int i = 0; !st && i < NT * NR; i++) {
 		double r = 3.0 * (i % NR) / (NR - 1), Z = r < 1 ? 3 / (2 * M_PI) * sqrt(1 - r * r) : 0;
@@ -275,7 +275,7 @@ static void test_centre(struct impact *m)
 static void test_paths(struct impact *m)
 {
 	double r[3] = {0, 0.7 * m->r0, 2 * m->r0}, z[3] = {0.5 * m->r0, m->h, 0.25 * m->r0};
-	double t = m->r.tmax, worst = 0, scale = 0;
+	double t = m->r.tmax.val, worst = 0, scale = 0;
 	for (int i = 0; i < 3; i++) {
 		struct anvil_fval a, b;
 		struct anvil_field_grid g = {r[i], r[i], z[i], z[i], 1, 1};
@@ -441,7 +441,7 @@ static void test_yield_halfspace(void)
 	int st = anvil_field_peak(m.f, 0, &pk, NULL);
 	double want = best * m.p0max;
 	ok(!st && fabs(pk.vm - want) < 5e-3 * want && fabs(pk.z / m.r0 - zbest) < 0.05 &&
-	   pk.r == 0 && fabs(pk.t - m.r.tmax) < 0.05 * m.r.ts,
+	   pk.r == 0 && fabs(pk.t - m.r.tmax.val) < 0.05 * m.r.ts.val,
 	   "half-space: peak von Mises %.4g MPa at z = %.3f r0, t = %.4g us: static Hertz %.4g MPa (%.3f p0) at %.3f r0 at the peak force",
 	   pk.vm * 1e-6, pk.z / m.r0, pk.t * 1e6, want * 1e-6, best, zbest);
 	impact_free(&m);
@@ -455,7 +455,7 @@ static void test_levels(struct impact *m)
 	anvil_params_from_scene(&p, &m->sc, NULL);
 	struct anvil_field *fr = anvil_field_alloc(&p, m->r.hist.P, m->r.hist.n,
 						   m->r.hist.t[1], 0, ANVIL_ACC_REFERENCE, NULL);
-	double r[2] = {0, 0}, z[2] = {0.5 * m->r0, m->h}, t[2] = {0.5 * m->r.tmax, m->r.tmax};
+	double r[2] = {0, 0}, z[2] = {0.5 * m->r0, m->h}, t[2] = {0.5 * m->r.tmax.val, m->r.tmax.val};
 	struct anvil_fval a[4], b[4];
 	int st = anvil_field_points(m->f, 2, r, z, 2, t, a, NULL) ||
 		 anvil_field_points(fr, 2, r, z, 2, t, b, NULL);
@@ -476,12 +476,12 @@ static void test_errors(struct impact *m)
 {
 	struct anvil_err e = {0};
 	struct anvil_fval v;
-	double r = 0, z = 2 * m->h, t = m->r.tmax, bad = -1, P[3] = {0, -1, 0};
+	double r = 0, z = 2 * m->h, t = m->r.tmax.val, bad = -1, P[3] = {0, -1, 0};
 	ok(anvil_field_points(m->f, 1, &r, &z, 1, &t, &v, &e) == ANVIL_EINVAL && strstr(e.msg, "outside"),
 	   "a point below the bottom face: ANVIL_EINVAL (%s)", e.msg);
 	z = 0;
 	ok(anvil_field_points(m->f, 1, &bad, &z, 1, &t, &v, &e) == ANVIL_EINVAL, "r < 0: ANVIL_EINVAL");
-	t = 10 * m->r.ts;
+	t = 10 * m->r.ts.val;
 	ok(anvil_field_points(m->f, 1, &r, &z, 1, &t, &v, &e) == ANVIL_EINVAL && strstr(e.msg, "time"),
 	   "a time past 4 contacts: ANVIL_EINVAL (%s)", e.msg);
 	struct anvil_params p;
@@ -493,7 +493,7 @@ static void test_errors(struct impact *m)
 	ok(!anvil_field_from_result(&p, m->sc.accuracy, &empty, &e) && e.status == ANVIL_EINVAL,
 	   "a result without history: NULL, ANVIL_EINVAL (%s)", e.msg);
 	struct anvil_field_grid g = {0, 1e-3, 0, 1e-3, 0, 4};
-	t = m->r.tmax;
+	t = m->r.tmax.val;
 	ok(anvil_field_map(m->f, 1, &t, &g, 0, &v, &e) == ANVIL_EINVAL, "a 0 x 4 grid: ANVIL_EINVAL");
 	ok(anvil_fq_parse("vm") == ANVIL_FQ_VM && anvil_fq_parse("SRR") == ANVIL_FQ_SRR &&
 	   anvil_fq_parse("x") == -1 && !strcmp(anvil_fq_name(ANVIL_FQ_STT), "stt"),
@@ -511,7 +511,7 @@ static void test_tiny_depth(struct impact *m)
 	struct anvil_fval v[2 * NT];
 	int fin = 1, st;
 	for (int i = 0; i < NT; i++)
-		t[i] = m->r.ts * (i + 1) / (NT + 1.0);
+		t[i] = m->r.ts.val * (i + 1) / (NT + 1.0);
 	st = anvil_field_points(m->f, 2, r, z, NT, t, v, NULL);
 	for (int i = 0; !st && i < NT; i++)
 		for (int q = 0; q < ANVIL_FQ_COUNT; q++) {
@@ -530,7 +530,7 @@ static void test_tiny_depth(struct impact *m)
 	cplx c = anvil_kernel_cmplx(2.0, -0.0);
 	ok(creal(c) == 2.0 && cimag(c) == 0 && signbit(cimag(c)), "anvil_kernel_cmplx keeps -0.0 (the cut's side)");
 	struct anvil_err e = {0};
-	double far = 1e12 * m->r0, z0 = 0, t0 = m->r.tmax;
+	double far = 1e12 * m->r0, z0 = 0, t0 = m->r.tmax.val;
 	ok(anvil_field_points(m->f, 1, &far, &z0, 1, &t0, v, &e) == ANVIL_EINVAL && strstr(e.msg, "bounds"),
 	   "r = 1e12 r0: refused, not computed for ever (%s)", e.msg);
 }

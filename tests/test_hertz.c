@@ -59,11 +59,11 @@ static void test_closed_form(double V0, double ts_ref, double pmax_ref)
 	anvil_result_init(&r, ANVIL_MODEL_HERTZ);
 	int st = anvil_hertz_run(&p, 0, &r, &e);
 	ok(st == ANVIL_OK, "hertz V0 = %g runs", V0);
-	is_rel(r.ts, ts_ref, 1e-9, "V0 = %g: t_s = %.6g us", V0, 1e6 * ts_ref);
-	is_rel(r.tmax, 0.5 * ts_ref, 1e-9, "V0 = %g: t_max = t_s / 2", V0);
-	is_rel(r.Pmax, pmax_ref, 1e-9, "V0 = %g: P_max = %.6g kN", V0, 1e-3 * pmax_ref);
-	ok(r.Vs == V0 && r.Rf == 1.0 && r.Ea == 0.0, "V0 = %g: V_s = V0, R_f = 1, E_a = 0", V0);
-	ok(r.ts_err > 0 && r.ts_err < 1e-14 * r.ts && r.Pmax_err < 1e-14 * r.Pmax,
+	is_rel(r.ts.val, ts_ref, 1e-9, "V0 = %g: t_s = %.6g us", V0, 1e6 * ts_ref);
+	is_rel(r.tmax.val, 0.5 * ts_ref, 1e-9, "V0 = %g: t_max = t_s / 2", V0);
+	is_rel(r.Pmax.val, pmax_ref, 1e-9, "V0 = %g: P_max = %.6g kN", V0, 1e-3 * pmax_ref);
+	ok(r.Vs.val == V0 && r.Rf.val == 1.0 && r.Ea.val == 0.0, "V0 = %g: V_s = V0, R_f = 1, E_a = 0", V0);
+	ok(r.ts.err > 0 && r.ts.err < 1e-14 * r.ts.val && r.Pmax.err < 1e-14 * r.Pmax.val,
 	   "V0 = %g: closed-form error estimates ~1e-15", V0);
 	ok(r.lambda_star == p.lambda_star && r.Rf_star == p.Rf_star,
 	   "V0 = %g: lambda*, R_f* copied for display", V0);
@@ -77,10 +77,10 @@ static void test_closed_form(double V0, double ts_ref, double pmax_ref)
 	anvil_result_init(&z, ANVIL_MODEL_ZENER);
 	st = anvil_zener_run(&p, 0, &z, &e);
 	ok(st == ANVIL_OK, "zener on a half-space runs (%s)", st ? e.msg : "ok");
-	is_rel(z.ts, ts_ref, 1e-9, "V0 = %g: zener half-space t_s = hertz", V0);
-	is_rel(z.tmax, 0.5 * ts_ref, 1e-9, "V0 = %g: zener half-space t_max = hertz", V0);
-	is_rel(z.Pmax, pmax_ref, 1e-9, "V0 = %g: zener half-space P_max = hertz", V0);
-	is_abs(z.Rf, 1.0, 1e-9, "V0 = %g: zener half-space R_f = 1", V0);
+	is_rel(z.ts.val, ts_ref, 1e-9, "V0 = %g: zener half-space t_s = hertz", V0);
+	is_rel(z.tmax.val, 0.5 * ts_ref, 1e-9, "V0 = %g: zener half-space t_max = hertz", V0);
+	is_rel(z.Pmax.val, pmax_ref, 1e-9, "V0 = %g: zener half-space P_max = hertz", V0);
+	is_abs(z.Rf.val, 1.0, 1e-9, "V0 = %g: zener half-space R_f = 1", V0);
 	anvil_result_free(&z);
 }
 
@@ -98,10 +98,10 @@ static void test_history(void)
 		return;
 	const struct anvil_history *h = &r.hist;
 	is_abs(h->t[0], 0.0, 0.0, "history starts at t = 0");
-	is_rel(h->t[n - 1], r.ts, 1e-9, "history ends at t_s");
+	is_rel(h->t[n - 1], r.ts.val, 1e-9, "history ends at t_s");
 	is_rel(h->v[0], p.V0, 1e-15, "v(0) = V0");
 	is_rel(h->v[n - 1], -p.V0, 1e-9, "v(t_s) = -V0");
-	is_rel(h->P[(n - 1) / 2], r.Pmax, 1e-9, "P(t_s/2) = P_max");
+	is_rel(h->P[(n - 1) / 2], r.Pmax.val, 1e-9, "P(t_s/2) = P_max");
 	ok(h->alpha[n - 1] < 1e-9 * h->alpha[(n - 1) / 2], "alpha(t_s) = 0");
 	double ework = 0, wmax = 0, dW = 0;
 	for (size_t i = 0; i < n; i++) {

@@ -75,8 +75,8 @@ static void test_tables(void)
 		struct anvil_err e;
 		paper_scene(&sc, w, ANVIL_ACC_NORMAL);
 		int st = run(&sc, model_of(w), &r, &e);
-		double dP = 1e-3 * r.Pmax / w->Pmax - 1, dt = 1e6 * r.ts / w->ts - 1;
-		double dm = 1e6 * r.tmax / w->tmax - 1, dR = r.Rf - w->Rf;
+		double dP = 1e-3 * r.Pmax.val / w->Pmax - 1, dt = 1e6 * r.ts.val / w->ts - 1;
+		double dm = 1e6 * r.tmax.val / w->tmax - 1, dR = r.Rf.val - w->Rf;
 		diag("V0 %3g h %4g r0: P_max %+.2f%%  t_s %+.2f%%  t_max %+.2f%%  R_f %+.4f", w->V0,
 		     w->h_r0, 100 * dP, 100 * dt, 100 * dm, dR);
 		ok(st == ANVIL_OK && fabs(dP) < 0.03 && fabs(dt) < 0.03 && fabs(dm) < 0.03 && fabs(dR) < 0.02,
@@ -111,16 +111,16 @@ static void test_levels(void)
 		for (int a = 0; a < ANVIL_ACC_REFERENCE; a++) {
 			paper_scene(&sc, w, (enum anvil_accuracy)a);
 			fail |= run(&sc, model_of(w), &r, &e) != ANVIL_OK;
-			worst[a] = fmax(rel(r.Pmax, ref.Pmax, 0), fmax(rel(r.ts, ref.ts, 0), rel(r.Rf, ref.Rf, 0.1)));
+			worst[a] = fmax(rel(r.Pmax.val, ref.Pmax.val, 0), fmax(rel(r.ts.val, ref.ts.val, 0), rel(r.Rf.val, ref.Rf.val, 0.1)));
 			if (a == ANVIL_ACC_NORMAL)
-				cover = fabs(r.Pmax - ref.Pmax) <= r.Pmax_err + ref.Pmax_err &&
-					fabs(r.ts - ref.ts) <= r.ts_err + ref.ts_err &&
-					fabs(r.Rf - ref.Rf) <= r.Rf_err + ref.Rf_err;
+				cover = fabs(r.Pmax.val - ref.Pmax.val) <= r.Pmax.err + ref.Pmax.err &&
+					fabs(r.ts.val - ref.ts.val) <= r.ts.err + ref.ts.err &&
+					fabs(r.Rf.val - ref.Rf.val) <= r.Rf.err + ref.Rf.err;
 			if (a == ANVIL_ACC_NORMAL && !cover)
 				diag("  P_max %.2e vs %.2e, t_s %.2e vs %.2e, R_f %.2e vs %.2e (relative)",
-				     fabs(r.Pmax - ref.Pmax) / ref.Pmax, (r.Pmax_err + ref.Pmax_err) / ref.Pmax,
-				     fabs(r.ts - ref.ts) / ref.ts, (r.ts_err + ref.ts_err) / ref.ts,
-				     fabs(r.Rf - ref.Rf), r.Rf_err + ref.Rf_err);
+				     fabs(r.Pmax.val - ref.Pmax.val) / ref.Pmax.val, (r.Pmax.err + ref.Pmax.err) / ref.Pmax.val,
+				     fabs(r.ts.val - ref.ts.val) / ref.ts.val, (r.ts.err + ref.ts.err) / ref.ts.val,
+				     fabs(r.Rf.val - ref.Rf.val), r.Rf.err + ref.Rf.err);
 			anvil_result_free(&r);
 		}
 		ok(!fail && worst[0] < anvil_accuracy_target(ANVIL_ACC_DRAFT) &&
@@ -142,7 +142,7 @@ static void test_thick_is_halfspace(void)
 	set(&sc, "layer.thickness", "%g r0", 1000);
 	run(&sc, ANVIL_MODEL_LAYER, &a, &e);
 	run(&sc, ANVIL_MODEL_HALFSPACE, &b, &e);
-	ok(a.Pmax == b.Pmax && a.ts == b.ts && a.Rf == b.Rf && strstr(a.note, "2h/c1"),
+	ok(a.Pmax.val == b.Pmax.val && a.ts.val == b.ts.val && a.Rf.val == b.Rf.val && strstr(a.note, "2h/c1"),
 	   "h = 1000 r0: the layer is the half-space during the contact (%s)", a.note);
 	anvil_result_free(&a);
 	anvil_result_free(&b);
@@ -160,15 +160,15 @@ static void hard(const char *what, const char *key, const char *value)
 		return;
 	}
 	int st = run(&sc, ANVIL_MODEL_LAYER, &r, &e);
-	int finite = isfinite(r.ts) && isfinite(r.Pmax) && isfinite(r.Rf) && isfinite(r.Ea) &&
-		     r.ts > 0 && r.Pmax > 0;
+	int finite = isfinite(r.ts.val) && isfinite(r.Pmax.val) && isfinite(r.Rf.val) && isfinite(r.Ea.val) &&
+		     r.ts.val > 0 && r.Pmax.val > 0;
 	if (st == ANVIL_OK) {
 		sc.accuracy = ANVIL_ACC_DRAFT;
 		int sd = run(&sc, ANVIL_MODEL_LAYER, &d, &ed);
-		double dev = fmax(rel(d.Pmax, r.Pmax, 0), fmax(rel(d.ts, r.ts, 0), rel(d.Rf, r.Rf, 0.1)));
+		double dev = fmax(rel(d.Pmax.val, r.Pmax.val, 0), fmax(rel(d.ts.val, r.ts.val, 0), rel(d.Rf.val, r.Rf.val, 0.1)));
 		ok(finite && sd == ANVIL_OK && dev < anvil_accuracy_target(ANVIL_ACC_DRAFT),
 		   "%s: finite (P_max %.4g N, t_s %.4g us, R_f %.4f), draft within its target of normal (%.1e)",
-		   what, r.Pmax, 1e6 * r.ts, r.Rf, dev);
+		   what, r.Pmax.val, 1e6 * r.ts.val, r.Rf.val, dev);
 		anvil_result_free(&d);
 	} else {
 		ok((st == ANVIL_ETOL || st == ANVIL_EINVAL) && strlen(e.msg) > 20,
@@ -208,7 +208,7 @@ static void test_continuity(void)
 		run(&sc, ANVIL_MODEL_LAYER, &x, &e);
 		anvil_scene_set(&sc, keys[i], b[i], "test", 0, NULL);
 		run(&sc, ANVIL_MODEL_LAYER, &y, &e);
-		double d = fmax(rel(x.Pmax, y.Pmax, 0), fmax(rel(x.ts, y.ts, 0), rel(x.Rf, y.Rf, 0.1)));
+		double d = fmax(rel(x.Pmax.val, y.Pmax.val, 0), fmax(rel(x.ts.val, y.ts.val, 0), rel(x.Rf.val, y.Rf.val, 0.1)));
 		ok(d < 0.02, "a 1 %% change of %s moves the outputs by %.2g (continuous)", keys[i], d);
 		anvil_result_free(&x);
 		anvil_result_free(&y);
@@ -228,9 +228,9 @@ static void test_paper_scheme(void)
 		anvil_scene_set(&sc, "solver.scheme", "paper", "test", 0, NULL);
 		anvil_scene_set(&sc, "solver.dt", "1 us", "test", 0, NULL);
 		run(&sc, ANVIL_MODEL_LAYER, &p, &e);
-		ok(p.Rf > 1.0 && q.Rf < 1.0 && p.Pmax > q.Pmax,
+		ok(p.Rf.val > 1.0 && q.Rf.val < 1.0 && p.Pmax.val > q.Pmax.val,
 		   "h = %g r0: the paper's scheme at dt = 1 us gives R_f = %.4f > 1 (implicit: %.4f)", hs[i],
-		   p.Rf, q.Rf);
+		   p.Rf.val, q.Rf.val);
 		anvil_result_free(&p);
 		anvil_result_free(&q);
 	}

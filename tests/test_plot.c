@@ -30,9 +30,9 @@ static void fake_result(struct anvil_result *r, enum anvil_model m, double scale
 		r->hist.w[i] = 1e-6 * i * scale;
 		r->hist.W[i] = r->hist.alpha[i] = 0;
 	}
-	r->Rf = 0.5 * scale;
-	r->Pmax = 4000 * scale;
-	r->ts = 4e-5 * scale;
+	r->Rf.val = 0.5 * scale;
+	r->Pmax.val = 4000 * scale;
+	r->ts.val = 4e-5 * scale;
 }
 
 static char *slurp(const char *path)
@@ -195,7 +195,7 @@ static void test_rf_thickness(void)
 				       {100, INFINITY, 0.991, 0.0025, 0.9957, 161.5, 27}}};
 	for (int i = 0; i < 5; i++)
 		anvil_result_init(&r[i], i < 4 ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE);
-	r[0].Rf = 0.77, r[1].Rf = 0.344, r[2].Rf = 0.657, r[3].Rf = 0.177, r[4].Rf = 0.991;
+	r[0].Rf.val = 0.77, r[1].Rf.val = 0.344, r[2].Rf.val = 0.657, r[3].Rf.val = 0.177, r[4].Rf.val = 0.991;
 	struct plot_run runs[] = {
 		{&r[0], ANVIL_MODEL_LAYER, 2, 10, 0.158},
 		{&r[1], ANVIL_MODEL_LAYER, 1, 10, 0.633}, /* out of order on purpose */
@@ -247,7 +247,7 @@ static void test_rf_lambda(void)
 		int half = i % 5 == 4;
 		enum anvil_model m = half ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 		anvil_result_init(&r[i], m);
-		r[i].Rf = rf[i];
+		r[i].Rf.val = rf[i];
 		runs[i] = (struct plot_run){&r[i], m, hh[i % 5], i < 5 ? 10 : 100, lam[i]};
 	}
 	plot_opts_default(&o);
@@ -282,15 +282,15 @@ static void test_accuracy(void)
 	static const double P[] = {10500, 0, 10010, 10000}, secs[] = {0.01, 0.05, 0.4, 3.2};
 	for (int i = 0; i < ANVIL_ACC_COUNT; i++) {
 		anvil_result_init(&r[i], ANVIL_MODEL_LAYER);
-		r[i].Pmax = P[i];
-		r[i].ts = 4e-5 * (1 + 1e-3 / (i + 1));
-		r[i].Rf = 0.34;             /* equal: no error to draw on a log axis */
+		r[i].Pmax.val = P[i];
+		r[i].ts.val = 4e-5 * (1 + 1e-3 / (i + 1));
+		r[i].Rf.val = 0.34;             /* equal: no error to draw on a log axis */
 		r[i].seconds = secs[i];
 		runs[i] = (struct plot_run){i == 1 ? NULL : &r[i], ANVIL_MODEL_LAYER, 1, 10, 0.633};
 	}
-	r[3].Pmax_err = 1.0;
-	r[3].ts_err = 4e-10;
-	r[3].Rf_err = 3.4e-6;
+	r[3].Pmax.err = 1.0;
+	r[3].ts.err = 4e-10;
+	r[3].Rf.err = 3.4e-6;
 	plot_opts_default(&o);
 	ok(plot_chart_accuracy(&c, runs) == ANVIL_OK, "accuracy chart built");
 	int targets = 1;

@@ -334,7 +334,7 @@ static struct anvil_result fake(enum anvil_model model, double ts)
 {
 	struct anvil_result r;
 	anvil_result_init(&r, model);
-	r.ts = ts;
+	r.ts.val = ts;
 	anvil_history_alloc(&r.hist, 3);
 	r.hist.t[2] = ts;
 	return r;
@@ -352,7 +352,7 @@ static void test_generations(void)
 	ok(tui_model_deliver(m, g, ANVIL_MODEL_ZENER, ANVIL_OK, NULL, &r) == 1,
 	   "a current result is used");
 	ok(m->rows[ANVIL_MODEL_ZENER].state == TUI_ROW_DONE &&
-	   m->rows[ANVIL_MODEL_ZENER].res.ts == 40e-6 &&
+	   m->rows[ANVIL_MODEL_ZENER].res.ts.val == 40e-6 &&
 	   m->rows[ANVIL_MODEL_ZENER].res.hist.n == 3 && r.hist.n == 0,
 	   "the row holds it and owns its history");
 	r = fake(ANVIL_MODEL_HERTZ, 1);
@@ -374,7 +374,7 @@ static void test_generations(void)
 	tui_model_key(m, 'h');
 	ok(tui_model_request(m) == 0 && !tui_model_busy(m) && m->run_cached == 2,
 	   "back to a scene seen before: all from the cache");
-	ok(m->rows[ANVIL_MODEL_ZENER].res.ts == 40e-6 &&
+	ok(m->rows[ANVIL_MODEL_ZENER].res.ts.val == 40e-6 &&
 	   m->rows[ANVIL_MODEL_ZENER].res.hist.n == 3 &&
 	   m->rows[ANVIL_MODEL_HERTZ].status == ANVIL_EINVAL,
 	   "with the values, the history and the failure");
@@ -409,7 +409,7 @@ static void test_effects_key(void)
 	m->sc.models = 1u << ANVIL_MODEL_LAYER;
 	ok(tui_model_request(m) == (1u << ANVIL_MODEL_LAYER), "the layer row is asked for");
 	deliver_layer(m, s);
-	double p_layer = m->rows[ANVIL_MODEL_LAYER].res.Pmax;
+	double p_layer = m->rows[ANVIL_MODEL_LAYER].res.Pmax.val;
 	is_rel(p_layer, 6.739e3, 1e-3, "the paper's layer: P_max %.4g kN", p_layer * 1e-3);
 	type(m, ":effects.waves = halfspace");
 	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE &&
@@ -417,13 +417,13 @@ static void test_effects_key(void)
 	ok(tui_model_request(m) == (1u << ANVIL_MODEL_LAYER) && m->run_cached == 0,
 	   "not served from the cache: the key holds [effects]");
 	deliver_layer(m, s);
-	double p_hs = m->rows[ANVIL_MODEL_LAYER].res.Pmax;
+	double p_hs = m->rows[ANVIL_MODEL_LAYER].res.Pmax.val;
 	is_rel(p_hs, 10.78e3, 1e-3, "new rows: the layer row by the half-space, P_max %.4g kN",
 	       p_hs * 1e-3);
 	type(m, ":effects.waves = auto");
 	tui_model_key(m, TUI_KEY_ENTER);
 	ok(tui_model_request(m) == 0 && m->run_cached == 1 &&
-		   m->rows[ANVIL_MODEL_LAYER].res.Pmax == p_layer,
+		   m->rows[ANVIL_MODEL_LAYER].res.Pmax.val == p_layer,
 	   "back to waves = auto: the first rows, from the cache");
 	anvil_solver_free(s);
 }

@@ -110,15 +110,15 @@ static void check_errors(const struct anvil_params *p, const struct anvil_result
 	int st = anvil_zener_solve(p->lambda_star, 1e-13, &ref, NULL);
 	if (!ok(st == ANVIL_OK, "reference solve at tol 1e-13"))
 		return;
-	double dts = fabs(r->ts - p->T * ref.tau_s), dtm = fabs(r->tmax - p->T * ref.tau_max);
-	double dP = fabs(r->Pmax - p->K * pow(p->T * p->V0 * ref.alpha_max, 1.5));
-	double dR = fabs(r->Rf - ref.rf);
-	ok(dts <= r->ts_err && dtm <= r->tmax_err && dP <= r->Pmax_err && dR <= r->Rf_err,
+	double dts = fabs(r->ts.val - p->T * ref.tau_s), dtm = fabs(r->tmax.val - p->T * ref.tau_max);
+	double dP = fabs(r->Pmax.val - p->K * pow(p->T * p->V0 * ref.alpha_max, 1.5));
+	double dR = fabs(r->Rf.val - ref.rf);
+	ok(dts <= r->ts.err && dtm <= r->tmax.err && dP <= r->Pmax.err && dR <= r->Rf.err,
 	   "error estimates cover the error: ts %.2g <= %.2g s, tmax %.2g <= %.2g s, "
-	   "Pmax %.2g <= %.2g N, Rf %.2g <= %.2g", dts, r->ts_err, dtm, r->tmax_err, dP,
-	   r->Pmax_err, dR, r->Rf_err);
-	ok(r->ts_err < 1e-6 * r->ts && r->Pmax_err < 1e-6 * r->Pmax && r->Rf_err < 1e-6 &&
-	   fabs(r->Ea_err) < 1e-6 * p->m1 * p->V0 * p->V0,
+	   "Pmax %.2g <= %.2g N, Rf %.2g <= %.2g", dts, r->ts.err, dtm, r->tmax.err, dP,
+	   r->Pmax.err, dR, r->Rf.err);
+	ok(r->ts.err < 1e-6 * r->ts.val && r->Pmax.err < 1e-6 * r->Pmax.val && r->Rf.err < 1e-6 &&
+	   fabs(r->Ea.err) < 1e-6 * p->m1 * p->V0 * p->V0,
 	   "error estimates below 1e-6 relative");
 }
 
@@ -146,12 +146,12 @@ static void test_table(void)
 		/* lambda* is printed to 2-5 digits: allow the printed rounding too. */
 		compare(w, "lambda*", r.lambda_star, w->lambda,
 			0.005 + printed_rounding(w->lambda));
-		compare(w, "t*_s", 1e6 * r.ts, w->ts, 0.005);
-		compare(w, "t*_max", 1e6 * r.tmax, w->tmax, 0.025);
-		compare(w, "P*_max", 1e-3 * r.Pmax, w->Pmax, 0.005);
+		compare(w, "t*_s", 1e6 * r.ts.val, w->ts, 0.005);
+		compare(w, "t*_max", 1e6 * r.tmax.val, w->tmax, 0.025);
+		compare(w, "P*_max", 1e-3 * r.Pmax.val, w->Pmax, 0.005);
 		compare(w, "R*_f", r.Rf_star, w->Rf, 0.005);
 		diag("%-4g %-3g %-7s %11.5g %9s %+8.3f %%  (ODE R_f vs (54))", w->V0, w->h_r0,
-		     "R_f", r.Rf, w->Rf, 100 * (r.Rf / atof(w->Rf) - 1));
+		     "R_f", r.Rf.val, w->Rf, 100 * (r.Rf.val / atof(w->Rf) - 1));
 		check_errors(&p, &r);
 		ok(w->h_r0 > 1 ? strstr(r.note, "thick") != NULL : r.note[0] == '\0',
 		   "note: \"%s\"", r.note);
@@ -227,11 +227,11 @@ static void test_history(void)
 	ok(dw < 1e-8, "w = alpha* m1 (V0 - v) along the history (max rel. dev. %.2g)", dw);
 	ok(dalpha < 1e-12 * p.r0, "alpha_H = W - w");
 	is_abs(h->t[0], 0.0, 0.0, "starts at t = 0");
-	is_rel(h->t[n - 1], r.ts, 1e-15, "ends at t_s");
-	is_rel(h->v[n - 1], -r.Vs, 1e-9, "v(t_s) = -V_s");
+	is_rel(h->t[n - 1], r.ts.val, 1e-15, "ends at t_s");
+	is_rel(h->v[n - 1], -r.Vs.val, 1e-9, "v(t_s) = -V_s");
 	ok(fabs(h->alpha[n - 1]) < 1e-9 * h->alpha[imax], "alpha(t_s) = 0");
-	ok(fabs(h->t[imax] - r.tmax) <= r.ts / (n - 1), "peak of P history at t_max");
-	ok(h->P[imax] <= r.Pmax * (1 + 1e-12) && h->P[imax] > 0.999 * r.Pmax,
+	ok(fabs(h->t[imax] - r.tmax.val) <= r.ts.val / (n - 1), "peak of P history at t_max");
+	ok(h->P[imax] <= r.Pmax.val * (1 + 1e-12) && h->P[imax] > 0.999 * r.Pmax.val,
 	   "peak of P history just below P_max");
 	anvil_result_free(&r);
 }

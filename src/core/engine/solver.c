@@ -156,12 +156,12 @@ static int response_ramp(void *ctx, double tau, double *val)
  * error). */
 static void add_green_error(struct anvil_result *r, const struct anvil_result *c)
 {
-	r->ts_err += fabs(r->ts - c->ts);
-	r->tmax_err += fabs(r->tmax - c->tmax);
-	r->Pmax_err += fabs(r->Pmax - c->Pmax);
-	r->Vs_err += fabs(r->Vs - c->Vs);
-	r->Rf_err += fabs(r->Rf - c->Rf);
-	r->Ea_err += fabs(r->Ea - c->Ea);
+	r->ts.err += fabs(r->ts.val - c->ts.val);
+	r->tmax.err += fabs(r->tmax.val - c->tmax.val);
+	r->Pmax.err += fabs(r->Pmax.val - c->Pmax.val);
+	r->Vs.err += fabs(r->Vs.val - c->Vs.val);
+	r->Rf.err += fabs(r->Rf.val - c->Rf.val);
+	r->Ea.err += fabs(r->Ea.val - c->Ea.val);
 }
 
 /* Add a model's estimated relative deviation d from the row's full model
@@ -169,12 +169,12 @@ static void add_green_error(struct anvil_result *r, const struct anvil_result *c
  * by m1 V_s^2 d when V_s moves by d V_s. */
 static void add_model_error(struct anvil_result *r, const struct anvil_params *p, double d)
 {
-	r->ts_err += d * r->ts;
-	r->tmax_err += d * r->tmax;
-	r->Pmax_err += d * r->Pmax;
-	r->Vs_err += d * fabs(r->Vs);
-	r->Rf_err += d * fabs(r->Rf);
-	r->Ea_err += d * p->m1 * fmax(r->Vs * r->Vs, d * p->V0 * p->V0);
+	r->ts.err += d * r->ts.val;
+	r->tmax.err += d * r->tmax.val;
+	r->Pmax.err += d * r->Pmax.val;
+	r->Vs.err += d * fabs(r->Vs.val);
+	r->Rf.err += d * fabs(r->Rf.val);
+	r->Ea.err += d * p->m1 * fmax(r->Vs.val * r->Vs.val, d * p->V0 * p->V0);
 }
 
 /* The accuracy target against the error estimates: P_max and t_s
@@ -185,13 +185,13 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err)
 {
 	double tgt = anvil_accuracy_target(acc);
-	double e_p = r->Pmax_err / r->Pmax, e_t = r->ts_err / r->ts;
-	double e_r = r->Rf_err / fmax(fabs(r->Rf), 0.1);
-	if (!isfinite(r->ts) || !isfinite(r->Pmax) || !isfinite(r->Rf) || !(r->ts > 0) ||
-	    !(r->Pmax > 0) || r->Rf > 1.0 + fmax(10.0 * r->Rf_err, 1e-6))
+	double e_p = r->Pmax.err / r->Pmax.val, e_t = r->ts.err / r->ts.val;
+	double e_r = r->Rf.err / fmax(fabs(r->Rf.val), 0.1);
+	if (!isfinite(r->ts.val) || !isfinite(r->Pmax.val) || !isfinite(r->Rf.val) || !(r->ts.val > 0) ||
+	    !(r->Pmax.val > 0) || r->Rf.val > 1.0 + fmax(10.0 * r->Rf.err, 1e-6))
 		return anvil_err_set(err, ANVIL_ENUM,
 				     "%s: the solution is unphysical (t_s = %.3g us, P_max = %.3g N, R_f = %.3g): the time stepping is unstable for this scene",
-				     anvil_model_name(r->model), r->ts * 1e6, r->Pmax, r->Rf);
+				     anvil_model_name(r->model), r->ts.val * 1e6, r->Pmax.val, r->Rf.val);
 	if (e_p > tgt || e_t > tgt || e_r > tgt)
 		return anvil_err_set(err, ANVIL_WTOL,
 				     "%s: accuracy '%s' (%.0e) not reached: estimated errors P_max %.1e, t_s %.1e, R_f %.1e",
@@ -236,7 +236,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		anvil_result_init(r, m);
 		st = anvil_impact_run(p, response_ramp, &wv->rs, tau_end, &wv->io, r, err);
 		wv->tau_end = tau_end;
-		if (st == ANVIL_ETOL && !isnan(r->ts))
+		if (st == ANVIL_ETOL && !isnan(r->ts.val))
 			break;
 	}
 	return st;
@@ -303,14 +303,14 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 		snprintf(r->note, sizeof r->note,
 			 "half-space response: reflections return at 2h/c1 = %.3g us, during the contact, but change the results by ~%.2g%%, within the target; errors include it",
 			 t_refl, 100 * row->model_err);
-	else if (method == ANVIL_METHOD_HALFSPACE && r->ts > 2.0 * p->h / p->c1)
+	else if (method == ANVIL_METHOD_HALFSPACE && r->ts.val > 2.0 * p->h / p->c1)
 		snprintf(r->note, sizeof r->note,
 			 "half-space response (effects.waves = halfspace): reflections return at 2h/c1 = %.3g us, during the contact: not the layer",
 			 t_refl);
 	else if (!corr)
 		snprintf(r->note, sizeof r->note,
 			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
-			 t_refl, r->ts * 1e6);
+			 t_refl, r->ts.val * 1e6);
 }
 
 /* A wave row (STATIC, HALFSPACE or LAYER) as the plan says, with its
@@ -325,7 +325,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
-	if (!st && row.fallback && !(r->ts < 2.0 * p->h / p->c1)) {
+	if (!st && row.fallback && !(r->ts.val < 2.0 * p->h / p->c1)) {
 		row.method = ANVIL_METHOD_LAYER;
 		row.why = ANVIL_WHY_NOT_ASKED;
 		row.exact = 1;

@@ -208,7 +208,7 @@ struct anvil_field *anvil_field_from_result(const struct anvil_params *lp,
 	}
 	if (r->model == ANVIL_MODEL_HALFSPACE)
 		p.h = INFINITY;
-	double rel = r->Pmax > 0 && isfinite(r->Pmax_err) ? r->Pmax_err / r->Pmax : 0.0;
+	double rel = r->Pmax.val > 0 && isfinite(r->Pmax.err) ? r->Pmax.err / r->Pmax.val : 0.0;
 	return anvil_field_alloc(&p, h->P, h->n, h->t[1] - h->t[0], rel, acc, err);
 }
 

@@ -90,7 +90,7 @@ struct anvil_field *anvil_field_alloc(const struct anvil_params *p, const double
 /* The same from an impact result with a history (uniform, from t = 0), e.g.
  * anvil_solver_run(..., ANVIL_FIELD_NHIST, r, ...), for the layer p (a
  * half-space for a result of the halfspace model) at accuracy acc: load_rel
- * is r->Pmax_err / r->Pmax.  ANVIL_EINVAL when r has no history. */
+ * is r->Pmax.err / r->Pmax.val.  ANVIL_EINVAL when r has no history. */
 struct anvil_field *anvil_field_from_result(const struct anvil_params *p,
 					    enum anvil_accuracy acc,
 					    const struct anvil_result *r,

@@ -236,13 +236,13 @@ static void fill(struct anvil_result *r, const struct anvil_params *p, const str
 		 const struct sol *b)
 {
 	double F = p->m1 * p->V0 / p->T;
-	r->ts = a->tau_s * p->T, r->ts_err = fabs(a->tau_s - b->tau_s) * p->T;
-	r->tmax = a->tau_m * p->T, r->tmax_err = fabs(a->tau_m - b->tau_m) * p->T;
-	r->Pmax = a->p_m * F, r->Pmax_err = fabs(a->p_m - b->p_m) * F;
-	r->Rf = -a->u_end, r->Rf_err = fabs(a->u_end - b->u_end);
-	r->Vs = r->Rf * p->V0, r->Vs_err = r->Rf_err * p->V0;
-	r->Ea = 0.5 * p->m1 * p->V0 * p->V0 * (1.0 - r->Rf * r->Rf);
-	r->Ea_err = p->m1 * p->V0 * p->V0 * r->Rf * r->Rf_err;
+	r->ts.val = a->tau_s * p->T, r->ts.err = fabs(a->tau_s - b->tau_s) * p->T;
+	r->tmax.val = a->tau_m * p->T, r->tmax.err = fabs(a->tau_m - b->tau_m) * p->T;
+	r->Pmax.val = a->p_m * F, r->Pmax.err = fabs(a->p_m - b->p_m) * F;
+	r->Rf.val = -a->u_end, r->Rf.err = fabs(a->u_end - b->u_end);
+	r->Vs.val = r->Rf.val * p->V0, r->Vs.err = r->Rf.err * p->V0;
+	r->Ea.val = 0.5 * p->m1 * p->V0 * p->V0 * (1.0 - r->Rf.val * r->Rf.val);
+	r->Ea.err = p->m1 * p->V0 * p->V0 * r->Rf.val * r->Rf.err;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 	snprintf(r->note, sizeof r->note,

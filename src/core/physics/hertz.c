@@ -27,17 +27,17 @@ double anvil_hertz_tau_s(void)
 
 static void hertz_fill(const struct anvil_params *p, struct anvil_result *r)
 {
-	r->ts = anvil_hertz_tau_s() * p->T;
-	r->tmax = 0.5 * r->ts;
-	r->Pmax = p->K * pow(anvil_hertz_alpha_max() * p->T * p->V0, 1.5);
-	r->Vs = p->V0;
-	r->Rf = 1.0;
-	r->Ea = 0.0;
-	r->ts_err = HERTZ_REL_ERR * r->ts;
-	r->tmax_err = HERTZ_REL_ERR * r->tmax;
-	r->Pmax_err = HERTZ_REL_ERR * r->Pmax;
+	r->ts.val = anvil_hertz_tau_s() * p->T;
+	r->tmax.val = 0.5 * r->ts.val;
+	r->Pmax.val = p->K * pow(anvil_hertz_alpha_max() * p->T * p->V0, 1.5);
+	r->Vs.val = p->V0;
+	r->Rf.val = 1.0;
+	r->Ea.val = 0.0;
+	r->ts.err = HERTZ_REL_ERR * r->ts.val;
+	r->tmax.err = HERTZ_REL_ERR * r->tmax.val;
+	r->Pmax.err = HERTZ_REL_ERR * r->Pmax.val;
 	/* Exact in this model. */
-	r->Vs_err = r->Rf_err = r->Ea_err = 0.0;
+	r->Vs.err = r->Rf.err = r->Ea.err = 0.0;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 	snprintf(r->note, sizeof r->note, "layer taken as rigid (w = 0)");
@@ -64,7 +64,7 @@ int anvil_hertz_run(const struct anvil_params *p, size_t nhist,
 		}
 	}
 	hertz_fill(p, r);
-	if (!(isfinite(r->ts) && isfinite(r->Pmax)))
+	if (!(isfinite(r->ts.val) && isfinite(r->Pmax.val)))
 		return anvil_err_set(err, ANVIL_ENUM, "hertz: closed form not finite");
 	return ANVIL_OK;
 }

@@ -337,20 +337,20 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 		 const struct pass *a, const struct pass *b, enum anvil_scheme scheme)
 {
 	if (scheme == ANVIL_SCHEME_PAPER) { /* first order: report the step asked for */
-		r->ts = a->ts, r->ts_err = fabs(b->ts - a->ts);
-		r->tmax = a->tmax, r->tmax_err = fabs(b->tmax - a->tmax);
-		r->Pmax = a->Pmax, r->Pmax_err = fabs(b->Pmax - a->Pmax);
-		r->Vs = a->Vs, r->Vs_err = fabs(b->Vs - a->Vs);
+		r->ts.val = a->ts, r->ts.err = fabs(b->ts - a->ts);
+		r->tmax.val = a->tmax, r->tmax.err = fabs(b->tmax - a->tmax);
+		r->Pmax.val = a->Pmax, r->Pmax.err = fabs(b->Pmax - a->Pmax);
+		r->Vs.val = a->Vs, r->Vs.err = fabs(b->Vs - a->Vs);
 	} else {
-		r->ts = extrap(a->ts, b->ts, &r->ts_err);
-		r->tmax = extrap(a->tmax, b->tmax, &r->tmax_err);
-		r->Pmax = extrap(a->Pmax, b->Pmax, &r->Pmax_err);
-		r->Vs = extrap(a->Vs, b->Vs, &r->Vs_err);
+		r->ts.val = extrap(a->ts, b->ts, &r->ts.err);
+		r->tmax.val = extrap(a->tmax, b->tmax, &r->tmax.err);
+		r->Pmax.val = extrap(a->Pmax, b->Pmax, &r->Pmax.err);
+		r->Vs.val = extrap(a->Vs, b->Vs, &r->Vs.err);
 	}
-	r->Rf = r->Vs / p->V0;
-	r->Rf_err = r->Vs_err / p->V0;
-	r->Ea = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs * r->Vs);
-	r->Ea_err = p->m1 * fabs(r->Vs) * r->Vs_err;
+	r->Rf.val = r->Vs.val / p->V0;
+	r->Rf.err = r->Vs.err / p->V0;
+	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
+	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 }
@@ -382,7 +382,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			st = resample(o->scheme == ANVIL_SCHEME_PAPER ? &a : &b, p, o->nhist, &r->hist);
 	}
 	if (st == ANVIL_ETOL) {
-		r->ts = NAN;
+		r->ts.val = NAN;
 		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",
 			      tau_avail * p->r0 / p->c2 * 1e6);
 	} else if (st) {

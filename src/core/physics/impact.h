@@ -36,7 +36,7 @@ struct anvil_impact_opts {
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
- * contact outlasts it, ANVIL_ETOL is returned with r->ts = NaN so that the
+ * contact outlasts it, ANVIL_ETOL is returned with r->ts.val = NaN so that the
  * caller can extend the response and retry.  r must be initialised. */
 int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *ctx,
 		     double tau_avail, const struct anvil_impact_opts *o,

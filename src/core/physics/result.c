@@ -8,8 +8,8 @@ void anvil_result_init(struct anvil_result *r, enum anvil_model model)
 {
 	memset(r, 0, sizeof *r);
 	r->model = model;
-	r->ts_err = r->tmax_err = r->Pmax_err = NAN;
-	r->Vs_err = r->Rf_err = r->Ea_err = NAN;
+	r->ts.err = r->tmax.err = r->Pmax.err = NAN;
+	r->Vs.err = r->Rf.err = r->Ea.err = NAN;
 }
 
 int anvil_history_alloc(struct anvil_history *h, size_t n)

@@ -11,6 +11,7 @@
 
 #include "options.h"
 #include "status.h"
+#include "value.h"
 
 struct anvil_history {
 	size_t n;      /* number of samples, 0 when none */
@@ -24,11 +25,10 @@ struct anvil_history {
 
 struct anvil_result {
 	enum anvil_model model;
-	double ts, tmax;     /* contact time, time of peak force, s */
-	double Pmax;         /* peak force, N */
-	double Vs, Rf, Ea;   /* rebound speed m/s, restitution, absorbed energy J */
-	/* Estimated absolute errors of the above; NaN when not estimated. */
-	double ts_err, tmax_err, Pmax_err, Vs_err, Rf_err, Ea_err;
+	/* Each with its estimated absolute error (err NaN when not estimated). */
+	struct anvil_val ts, tmax; /* contact time, time of peak force, s */
+	struct anvil_val Pmax;     /* peak force, N */
+	struct anvil_val Vs, Rf, Ea; /* rebound speed m/s, restitution, absorbed energy J */
 	double lambda_star, Rf_star; /* Zener's parameter for this scene */
 	double seconds;      /* wall time spent on this model */
 	char note[160];      /* what the model left out, or "" */

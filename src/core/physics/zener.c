@@ -302,17 +302,17 @@ static void zener_fill(const struct anvil_params *p, const struct anvil_zener_so
 		       struct anvil_result *r)
 {
 	double L = p->T * p->V0, e = s->err;
-	r->ts = p->T * s->tau_s;
-	r->tmax = p->T * s->tau_max;
-	r->Pmax = p->K * pow(L * s->alpha_max, 1.5);
-	r->Rf = s->rf;
-	r->Vs = p->V0 * s->rf;
-	r->Ea = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs * r->Vs);
-	r->ts_err = r->tmax_err = p->T * e;
-	r->Pmax_err = 1.5 * r->Pmax * e / s->alpha_max;
-	r->Rf_err = e;
-	r->Vs_err = p->V0 * e;
-	r->Ea_err = p->m1 * (fabs(r->Vs) + r->Vs_err) * r->Vs_err;
+	r->ts.val = p->T * s->tau_s;
+	r->tmax.val = p->T * s->tau_max;
+	r->Pmax.val = p->K * pow(L * s->alpha_max, 1.5);
+	r->Rf.val = s->rf;
+	r->Vs.val = p->V0 * s->rf;
+	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
+	r->ts.err = r->tmax.err = p->T * e;
+	r->Pmax.err = 1.5 * r->Pmax.val * e / s->alpha_max;
+	r->Rf.err = e;
+	r->Vs.err = p->V0 * e;
+	r->Ea.err = p->m1 * (fabs(r->Vs.val) + r->Vs.err) * r->Vs.err;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 }

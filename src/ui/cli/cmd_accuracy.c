@@ -110,13 +110,13 @@ static void acc_estimate(struct acc_level *lv, int l)
 	const struct anvil_result *r = &lv[l].r;
 	if (l + 1 < ANVIL_ACC_COUNT) {
 		const struct anvil_result *f = &lv[l + 1].r;
-		lv[l].rel[0] = rel_diff(r->Pmax, f->Pmax);
-		lv[l].rel[1] = rel_diff(r->ts, f->ts);
-		lv[l].rel[2] = rel_diff(r->Rf, f->Rf);
+		lv[l].rel[0] = rel_diff(r->Pmax.val, f->Pmax.val);
+		lv[l].rel[1] = rel_diff(r->ts.val, f->ts.val);
+		lv[l].rel[2] = rel_diff(r->Rf.val, f->Rf.val);
 	} else {
-		lv[l].rel[0] = fabs(r->Pmax_err / r->Pmax);
-		lv[l].rel[1] = fabs(r->ts_err / r->ts);
-		lv[l].rel[2] = fabs(r->Rf_err / r->Rf);
+		lv[l].rel[0] = fabs(r->Pmax.err / r->Pmax.val);
+		lv[l].rel[1] = fabs(r->ts.err / r->ts.val);
+		lv[l].rel[2] = fabs(r->Rf.err / r->Rf.val);
 	}
 }
 
@@ -154,9 +154,9 @@ static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format f
 		out_grid_cell(g, "%s", anvil_accuracy_name((enum anvil_accuracy)l));
 		out_grid_cell(g, "%s", out_num(b, target, t ? "%.0e" : NULL));
 		out_grid_cell(g, "%s", out_num(b, lv[l].wall, t ? "%.3g" : NULL));
-		out_grid_cell(g, "%s", out_num(b, lv[l].r.Pmax * 1e-3, t ? "%.7g" : NULL));
-		out_grid_cell(g, "%s", out_num(b, lv[l].r.ts * 1e6, t ? "%.7g" : NULL));
-		out_grid_cell(g, "%s", out_num(b, lv[l].r.Rf, t ? "%.7g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.Pmax.val * 1e-3, t ? "%.7g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.ts.val * 1e6, t ? "%.7g" : NULL));
+		out_grid_cell(g, "%s", out_num(b, lv[l].r.Rf.val, t ? "%.7g" : NULL));
 		for (int i = 0; i < 3; i++)
 			out_grid_cell(g, "%s", out_num(b, lv[l].rel[i], t ? "%.1e" : NULL));
 		out_grid_cell(g, "%s", v);

@@ -173,8 +173,8 @@ static void write_preamble(FILE *f, const struct fctx *c, const struct fargs *a,
 		snprintf(hs, sizeof hs, "%.4g mm", h * 1e3);
 	fprintf(f, "# anvil %s: %s\n", a->cmd, c->sc.title);
 	fprintf(f, "# %s, h = %s, r0 = %.4g mm: contact %.4g us, P_max %.4g kN at %.4g us, accuracy %s\n",
-		isinf(h) ? "halfspace" : "layer", hs, c->p.r0 * 1e3, c->r.ts * 1e6, c->r.Pmax * 1e-3,
-		c->r.tmax * 1e6, anvil_accuracy_name(c->sc.accuracy));
+		isinf(h) ? "halfspace" : "layer", hs, c->p.r0 * 1e3, c->r.ts.val * 1e6, c->r.Pmax.val * 1e-3,
+		c->r.tmax.val * 1e6, anvil_accuracy_name(c->sc.accuracy));
 	if (a->no_yield) {
 		fputs("# yield check: not done (--no-yield)\n", f);
 		return;
@@ -425,7 +425,7 @@ static int field_compute(struct fctx *c, const struct fargs *a, const double *r,
 	struct anvil_fval *v = malloc((size_t)a->nat * FIELD_SAMPLES * sizeof *v);
 	int code = v ? -1 : EXIT_FAIL;
 	for (int j = 0; j < FIELD_SAMPLES; j++)
-		t[j] = c->r.ts * j / (FIELD_SAMPLES - 1);
+		t[j] = c->r.ts.val * j / (FIELD_SAMPLES - 1);
 	if (code < 0 && anvil_field_points(c->f, (size_t)a->nat, r, z, FIELD_SAMPLES, t, v, &err)) {
 		cli_error("field: %s", err.msg);
 		code = cli_exit_code(err.status);
@@ -539,14 +539,14 @@ static int map_spec(const struct fargs *a, const struct fctx *c, struct mapspec 
 /* The instant, once the impact is known. */
 static int map_time(const struct fargs *a, const struct fctx *c, struct mapspec *m)
 {
-	double tl = ANVIL_FIELD_T_MAX * c->r.ts;
+	double tl = ANVIL_FIELD_T_MAX * c->r.ts.val;
 	if (!a->time || strcasecmp(a->time, "tmax") == 0)
-		m->t = c->r.tmax;
+		m->t = c->r.tmax.val;
 	else if (strcasecmp(a->time, "ts") == 0)
-		m->t = c->r.ts;
+		m->t = c->r.ts.val;
 	if (!(m->t >= 0) || m->t > tl)
 		return out_usage("map", "--time %s: the instant must lie in 0 .. %.4g us (%g times "
-				 "the contact of %.4g us)", a->time, tl * 1e6, ANVIL_FIELD_T_MAX, c->r.ts * 1e6);
+				 "the contact of %.4g us)", a->time, tl * 1e6, ANVIL_FIELD_T_MAX, c->r.ts.val * 1e6);
 	return -1;
 }
 

@@ -448,7 +448,7 @@ static void layer_curve(const struct batch *b, double V0, double *x, double *y,
 		memmove(lh + j + 1, lh + j, (m - j) * sizeof *lh);
 		memmove(rf + j + 1, rf + j, (m - j) * sizeof *rf);
 		lh[j] = log(r->h_r0);
-		rf[j] = r->r->Rf;
+		rf[j] = r->r->Rf.val;
 		m++;
 	}
 	gsl_interp *in = m >= 3 ? gsl_interp_alloc(gsl_interp_steffen, m) : NULL;

@@ -234,12 +234,12 @@ struct column {
 
 #define RV(f) offsetof(struct anvil_result, f)
 static const struct column columns[] = {
-	{"ts_us", "ts_err_us", "t_s/us", 1e6, RV(ts), RV(ts_err), "%.2f"},
-	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax), RV(tmax_err), "%.2f"},
-	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax), RV(Pmax_err), "%#.4g"},
-	{"Vs", NULL, "V_s/(m/s)", 1, RV(Vs), 0, "%#.4g"},
-	{"Rf", "Rf_err", "R_f", 1, RV(Rf), RV(Rf_err), "%.4f"},
-	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea), RV(Ea_err), "%#.3g"},
+	{"ts_us", "ts_err_us", "t_s/us", 1e6, RV(ts.val), RV(ts.err), "%.2f"},
+	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax.val), RV(tmax.err), "%.2f"},
+	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax.val), RV(Pmax.err), "%#.4g"},
+	{"Vs", NULL, "V_s/(m/s)", 1, RV(Vs.val), 0, "%#.4g"},
+	{"Rf", "Rf_err", "R_f", 1, RV(Rf.val), RV(Rf.err), "%.4f"},
+	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea.val), RV(Ea.err), "%#.3g"},
 	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%.4f"},
 	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%.4f"},
 };

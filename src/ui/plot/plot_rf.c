@@ -63,7 +63,7 @@ static int rf_layer_points(struct plot_chart *c, const struct plot_run *runs,
 			y[j] = y[j - 1];
 		}
 		x[j] = run->h_r0;
-		y[j] = run->r->Rf;
+		y[j] = run->r->Rf.val;
 	}
 	if (m == 0)
 		return ANVIL_OK;
@@ -82,7 +82,7 @@ static int rf_halfspace_level(struct plot_chart *c, const struct plot_run *runs,
 		const struct plot_run *run = &runs[i];
 		if (!ok_run(run) || run->model != ANVIL_MODEL_HALFSPACE || run->V0 != V0)
 			continue;
-		double y[2] = {run->r->Rf, run->r->Rf};
+		double y[2] = {run->r->Rf.val, run->r->Rf.val};
 		plot_chart_key(c, "half-space (h = ∞)", PLOT_DOTS, PLOT_BLACK, 0);
 		return plot_chart_add(c, "", PLOT_DOTS, PLOT_BLACK, xr, y, 2, 1, 1, 1);
 	}
@@ -291,7 +291,7 @@ static int rf_lambda_points(struct plot_chart *c, const struct plot_run *runs,
 		double x = log && !(run->lambda_star > 0) ? x0 : run->lambda_star;
 		char text[40];
 		half |= !isfinite(h);
-		st = plot_chart_add(c, "", PLOT_POINTS, plot_h_colour(h), &x, &run->r->Rf,
+		st = plot_chart_add(c, "", PLOT_POINTS, plot_h_colour(h), &x, &run->r->Rf.val,
 				    1, 1, 1, 1);
 		if (st)
 			break;
@@ -299,7 +299,7 @@ static int rf_lambda_points(struct plot_chart *c, const struct plot_run *runs,
 		velocity_key(c, run->V0, PLOT_POINTS);
 		if (isfinite(h)) {
 			snprintf(text, sizeof text, "%g r_0", h);
-			struct plot_note *note = plot_chart_note(c, x, run->r->Rf,
+			struct plot_note *note = plot_chart_note(c, x, run->r->Rf.val,
 								 plot_h_colour(h), text);
 			/* the two velocities' labels on either side of the curve */
 			if (note)
@@ -376,14 +376,14 @@ static double acc_value(const struct anvil_result *r, int o, double *err)
 {
 	switch (o) {
 	case 0:
-		*err = r->Pmax_err;
-		return r->Pmax;
+		*err = r->Pmax.err;
+		return r->Pmax.val;
 	case 1:
-		*err = r->ts_err;
-		return r->ts;
+		*err = r->ts.err;
+		return r->ts.val;
 	default:
-		*err = r->Rf_err;
-		return r->Rf;
+		*err = r->Rf.err;
+		return r->Rf.val;
 	}
 }
 

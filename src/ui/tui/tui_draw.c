@@ -306,7 +306,7 @@ static int plottable(const struct tui_row *row)
 
 static int has_value(const struct tui_row *row)
 {
-	return row->state != TUI_ROW_OFF && row->have && isfinite(row->res.Rf);
+	return row->state != TUI_ROW_OFF && row->have && isfinite(row->res.Rf.val);
 }
 
 /* The colour role of thickness h/r0, as plot_h_colour. */
@@ -563,13 +563,13 @@ static void draw_rf_lambda(const struct tui_model *m, const struct tui_view *v,
 	area_mark(&a, lam, ok ? p.Rf_star : NAN, attr(h_role(h)), v->utf8 ? "\xe2\x97\x86" : "X");
 	const struct tui_row *layer = &m->rows[ANVIL_MODEL_LAYER];
 	if (has_value(layer))
-		area_mark(&a, lam, layer->res.Rf, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
+		area_mark(&a, lam, layer->res.Rf.val, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
 	const char *name = v->utf8 ? "\xce\xbb*" : "lambda*";
 	int k = lam > 0 ? snprintf(text, sizeof text, "this scene: %s = %.3g, R*_f = %.3g",
 				   name, lam, p.Rf_star)
 		: snprintf(text, sizeof text, "this scene: half-space, %s = 0", name);
 	if (has_value(layer) && k > 0 && (size_t)k < sizeof text)
-		snprintf(text + k, sizeof text - (size_t)k, ", layer R_f = %.3g", layer->res.Rf);
+		snprintf(text + k, sizeof text - (size_t)k, ", layer R_f = %.3g", layer->res.Rf.val);
 	legend_item(top, &x, attr(h_role(h)), v->utf8 ? "\xe2\x97\x86" : "X", text);
 	area_ticks(&a, v, 1, 1, v->utf8 ? "\xce\xbb*" : "lambda*");
 	tui_canvas_free(&a.c);
@@ -603,7 +603,7 @@ static void draw_rf_thickness(const struct tui_model *m, const struct tui_view *
 	const struct tui_row *half = &m->rows[ANVIL_MODEL_HALFSPACE];
 	const struct tui_row *layer = &m->rows[ANVIL_MODEL_LAYER];
 	if (has_value(half)) {
-		double hx[2] = {lo, hi}, hy[2] = {half->res.Rf, half->res.Rf};
+		double hx[2] = {lo, hi}, hy[2] = {half->res.Rf.val, half->res.Rf.val};
 		area_line(&a, 1, R_SERIES4, hx, hy, 2, TUI_DASH_DOTTED);
 		legend_item(top, &x, attr(R_SERIES4), dash_sample(v, TUI_DASH_DOTTED, 1, ascii),
 			    "half-space");
@@ -613,7 +613,7 @@ static void draw_rf_thickness(const struct tui_model *m, const struct tui_view *
 		area_line(&a, 2, h_role(h), vx, vy, 2, TUI_DASH_DOTTED);
 	area_draw(&a);
 	if (has_value(layer) && isfinite(h))
-		area_mark(&a, h, layer->res.Rf, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
+		area_mark(&a, h, layer->res.Rf.val, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O");
 	if (isfinite(h))
 		snprintf(text, sizeof text, "this scene: h = %.3g r0%s", h,
 			 has_value(layer) ? "" : " (layer R_f: not computed)");
@@ -621,7 +621,7 @@ static void draw_rf_thickness(const struct tui_model *m, const struct tui_view *
 		snprintf(text, sizeof text, "this scene: half-space");
 	if (has_value(layer) && isfinite(h)) {
 		size_t k = strlen(text);
-		snprintf(text + k, sizeof text - k, ", layer R_f = %.3g", layer->res.Rf);
+		snprintf(text + k, sizeof text - k, ", layer R_f = %.3g", layer->res.Rf.val);
 	}
 	legend_item(top, &x, attr(h_role(h)), v->utf8 ? "\xe2\x97\x8f" : "O", text);
 	area_ticks(&a, v, 1, 1, "h/r0");
