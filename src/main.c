@@ -93,9 +93,13 @@ int main(int argc, char **argv)
 	if (argc < 2) {
 		if (isatty(STDIN_FILENO) && isatty(STDOUT_FILENO))
 			return anvil_cmd_tui(1, tui_argv);
+		cli_signals_install();
 		return anvil_cmd_run(1, run_argv);
 	}
 	const char *cmd = argv[1];
+	/* the TUI restores the terminal first: it has its own handlers */
+	if (strcmp(cmd, "tui") != 0)
+		cli_signals_install();
 	if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
 		usage(stdout);
 		return EXIT_OK;

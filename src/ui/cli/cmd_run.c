@@ -3,7 +3,6 @@
 #include <errno.h>
 #include <getopt.h>
 #include <math.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,9 +29,11 @@ static void run_usage(FILE *f)
 	      "Compute one impact with every model of the scene (default: the paper's\n"
 	      "copper rod on a 1 r0 steel layer at 10 m/s).\n"
 	      "  -s, --set KEY=VALUE  change a scene key, e.g. -s layer.thickness=5r0\n"
-	      "  -f, --format FORMAT  table (default), tsv, csv or json\n"
+	      "  -f, --format FORMAT  table, tsv, csv or json (default: from the extension\n"
+	      "                       of -o, .tsv .csv .json; else the table)\n"
 	      "  -o, --output FILE    write the results to FILE (default: standard output)\n"
 	      "      --history FILE   write the time histories of every model as TSV\n"
+	      "                       ('-': standard output, when the results go to -o)\n"
 	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
 	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
 	      "  -v, --verbose        print the resolved scene, the plan and timings on stderr\n"
@@ -69,8 +70,7 @@ static int run_option(struct run_opts *o, int c, char **argv)
 	case 's':
 		return cli_sets_add(&o->sets, optarg) ? EXIT_FAIL : -1;
 	case 'f':
-		o->format = out_format_parse("run", optarg, OUT_ALLOW(OUT_TABLE) |
-				OUT_ALLOW(OUT_TSV) | OUT_ALLOW(OUT_CSV) | OUT_ALLOW(OUT_JSON));
+		o->format = out_format_parse("run", optarg, OUT_ALL);
 		return o->format < 0 ? EXIT_USAGE : -1;
 	case 'o':
 		o->out = optarg;
@@ -109,33 +109,13 @@ static int run_parse(int argc, char **argv, struct run_opts *o)
 		o->scene = argv[optind++];
 	if (optind < argc)
 		return out_usage("run", "unexpected argument '%s'", argv[optind]);
+	if (o->quiet && o->verbose)
+		return out_usage("run", "-q and -v contradict each other: give one");
+	o->format = out_format_pick(o->format, o->out);
 	/* -m comes last so that it wins over any -s solver.models. */
 	if (o->models && cli_sets_add(&o->sets, o->models))
 		return EXIT_FAIL;
 	return -1;
-}
-
-/* Ctrl-C while the models run cancels them through the progress callback,
- * so the temporary output files are removed on the way out.  The handler
- * is one-shot: a second Ctrl-C kills as usual. */
-static volatile sig_atomic_t run_interrupted;
-
-static void run_on_signal(int sig)
-{
-	(void)sig;
-	run_interrupted = 1;
-}
-
-static void run_catch_signals(int on)
-{
-	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-	struct sigaction sa;
-	memset(&sa, 0, sizeof sa);
-	sigemptyset(&sa.sa_mask);
-	sa.sa_handler = on ? run_on_signal : SIG_DFL;
-	sa.sa_flags = SA_RESETHAND;
-	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
-		sigaction(sigs[i], &sa, NULL);
 }
 
 struct run_progress {
@@ -146,8 +126,6 @@ struct run_progress {
 static int run_progress_cb(void *ctx, double fraction, const char *what)
 {
 	struct run_progress *p = ctx;
-	if (run_interrupted)
-		return 1;
 	return p->quiet ? 0 : cli_progress_cb(&p->shown, fraction, what);
 }
 
@@ -188,7 +166,6 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 	}
 	anvil_solver_set_progress(s, run_progress_cb, &prog);
 	anvil_solver_set_warn(s, run_warn, NULL);
-	run_catch_signals(1);
 	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
 		struct anvil_err err = {0};
 		if (!(anvil_scene_models(sc) & (1u << m)))
@@ -197,11 +174,6 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 		int st = anvil_solver_run(s, sc, (enum anvil_model)m, nhist, &res[*n], &err);
 		cli_progress_done(&prog.shown);
 		(*n)++;
-		if (run_interrupted) {
-			cli_error("interrupted");
-			code = EXIT_FAIL;
-			break;
-		}
 		const struct anvil_result *r = &res[*n - 1];
 		int has_values = isfinite(r->ts) && r->ts > 0 && isfinite(r->Pmax) && isfinite(r->Rf);
 		if (st == ANVIL_ETOL && has_values) {
@@ -218,7 +190,6 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 				anvil_model_name((enum anvil_model)m), res[*n - 1].seconds);
 		}
 	}
-	run_catch_signals(0);
 	anvil_solver_free(s);
 	return code;
 }
@@ -315,6 +286,13 @@ static int run_scene(struct run_opts *o)
 	if (o->verbose && (anvil_scene_write(&sc, stderr) || run_plan(&sc)))
 		return EXIT_FAIL;
 	run_output(o, &sc);
+	/* Two tables mixed on one stream would parse as neither. */
+	if (o->history && !strcmp(o->history, "-") && (!o->out || !strcmp(o->out, "-")) &&
+	    sc.output.table) {
+		cli_error("run: the history and the results cannot both go to standard output: "
+			  "give -o FILE for the results (or [output] table = off)");
+		return EXIT_USAGE;
+	}
 	/* Open the outputs first: a bad path fails before minutes of work. */
 	if (cli_out_open(&out, o->out))
 		return EXIT_FAIL;
@@ -338,7 +316,7 @@ static int run_scene(struct run_opts *o)
 
 int anvil_cmd_run(int argc, char **argv)
 {
-	struct run_opts o = {0};
+	struct run_opts o = {.format = -1};
 	int code = run_parse(argc, argv, &o);
 	if (code < 0)
 		code = run_scene(&o);
