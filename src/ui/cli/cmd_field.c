@@ -748,3 +748,35 @@ int anvil_cmd_map(int argc, char **argv)
 	cli_sets_free(&a.sets);
 	return code;
 }
+
+/* ---- for anvil run: [output] field with [effects] field = map ------------- */
+
+int anvil_field_map_file(const struct anvil_scene *sc, const char *path, int quiet)
+{
+	struct fargs a = {.cmd = "map", .out = path, .quiet = quiet, .format = OUT_TSV};
+	struct fctx c = {0};
+	struct cli_out o = {0};
+	struct mapspec m = {0};
+	struct anvil_err err = {0};
+	int code;
+	if (out_format_of(path) > 0)
+		a.format = out_format_of(path);
+	plot_opts_default(&a.popts);
+	c.sc = *sc;
+	anvil_result_init(&c.r, ANVIL_MODEL_LAYER);
+	if (anvil_params_init(&c.p, &c.sc, &err)) {
+		cli_error("%s", err.msg);
+		return EXIT_USAGE;
+	}
+	code = map_spec(&a, &c, &m);
+	if (code < 0 && cli_out_open(&o, path))
+		code = EXIT_FAIL;
+	if (code < 0)
+		code = impact_field(&c, &a);
+	if (code < 0)
+		code = map_compute(&c, &a, &m, &o);
+	if (code != EXIT_OK)
+		cli_out_abort(&o);
+	fctx_free(&c);
+	return code ? code : c.tol ? EXIT_FAIL : EXIT_OK;
+}

@@ -150,6 +150,25 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 	}
 }
 
+void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix)
+{
+	char v[48];
+	for (int i = 0; i < pl->nwarn; i++) {
+		const struct anvil_plan_warning *w = &pl->warn[i];
+		int yield = w->kind == ANVIL_WARN_YIELD && pl->softer[0];
+		if (w->kind == ANVIL_WARN_FIELD)
+			continue; /* what was asked for, not a warning about it */
+		fprintf(f, "%s%s%s%s%s", prefix, anvil_plan_warn_text(w->kind), yield ? " (" : "",
+			yield ? pl->softer : "", yield ? ")" : "");
+		for (int k = 0; k < w->nfig; k++) {
+			const struct anvil_fig_info *fi = anvil_plan_fig_info(w->fig[k]);
+			fprintf(f, "%s%s = %s", k ? ", " : "; ", fi->name,
+				fig_text(v, sizeof v, fi->unit, pl->fig[w->fig[k]]));
+		}
+		fputc('\n', f);
+	}
+}
+
 /* ---- tsv, csv ---- */
 
 static const char *const warn_names[ANVIL_WARN_COUNT] = {

@@ -244,11 +244,15 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 	return EXIT_OK;
 }
 
-/* -v: how the planner will compute the scene, on stderr. */
-static int run_plan(const struct anvil_scene *sc)
+/* The planner's view before the work, on stderr: with -v the whole plan,
+ * else (not with -q) its warnings (super-seismic, yield, out of range),
+ * one line each. */
+static int run_plan(const struct anvil_scene *sc, const struct run_opts *o)
 {
 	struct anvil_plan pl;
 	struct anvil_err err = {0};
+	if (o->quiet)
+		return EXIT_OK;
 	struct anvil_solver *s = anvil_solver_alloc(); /* for its cache only */
 	int st = s ? anvil_plan_make(sc, anvil_solver_cache(s), &pl, &err) : ANVIL_ENOMEM;
 	anvil_solver_free(s);
@@ -256,9 +260,34 @@ static int run_plan(const struct anvil_scene *sc)
 		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));
 		return EXIT_FAIL;
 	}
-	fputs("# plan\n", stderr);
-	anvil_plan_print(stderr, &pl);
+	if (o->verbose) {
+		fputs("# plan\n", stderr);
+		anvil_plan_print(stderr, &pl);
+	} else {
+		anvil_plan_warnings_line(stderr, &pl, "anvil: warning: ");
+	}
 	return EXIT_OK;
+}
+
+/* R_f outside [0, 1] (beyond its error estimate) is no rebound: the
+ * contact ended with the impactor still moving into the layer, which will
+ * strike again.  Said in the row's note and on stderr; returns 1 if any. */
+static int run_unphysical(struct anvil_result *res, int n)
+{
+	static const char why[] = "R_f outside 0..1: the contact ends with the impactor "
+				  "still moving in: re-contact not modelled";
+	int any = 0;
+	for (int i = 0; i < n; i++) {
+		struct anvil_result *r = &res[i];
+		double tol = (isfinite(r->Rf_err) ? fabs(r->Rf_err) : 0) + 1e-9;
+		if (!isfinite(r->Rf) || (r->Rf >= -tol && r->Rf <= 1 + tol))
+			continue;
+		size_t len = strlen(r->note);
+		snprintf(r->note + len, sizeof r->note - len, "%s%s", len ? "; " : "", why);
+		cli_error("warning: %s: %s", anvil_model_name(r->model), why);
+		any = 1;
+	}
+	return any;
 }
 
 /* The scene's [output] for what the command line leaves unset. */
@@ -283,9 +312,15 @@ static int run_scene(struct run_opts *o)
 		cli_error("no model to run (set solver.models or use -m; [effects] may switch them off)");
 		return EXIT_USAGE;
 	}
-	if (o->verbose && (anvil_scene_write(&sc, stderr) || run_plan(&sc)))
+	if (o->verbose && anvil_scene_write(&sc, stderr))
 		return EXIT_FAIL;
 	run_output(o, &sc);
+	/* [output] field is only written for a map: points need --at */
+	if (sc.output.field[0] && sc.effects.field != ANVIL_FIELDMODE_MAP) {
+		cli_error("run: [output] field = %s needs [effects] field = map (the field at "
+			  "points: anvil field --at)", sc.output.field);
+		return EXIT_USAGE;
+	}
 	/* Two tables mixed on one stream would parse as neither. */
 	if (o->history && !strcmp(o->history, "-") && (!o->out || !strcmp(o->out, "-")) &&
 	    sc.output.table) {
@@ -293,6 +328,8 @@ static int run_scene(struct run_opts *o)
 			  "give -o FILE for the results (or [output] table = off)");
 		return EXIT_USAGE;
 	}
+	if (run_plan(&sc, o))
+		return EXIT_FAIL;
 	/* Open the outputs first: a bad path fails before minutes of work. */
 	if (cli_out_open(&out, o->out))
 		return EXIT_FAIL;
@@ -301,6 +338,8 @@ static int run_scene(struct run_opts *o)
 		return EXIT_FAIL;
 	}
 	code = run_models(&sc, o, res, &n, &tol);
+	if (!code)
+		tol |= run_unphysical(res, n);
 	if (code) {
 		cli_out_abort(&hist);
 		cli_out_abort(&out);
@@ -309,6 +348,8 @@ static int run_scene(struct run_opts *o)
 	}
 	if (!code && o->png)
 		code = run_png(&sc, o, res, n);
+	if (!code && sc.output.field[0])
+		code = anvil_field_map_file(&sc, sc.output.field, o->quiet);
 	for (int i = 0; i < n; i++)
 		anvil_result_free(&res[i]);
 	return code ? code : tol ? EXIT_FAIL : EXIT_OK;
