@@ -33,7 +33,8 @@ const char *const tui_help_lines[] = {
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
 	"  Ctrl-L                repaint the screen",
 	"  ?, F1                 this help",
-	"  q                     quit",
+	"  q                     quit (asks first when the scene has unsaved changes)",
+	"  Q                     quit without asking",
 	"",
 	"Every change recomputes in the background; dimmed values are being",
 	"recomputed.  '~' marks a value whose accuracy target was not reached.",
@@ -262,11 +263,21 @@ static int cacheable(int status)
 	return status == ANVIL_OK || status == ANVIL_ETOL || status == ANVIL_EINVAL;
 }
 
+/* Values worth showing: a missed accuracy target still gives them, a
+ * refusal gives zeros that would read as computed ones. */
+static int usable(int status, const struct anvil_result *r)
+{
+	if (status == ANVIL_OK)
+		return 1;
+	return status == ANVIL_ETOL && isfinite(r->ts) && r->ts > 0 && isfinite(r->Pmax) &&
+	       r->Pmax > 0 && isfinite(r->Rf);
+}
+
 static void row_fill(struct tui_row *row, int status, const char *msg)
 {
 	row->state = TUI_ROW_DONE;
 	row->status = status;
-	row->have = status == ANVIL_OK || status == ANVIL_ETOL;
+	row->have = usable(status, &row->res);
 	snprintf(row->msg, sizeof row->msg, "%s", msg ? msg : "");
 }
 
@@ -687,7 +698,13 @@ static enum tui_action main_key(struct tui_model *m, int key)
 	case '?': case TUI_KEY_HELP:
 		m->screen = TUI_SCREEN_HELP;
 		return TUI_ACT_REDRAW;
-	case 'q': return TUI_ACT_QUIT;
+	case 'q':
+		if (!m->modified)
+			return TUI_ACT_QUIT;
+		m->confirm_quit = 1;
+		tui_model_message(m, 1, "the scene has unsaved changes: quit anyway? (y/n; s saves)");
+		return TUI_ACT_REDRAW;
+	case 'Q': return TUI_ACT_QUIT;
 	case TUI_CTRL('l'): return TUI_ACT_REPAINT;
 	case TUI_KEY_ESC: case 27:
 		m->msg[0] = '\0';
@@ -703,8 +720,21 @@ static enum tui_action help_key(struct tui_model *m, int key)
 	return TUI_ACT_REDRAW;
 }
 
+/* The answer to "quit anyway?": y quits, s saves (and stays), anything
+ * else goes back. */
+static enum tui_action confirm_key(struct tui_model *m, int key)
+{
+	m->confirm_quit = 0;
+	m->msg[0] = '\0';
+	if (key == 'y' || key == 'Y' || key == 'Q')
+		return TUI_ACT_QUIT;
+	return key == 's' ? TUI_ACT_SAVE : TUI_ACT_REDRAW;
+}
+
 enum tui_action tui_model_key(struct tui_model *m, int key)
 {
+	if (m->confirm_quit)
+		return confirm_key(m, key);
 	if (m->screen == TUI_SCREEN_HELP)
 		return help_key(m, key);
 	if (m->editing)

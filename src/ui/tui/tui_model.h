@@ -79,7 +79,9 @@ enum tui_row_state {
 struct tui_row {
 	enum tui_row_state state;
 	int status;              /* of the last delivery: ANVIL_OK, ETOL, ... */
-	int have;                /* res holds values (status OK or ETOL) */
+	int have;                /* res holds usable values: status OK, or ETOL
+				  * with a contact time and finite P_max, R_f
+				  * (a refusal's zeros are no values) */
 	char msg[ANVIL_ERR_MSG]; /* the solver's message when status != OK */
 	struct anvil_result res; /* owned, with its history */
 };
@@ -114,6 +116,7 @@ struct tui_model {
 	enum tui_screen screen;
 	enum tui_quantity quantity;
 	int editing;                /* the status line is a text field */
+	int confirm_quit;           /* q with unsaved changes: y quits */
 	char edit_key[64];          /* scene key being edited; "" for ':' */
 	char edit_unit[8];          /* unit added to a bare number */
 	char edit[TUI_EDIT_MAX];
