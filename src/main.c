@@ -1,11 +1,13 @@
 /* main.c: picks the face of anvil from the first argument. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "config.h"
 #include "commands.h"
 #include "common.h"
+#include "scene.h"
 
 struct command {
 	const char *name;
@@ -36,7 +38,8 @@ static void usage(FILE *f)
 	for (int i = 0; i < NCOMMANDS; i++)
 		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
 	fputs("\nWithout a command: the TUI on a terminal, else 'anvil run'.\n"
-	      "'anvil COMMAND --help' describes a command; man anvil tells all.\n"
+	      "'anvil COMMAND --help' describes a command; 'man anvil' tells all\n"
+	      "(before 'make install': man ./man/anvil.1 in the source tree).\n"
 	      "--strict, with any command: implausible scene values are errors.\n",
 	      f);
 }
@@ -105,6 +108,45 @@ static int take_strict(int argc, char **argv)
 	return j;
 }
 
+/* --complete-keys (hidden, for completion/anvil.bash): every scene key as
+ * SECTION.KEY, one a line, read from the default scene as a scene file
+ * writes it, so the list is the parser's own.  Material sections are
+ * left out: their keys need a name. */
+static int complete_keys(void)
+{
+	struct anvil_scene sc;
+	char *buf = NULL, sec[64] = "", line[256];
+	size_t len = 0;
+	FILE *m = open_memstream(&buf, &len);
+	if (!m)
+		return EXIT_FAIL;
+	anvil_scene_default(&sc);
+	/* overrides are written only when set: set them to their own values */
+	struct anvil_body *b[2] = {&sc.impactor, &sc.layer};
+	for (int i = 0; i < 2; i++) {
+		b[i]->E = b[i]->mat.E;
+		b[i]->nu = b[i]->mat.nu;
+		b[i]->rho = b[i]->mat.rho;
+		b[i]->yield = b[i]->mat.yield;
+	}
+	int st = anvil_scene_write(&sc, m);
+	fclose(m);
+	FILE *in = st || !buf ? NULL : fmemopen(buf, len, "r");
+	while (in && fgets(line, sizeof line, in)) {
+		char key[64];
+		if (sscanf(line, "[%63[a-z]]", sec) == 1)
+			continue;
+		if (line[0] == '[')
+			sec[0] = '\0'; /* [material NAME] */
+		else if (sec[0] && sscanf(line, "%63[A-Za-z_0-9] =", key) == 1)
+			printf("%s.%s\n", sec, key);
+	}
+	if (in)
+		fclose(in);
+	free(buf);
+	return st ? EXIT_FAIL : EXIT_OK;
+}
+
 int main(int argc, char **argv)
 {
 	static char *run_argv[] = {"run", NULL}, *tui_argv[] = {"tui", NULL};
@@ -113,13 +155,19 @@ int main(int argc, char **argv)
 	if (argc < 2) {
 		if (isatty(STDIN_FILENO) && isatty(STDOUT_FILENO))
 			return anvil_cmd_tui(1, tui_argv);
+		cli_signals_install();
 		return anvil_cmd_run(1, run_argv);
 	}
 	const char *cmd = argv[1];
+	/* the TUI restores the terminal first: it has its own handlers */
+	if (strcmp(cmd, "tui") != 0)
+		cli_signals_install();
 	if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
 		usage(stdout);
 		return EXIT_OK;
 	}
+	if (!strcmp(cmd, "--complete-keys"))
+		return complete_keys();
 	if (!strcmp(cmd, "--version")) {
 		printf("anvil %s\n", PACKAGE_VERSION);
 		return EXIT_OK;

@@ -20,7 +20,7 @@ assert '  with its summary' grep -q '^  plan ' "$tmp/out"
 check_exit 2 'an unknown option exits 2' "$ANVIL" plan --frobnicate
 check_exit 2 'a bad -s exits 2' "$ANVIL" plan -s effects.waves=sometimes
 assert '  and suggests' grep -q "expected auto, layer, halfspace or none" "$tmp/err"
-check_exit 2 'a bad --format exits 2' "$ANVIL" plan -f json
+check_exit 2 'a bad --format exits 2' "$ANVIL" plan -f xml
 check_exit 2 'two scenes exit 2' "$ANVIL" plan a.scene b.scene
 check_exit 1 'a missing scene file exits 1' "$ANVIL" plan "$tmp/none.scene"
 printf '[effects]\nplate = maybe\n' >"$tmp/bad.scene"

@@ -303,8 +303,19 @@ static void test_keys(void)
 	   TUI_DEFAULT_SAVE);
 	tui_model_saved(m, "x.scene");
 	ok(!strcmp(tui_model_save_path(m), "x.scene") && !m->modified, "then to where it went");
-	ok(tui_model_key(m, 'q') == TUI_ACT_QUIT, "q quits");
+	ok(tui_model_key(m, 'q') == TUI_ACT_QUIT, "q quits a saved scene");
 	ok(tui_model_key(m, 0x1234) == TUI_ACT_NONE, "an unknown key does nothing");
+	m->sel = TUI_F_VELOCITY;
+	tui_model_key(m, 'l');
+	ok(m->modified, "a change: unsaved");
+	ok(tui_model_key(m, 'q') == TUI_ACT_REDRAW && m->confirm_quit && strstr(m->msg, "unsaved"),
+	   "q with unsaved changes asks first");
+	ok(tui_model_key(m, 'n') == TUI_ACT_REDRAW && !m->confirm_quit && !m->msg[0],
+	   "n goes back");
+	tui_model_key(m, 'q');
+	ok(tui_model_key(m, 'y') == TUI_ACT_QUIT, "y quits");
+	m->confirm_quit = 0;
+	ok(tui_model_key(m, 'Q') == TUI_ACT_QUIT, "Q quits without asking");
 	int has_q = 0;
 	for (int i = 0; tui_help_lines[i]; ++i)
 		has_q |= strstr(tui_help_lines[i], "quit") != NULL;
@@ -365,6 +376,22 @@ static void test_generations(void)
 	tui_model_deliver(m, g, ANVIL_MODEL_HERTZ, ANVIL_EINVAL, "no", &r);
 	ok(!tui_model_busy(m) && !m->rows[ANVIL_MODEL_HERTZ].have &&
 	   !strcmp(m->rows[ANVIL_MODEL_HERTZ].msg, "no"), "a failure is a row with a message");
+	{
+		struct tui_model *m2 = calloc(1, sizeof *m2);
+		struct anvil_scene sc;
+		anvil_scene_default(&sc);
+		tui_model_init(m2, &sc, NULL);
+		m2->sc.models = 1u << ANVIL_MODEL_LAYER;
+		tui_model_request(m2);
+		struct anvil_result z;
+		anvil_result_init(&z, ANVIL_MODEL_LAYER);
+		z.ts.val = z.Pmax.val = z.Rf.val = 0; /* what a refusal leaves */
+		tui_model_deliver(m2, m2->gen, ANVIL_MODEL_LAYER, ANVIL_ETOL, "refused", &z);
+		ok(!m2->rows[ANVIL_MODEL_LAYER].have,
+		   "a missed target with zeros is no value (shown refused, not ~0)");
+		tui_model_free(m2);
+		free(m2);
+	}
 
 	m->sel = TUI_F_VELOCITY;
 	tui_model_key(m, 'l');
@@ -431,7 +458,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(105);
+	plan(111);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();

@@ -145,6 +145,35 @@ assert 'the alternate screen is left' [ "$(flag main alternate_on)" = 0 ]
 assert 'the cursor is visible again' [ "$(flag main cursor_flag)" = 1 ]
 assert 'the keypad is back in normal mode' [ "$(flag main keypad_cursor_flag)" = 0 ]
 
+# ---- q while the worker computes; q with unsaved changes ----
+ENVS="ANVIL_NO_CACHE=1"
+start busy -s solver.models=layer -s solver.accuracy=reference -s layer.thickness=0.5r0
+assert 'a long computation is under way' wait_for busy 'computing'
+T send-keys -t busy q
+# at once: the shell's prompt is back within 2 s (the layer takes several)
+n=20
+until screen busy | awk 'NF { last = $0 } END { exit last !~ /^[$#] ?$/ }'; do
+	n=$((n - 1))
+	[ "$n" -gt 0 ] || break
+	sleep 0.1
+done
+assert 'q quits at once while the worker computes' [ "$n" -gt 0 ]
+ask_status busy
+assert 'and exits 0' wait_for busy '^anvil-exit=0$'
+assert 'busy q: the alternate screen is left' [ "$(flag busy alternate_on)" = 0 ]
+
+ENVS=""
+start ask -s solver.models=hertz
+assert 'third session: results' wait_for ask 'last run'
+T send-keys -t ask l
+T send-keys -t ask q
+assert 'q with unsaved changes asks first' wait_for ask 'unsaved changes: quit anyway'
+T send-keys -t ask n
+assert 'n: still running' wait_for ask 'Results'
+T send-keys -t ask Q
+ask_status ask
+assert 'Q quits without asking, status 0' wait_for ask '^anvil-exit=0$'
+
 # ---- Ctrl-C ----
 ENVS=""
 start int -s solver.models=hertz,zener

@@ -1,4 +1,6 @@
 #include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <locale.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -110,45 +112,212 @@ void cli_sets_free(struct cli_sets *s)
 	memset(s, 0, sizeof *s);
 }
 
+/* ---- the signal handler's registry ----
+ * Fixed size, written outside the handler and only read inside it: a
+ * slot's path is complete before its flag says so, and the flag is
+ * cleared before the path is freed or reused. */
+
+#define CLI_MAX_TMP 8
+#define CLI_TMP_LEN 4096
+static char tmp_path[CLI_MAX_TMP][CLI_TMP_LEN];
+static volatile sig_atomic_t tmp_used[CLI_MAX_TMP];
+static volatile pid_t child_pid[CLI_MAX_CHILDREN];
+
+static int tmp_register(const char *path)
+{
+	if (strlen(path) >= CLI_TMP_LEN)
+		return -1;
+	for (int i = 0; i < CLI_MAX_TMP; i++)
+		if (!tmp_used[i]) {
+			strcpy(tmp_path[i], path);
+			tmp_used[i] = 1;
+			return i + 1;
+		}
+	return 0; /* still written and removed, only not by the handler */
+}
+
+/* slot + 1, as struct cli_out keeps it: 0 is none (a zeroed struct) */
+static void tmp_unregister(int slot1)
+{
+	if (slot1 > 0 && slot1 <= CLI_MAX_TMP)
+		tmp_used[slot1 - 1] = 0;
+}
+
+int cli_child_register(pid_t pid)
+{
+	for (int i = 0; i < CLI_MAX_CHILDREN; i++)
+		if (child_pid[i] <= 0) {
+			child_pid[i] = pid;
+			return 0;
+		}
+	return -1;
+}
+
+void cli_child_unregister(pid_t pid)
+{
+	for (int i = 0; i < CLI_MAX_CHILDREN; i++)
+		if (child_pid[i] == pid)
+			child_pid[i] = 0;
+}
+
+/* Only async-signal-safe calls: unlink, kill, _exit. */
+static void on_signal(int sig)
+{
+	for (int i = 0; i < CLI_MAX_TMP; i++)
+		if (tmp_used[i])
+			unlink(tmp_path[i]);
+	for (int i = 0; i < CLI_MAX_CHILDREN; i++)
+		if (child_pid[i] > 0)
+			kill(child_pid[i], SIGTERM);
+	_exit(128 + sig);
+}
+
+void cli_signals_install(void)
+{
+	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+		struct sigaction sa, old;
+		if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+			continue; /* nohup: the user's choice */
+		memset(&sa, 0, sizeof sa);
+		sigfillset(&sa.sa_mask); /* one handler at a time */
+		sa.sa_handler = on_signal;
+		sigaction(sigs[i], &sa, NULL);
+	}
+}
+
+/* ---- output files ---- */
+
+/* path with every symbolic link resolved (the last component may not
+ * exist: a dangling link names the file to create).  malloc'd; NULL with
+ * errno set (ELOOP after 40 links, as the kernel). */
+static char *resolve_links(const char *path)
+{
+	char *cur = strdup(path);
+	for (int hops = 0; cur; hops++) {
+		struct stat st;
+		if (lstat(cur, &st) != 0 || !S_ISLNK(st.st_mode))
+			return cur; /* missing or not a link: the end */
+		if (hops == 40) {
+			free(cur);
+			errno = ELOOP;
+			return NULL;
+		}
+		char link[4096];
+		ssize_t n = readlink(cur, link, sizeof link - 1);
+		if (n < 0) {
+			free(cur);
+			return NULL;
+		}
+		link[n] = '\0';
+		const char *slash = strrchr(cur, '/');
+		size_t dirlen = link[0] == '/' || !slash ? 0 : (size_t)(slash - cur) + 1;
+		char *next = malloc(dirlen + (size_t)n + 1);
+		if (next) {
+			memcpy(next, cur, dirlen);
+			memcpy(next + dirlen, link, (size_t)n + 1);
+		}
+		free(cur);
+		cur = next;
+	}
+	errno = ENOMEM;
+	return NULL;
+}
+
+/* Straight into a device or FIFO: there is nothing to replace. */
+static int out_open_direct(struct cli_out *o)
+{
+	int fd = open(o->dest, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+	if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
+		if (fd >= 0)
+			close(fd);
+		return -1;
+	}
+	o->direct = 1;
+	return 0;
+}
+
+/* A temporary file beside dest with mode: that of the file it replaces,
+ * else the usual 0666 & ~umask (mkstemp makes 0600). */
+static int out_open_tmp(struct cli_out *o, const struct stat *old)
+{
+	size_t n = strlen(o->dest) + 16;
+	mode_t mode;
+	if (!(o->tmp = malloc(n)))
+		return -1;
+	snprintf(o->tmp, n, "%s.tmpXXXXXX", o->dest);
+	if (old) {
+		mode = old->st_mode & 07777;
+	} else {
+		mode_t mask = umask(0);
+		umask(mask);
+		mode = 0666 & ~mask;
+	}
+	/* no signal between making the file and registering it */
+	sigset_t block, old_mask;
+	sigemptyset(&block);
+	sigaddset(&block, SIGINT);
+	sigaddset(&block, SIGTERM);
+	sigaddset(&block, SIGHUP);
+	sigprocmask(SIG_BLOCK, &block, &old_mask);
+	int fd = mkstemp(o->tmp);
+	if (fd >= 0)
+		o->slot = tmp_register(o->tmp);
+	sigprocmask(SIG_SETMASK, &old_mask, NULL);
+	if (fd < 0) {
+		free(o->tmp);
+		o->tmp = NULL;
+		return -1;
+	}
+	if (fchmod(fd, mode) != 0 || !(o->f = fdopen(fd, "w"))) {
+		int e = errno;
+		close(fd);
+		errno = e;
+		return -1; /* cli_out_abort removes the file */
+	}
+	return 0;
+}
+
 int cli_out_open(struct cli_out *o, const char *path)
 {
+	struct stat st;
 	memset(o, 0, sizeof *o);
 	if (!path || strcmp(path, "-") == 0) {
 		o->f = stdout;
 		return ANVIL_OK;
 	}
-	size_t n = strlen(path) + 16;
-	o->path = strdup(path);
-	o->tmp = malloc(n);
-	if (!o->path || !o->tmp) {
+	if (!(o->path = strdup(path)) || !(o->dest = resolve_links(path))) {
+		int nomem = errno == ENOMEM || !o->path;
+		cli_error("%s: %s", path, nomem ? "out of memory" : strerror(errno));
 		cli_out_abort(o);
-		cli_error("%s: out of memory", path);
-		return ANVIL_ENOMEM;
+		return nomem ? ANVIL_ENOMEM : ANVIL_EIO;
 	}
-	snprintf(o->tmp, n, "%s.tmpXXXXXX", path);
-	int fd = mkstemp(o->tmp);
-	/* mkstemp makes the file 0600; outputs get the usual 0666 & ~umask */
-	if (fd >= 0) {
-		mode_t mask = umask(0);
-		umask(mask);
-		if (fchmod(fd, 0666 & ~mask) != 0) {
-			close(fd);
-			unlink(o->tmp);
-			fd = -1;
-		}
+	int exists = stat(o->dest, &st) == 0, bad;
+	if (exists && S_ISDIR(st.st_mode)) {
+		cli_error("%s: is a directory: give a file name", path);
+		cli_out_abort(o);
+		return ANVIL_EIO;
 	}
-	if (fd < 0 || !(o->f = fdopen(fd, "w"))) {
+	if (exists && !S_ISREG(st.st_mode))
+		bad = out_open_direct(o);
+	else
+		bad = out_open_tmp(o, exists ? &st : NULL);
+	if (bad) {
 		cli_error("%s: cannot write: %s", path, strerror(errno));
-		if (fd >= 0) {
-			close(fd);
-			unlink(o->tmp);
-		}
-		free(o->tmp);
-		o->tmp = NULL;
 		cli_out_abort(o);
 		return ANVIL_EIO;
 	}
 	return ANVIL_OK;
+}
+
+/* Free the names, forget the slot. */
+static void out_clear(struct cli_out *o)
+{
+	tmp_unregister(o->slot);
+	free(o->tmp);
+	free(o->dest);
+	free(o->path);
+	memset(o, 0, sizeof *o);
 }
 
 int cli_out_commit(struct cli_out *o)
@@ -162,17 +331,16 @@ int cli_out_commit(struct cli_out *o)
 	int bad = ferror(o->f);
 	bad |= fclose(o->f) != 0;
 	o->f = NULL;
-	if (!bad && rename(o->tmp, o->path) != 0)
+	if (!bad && o->tmp && rename(o->tmp, o->dest) != 0)
 		bad = 1;
 	if (bad) {
 		cli_error("%s: write failed: %s", o->path, strerror(errno));
-		unlink(o->tmp);
 		cli_out_abort(o);
 		return ANVIL_EIO;
 	}
-	free(o->tmp);
+	free(o->tmp); /* renamed: nothing to remove */
 	o->tmp = NULL;
-	cli_out_abort(o);
+	out_clear(o);
 	return ANVIL_OK;
 }
 
@@ -180,11 +348,10 @@ void cli_out_abort(struct cli_out *o)
 {
 	if (o->f && o->f != stdout)
 		fclose(o->f);
+	o->f = NULL;
 	if (o->tmp)
 		unlink(o->tmp);
-	free(o->tmp);
-	free(o->path);
-	memset(o, 0, sizeof *o);
+	out_clear(o);
 }
 
 double cli_now(void)

@@ -8,6 +8,7 @@
 #define ANVIL_UI_COMMON_H
 
 #include <stdio.h>
+#include <sys/types.h>
 
 #include "plan.h"
 #include "problem.h"
@@ -57,19 +58,49 @@ struct cli_sets {
 int cli_sets_add(struct cli_sets *s, char *kv); /* ANVIL_ENOMEM */
 void cli_sets_free(struct cli_sets *s);
 
-/* An output file written atomically.  path "-" or NULL is stdout. */
+/* An output file.  path "-" or NULL is stdout.  What is at the path
+ * decides how it is written:
+ *   nothing, a regular file  a temporary file beside it, renamed into place
+ *                            on commit (an existing file keeps its mode), so
+ *                            a failure or a signal never leaves half a file;
+ *   a symbolic link          the same for the file it points to (the link
+ *                            stays a link; a dangling one gets its target);
+ *   a device, FIFO, socket   written through directly (not replaced);
+ *   a directory              refused.
+ * Temporary files are registered with the signal handler of
+ * cli_signals_install, which removes them when SIGINT/SIGTERM/SIGHUP end
+ * anvil. */
 struct cli_out {
 	FILE *f;
-	char *path;  /* final name, NULL for stdout */
-	char *tmp;   /* temporary name beside it */
+	char *path;  /* the name given, for messages; NULL for stdout */
+	char *dest;  /* what commit replaces (path with links resolved) */
+	char *tmp;   /* temporary name beside dest; NULL when direct */
+	int direct;  /* written straight into path (device, FIFO): nothing to
+		      * rename, and no seeking back (not a regular file) */
+	int slot;    /* in the signal handler's registry, plus 1; 0 none */
 };
-/* Open; on failure prints "anvil: PATH: reason" and returns ANVIL_EIO. */
+/* Open; on failure prints "anvil: PATH: reason" and returns ANVIL_EIO (or
+ * ANVIL_ENOMEM). */
 int cli_out_open(struct cli_out *o, const char *path);
 /* Flush, close and rename into place; ANVIL_EIO (message printed) on a
  * write error, in which case the temporary file is removed. */
 int cli_out_commit(struct cli_out *o);
 /* Close and remove the temporary file (no-op after commit). */
 void cli_out_abort(struct cli_out *o);
+
+/* Signals: one SIGINT, SIGTERM or SIGHUP ends anvil at once with status
+ * 128 + signal, after removing the registered temporary output files and
+ * terminating the registered child processes (gnuplot).  The handler is
+ * async-signal-safe (unlink, kill, _exit).  Signals ignored at start
+ * (nohup) stay ignored.  Installed by main for every command but the TUI,
+ * which has its own. */
+void cli_signals_install(void);
+/* A child process (gnuplot) for the handler to SIGTERM; at most
+ * CLI_MAX_CHILDREN at a time (-1 when full, else 0).  Unregister once
+ * waited for, so a recycled pid is never killed. */
+#define CLI_MAX_CHILDREN 4
+int cli_child_register(pid_t pid);
+void cli_child_unregister(pid_t pid);
 
 /* A progress callback for anvil_solver_set_progress: draws
  * "what: NN%" on stderr when stderr is a terminal and the job has run for

@@ -9,7 +9,7 @@
 #include "output.h"
 
 struct acc_opts {
-	const char *scene, *model;
+	const char *scene, *model, *out;
 	int format;
 	struct cli_sets sets;
 };
@@ -24,16 +24,22 @@ struct acc_level {
 
 static void acc_usage(FILE *f)
 {
-	fputs("usage: anvil accuracy [SCENE] [-s KEY=VALUE]... [--format table|tsv] [-m MODEL]\n"
+	fputs("usage: anvil accuracy [SCENE] [-s KEY=VALUE]... [-f table|tsv|csv|json]\n"
+	      "                      [-o FILE] [-m MODEL]\n"
 	      "Run one model (default: layer; halfspace when h = inf) at every accuracy\n"
 	      "level and compare each with the next finer one (the reference level with\n"
-	      "its own error estimate).  Exits 1 if a level misses its target.\n",
+	      "its own error estimate).  Each level is timed cold: a fresh solver without\n"
+	      "the disk cache.  Exits 1 if a level misses its target.\n"
+	      "  -f, --format FORMAT  table, tsv, csv or json (default: from the extension\n"
+	      "                       of -o, else the table)\n"
+	      "  -o, --output FILE    write to FILE (default: standard output)\n",
 	      f);
 }
 
 static const struct option acc_longopts[] = {
 	{"set", required_argument, NULL, 's'},
 	{"format", required_argument, NULL, 'f'},
+	{"output", required_argument, NULL, 'o'},
 	{"model", required_argument, NULL, 'm'},
 	{"help", no_argument, NULL, 'h'},
 	{NULL, 0, NULL, 0}};
@@ -44,17 +50,19 @@ static int acc_parse(int argc, char **argv, struct acc_opts *o)
 	int c;
 	opterr = 0;
 	optind = 1;
-	while ((c = getopt_long(argc, argv, ":s:f:m:h", acc_longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":s:f:o:m:h", acc_longopts, NULL)) != -1) {
 		switch (c) {
 		case 's':
 			if (cli_sets_add(&o->sets, optarg))
 				return EXIT_FAIL;
 			break;
 		case 'f':
-			o->format = out_format_parse("accuracy", optarg,
-						     OUT_ALLOW(OUT_TABLE) | OUT_ALLOW(OUT_TSV));
+			o->format = out_format_parse("accuracy", optarg, OUT_ALL);
 			if (o->format < 0)
 				return EXIT_USAGE;
+			break;
+		case 'o':
+			o->out = optarg;
 			break;
 		case 'm':
 			o->model = optarg;
@@ -70,6 +78,7 @@ static int acc_parse(int argc, char **argv, struct acc_opts *o)
 		o->scene = argv[optind++];
 	if (optind < argc)
 		return out_usage("accuracy", "unexpected argument '%s'", argv[optind]);
+	o->format = out_format_pick(o->format, o->out);
 	return -1;
 }
 
@@ -78,10 +87,12 @@ static int acc_run_level(struct anvil_scene sc, enum anvil_model m,
 {
 	struct anvil_err err = {0};
 	struct cli_progress prog = {0};
-	/* A fresh solver per level: the time must include making the layer
-	 * response, not a cache hit from the level before. */
+	/* A fresh solver per level, its disk cache off: the time must include
+	 * making the layer response, not a hit in memory from the level before
+	 * or on disk from an earlier run (which made a warm run look free). */
 	struct anvil_solver *s = anvil_solver_alloc();
-	if (!s) {
+	if (!s || anvil_solver_set_cache_dir(s, NULL, &err)) {
+		anvil_solver_free(s);
 		anvil_result_init(&lv->r, m);
 		cli_error("out of memory");
 		return lv->status = ANVIL_ENOMEM;
@@ -99,9 +110,15 @@ static int acc_run_level(struct anvil_scene sc, enum anvil_model m,
 	return lv->status > 0 ? ANVIL_OK : lv->status;
 }
 
+/* Differences and estimates below OUT_ERR_NOISE are rounding: 0. */
+static double noise_zero(double rel)
+{
+	return rel < OUT_ERR_NOISE ? 0.0 : rel;
+}
+
 static double rel_diff(double x, double ref)
 {
-	return fabs(x - ref) / fabs(ref);
+	return noise_zero(fabs(x - ref) / fabs(ref));
 }
 
 /* Against the next finer level; the finest against its own estimate. */
@@ -114,9 +131,9 @@ static void acc_estimate(struct acc_level *lv, int l)
 		lv[l].rel[1] = rel_diff(r->ts.val, f->ts.val);
 		lv[l].rel[2] = rel_diff(r->Rf.val, f->Rf.val);
 	} else {
-		lv[l].rel[0] = fabs(r->Pmax.err / r->Pmax.val);
-		lv[l].rel[1] = fabs(r->ts.err / r->ts.val);
-		lv[l].rel[2] = fabs(r->Rf.err / r->Rf.val);
+		lv[l].rel[0] = noise_zero(fabs(r->Pmax.err / r->Pmax.val));
+		lv[l].rel[1] = noise_zero(fabs(r->ts.err / r->ts.val));
+		lv[l].rel[2] = noise_zero(fabs(r->Rf.err / r->Rf.val));
 	}
 }
 
@@ -133,9 +150,10 @@ static const char *acc_verdict(const struct acc_level *lv, double target)
 	return missed ? "MISSED" : known ? "ok" : "n/a";
 }
 
-static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format fmt)
+static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format fmt,
+		     FILE *f)
 {
-	static const char *const head[] = {"level", "target", "seconds", "Pmax_kN", "ts_us",
+	static const char *const head[] = {"level", "target", "time_s", "Pmax_kN", "ts_us",
 					   "Rf", "Pmax_rel_err", "ts_rel_err", "Rf_rel_err",
 					   "status"};
 	static const char *const label[] = {"level", "target", "time/s", "P_max/kN", "t_s/us",
@@ -144,7 +162,7 @@ static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format f
 	struct out_grid *g = out_grid_alloc(ncol);
 	int missed = 0;
 	char b[40];
-	out_grid_left(g, ncol - 1);
+	out_grid_text(g, ncol - 1);
 	for (int i = 0; i < ncol; i++)
 		out_grid_cell(g, "%s", t ? label[i] : head[i]);
 	for (int l = 0; l < ANVIL_ACC_COUNT; l++) {
@@ -158,18 +176,19 @@ static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format f
 		out_grid_cell(g, "%s", out_num(b, lv[l].r.ts.val * 1e6, t ? "%.7g" : NULL));
 		out_grid_cell(g, "%s", out_num(b, lv[l].r.Rf.val, t ? "%.7g" : NULL));
 		for (int i = 0; i < 3; i++)
-			out_grid_cell(g, "%s", out_num(b, lv[l].rel[i], t ? "%.1e" : NULL));
+			out_grid_cell(g, "%s", out_err(b, lv[l].rel[i], t ? "%.1e" : NULL));
 		out_grid_cell(g, "%s", v);
 	}
-	int st = out_grid_print(g, fmt, stdout);
+	int st = out_grid_print(g, fmt, f);
 	out_grid_free(g);
 	if (!st && t)
-		printf("\nmodel %s; errors relative, each level against the next finer one,\n"
-		       "the reference level by its own estimate\n",
-		       anvil_model_name(m));
-	if (st || fflush(stdout)) {
-		cli_error("accuracy: %s", anvil_strerror(st ? st : ANVIL_EIO));
-		return EXIT_FAIL;
+		fprintf(f, "\nmodel %s; errors relative, each level against the next finer one,\n"
+			"the reference level by its own estimate (below %.0e: rounding, shown as 0);\n"
+			"times cold (no disk cache)\n",
+			anvil_model_name(m), OUT_ERR_NOISE);
+	if (st) {
+		cli_error("accuracy: %s", anvil_strerror(st));
+		return -1;
 	}
 	return missed ? EXIT_FAIL : EXIT_OK;
 }
@@ -189,22 +208,27 @@ static int acc_main(const struct acc_opts *o)
 {
 	struct anvil_scene sc;
 	struct acc_level lv[ANVIL_ACC_COUNT];
-	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n), code, n = 0;
+	struct cli_out out;
+	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n), code = EXIT_FAIL, n = 0;
 	if (st)
 		return cli_exit_code(st);
 	int m = acc_model(o, &sc);
 	if (m < 0)
 		return EXIT_USAGE;
+	/* opened first: a bad path fails before the work */
+	if (cli_out_open(&out, o->out))
+		return EXIT_FAIL;
 	memset(lv, 0, sizeof lv);
 	for (st = ANVIL_OK; !st && n < ANVIL_ACC_COUNT; n++)
 		st = acc_run_level(sc, (enum anvil_model)m, (enum anvil_accuracy)n, &lv[n]);
 	if (!st) {
 		for (int l = 0; l < ANVIL_ACC_COUNT; l++)
 			acc_estimate(lv, l);
-		code = acc_print(lv, (enum anvil_model)m, (enum out_format)o->format);
-	} else {
-		code = EXIT_FAIL;
+		code = acc_print(lv, (enum anvil_model)m, (enum out_format)o->format, out.f);
+		if (code < 0 || cli_out_commit(&out))
+			code = EXIT_FAIL;
 	}
+	cli_out_abort(&out);
 	for (int l = 0; l < n; l++)
 		anvil_result_free(&lv[l].r);
 	return code;
@@ -212,7 +236,7 @@ static int acc_main(const struct acc_opts *o)
 
 int anvil_cmd_accuracy(int argc, char **argv)
 {
-	struct acc_opts o = {0};
+	struct acc_opts o = {.format = -1};
 	int code = acc_parse(argc, argv, &o);
 	if (code < 0)
 		code = acc_main(&o);

@@ -29,6 +29,7 @@ struct fargs {
 	const char *scene, *out;
 	struct cli_sets sets;
 	int quiet, no_yield;
+	int format;                 /* enum out_format, -1 until picked */
 	/* field */
 	char *at[FIELD_MAX_AT];
 	int nat;
@@ -188,6 +189,35 @@ static void write_preamble(FILE *f, const struct fctx *c, const struct fargs *a,
 		fputs("layer yield unknown (0 in the material table): not judged\n", f);
 }
 
+/* The rows in the format asked for, the preamble (comment lines "# ...")
+ * above them: as is in TSV and the table, as the strings of "about" in
+ * JSON, left out of CSV (which has no comments). */
+static int write_grid(FILE *f, enum out_format fmt, const char *preamble,
+		      const struct out_grid *g)
+{
+	if (fmt == OUT_JSON) {
+		int st;
+		fputs("{\n  \"about\": [", f);
+		for (const char *p = preamble, *nl; p && *p; p = nl + 1) {
+			char line[1024];
+			nl = strchr(p, '\n');
+			if (!nl)
+				nl = p + strlen(p) - 1;
+			const char *from = p + 2 * !strncmp(p, "# ", 2);
+			snprintf(line, sizeof line, "%.*s", (int)(nl - from), from);
+			fprintf(f, "%s\n    ", p == preamble ? "" : ",");
+			out_json_string(f, line);
+		}
+		fputs("\n  ],\n  \"rows\": ", f);
+		st = out_grid_json(g, f, "  ");
+		fputs("\n}\n", f);
+		return st;
+	}
+	if (fmt != OUT_CSV && preamble)
+		fputs(preamble, f);
+	return out_grid_print(g, fmt, f);
+}
+
 /* Write the output file and put it in place; prints the errors. */
 static int finish_out(struct cli_out *o)
 {
@@ -204,6 +234,7 @@ static const struct option field_longopts[] = {
 	{"at", required_argument, NULL, 'a'},
 	{"quantity", required_argument, NULL, 'Q'},
 	{"output", required_argument, NULL, 'o'},
+	{"format", required_argument, NULL, 'f'},
 	{"time", required_argument, NULL, 't'},
 	{"rmax", required_argument, NULL, 'R'},
 	{"depth", required_argument, NULL, 'D'},
@@ -226,6 +257,8 @@ static void field_usage(FILE *f)
 	      "                    units (--at 0,2mm) or in r0 (--at 0.5r0,1r0); repeatable\n"
 	      "  --quantity LIST   some of u,w,szz,srr,stt,srz,vm (default: all)\n"
 	      "  -o, --output FILE write to FILE (default: standard output)\n"
+	      "  -f, --format FMT  tsv (default; the table's comment lines start with #),\n"
+	      "                    table, csv or json (default: from the extension of -o)\n"
 	      "  --no-yield        skip the yield check (peak von Mises against the yield\n"
 	      "                    stress of the layer's material)\n"
 	      "  -q, --quiet       no progress display\n", f);
@@ -244,7 +277,9 @@ static void map_usage(FILE *f)
 	      "  --rmax R          radius of the map (default 3r0)\n"
 	      "  --depth Z         depth of the map (default: h; half-space: 3r0)\n"
 	      "  --grid NRxNZ      points in r and z (default 100x100)\n"
-	      "  -o, --output FILE the TSV (default: standard output unless --png)\n"
+	      "  -o, --output FILE the values (default: standard output unless --png)\n"
+	      "  -f, --format FMT  tsv (default), table, csv or json (default: from the\n"
+	      "                    extension of -o)\n"
 	      "  --png FILE.png    the heat map (gnuplot);  --script FILE its script\n"
 	      "  --size WxH        PNG size in pixels (default: 900 wide, as high as the\n"
 	      "                    map's proportions need)\n"
@@ -278,6 +313,9 @@ static int fargs_option(struct fargs *a, int c, char **argv)
 		return -1;
 	case 'Q': a->quantities = optarg; return -1;
 	case 'o': a->out = optarg; return -1;
+	case 'f':
+		a->format = out_format_parse(a->cmd, optarg, OUT_ALL);
+		return a->format < 0 ? EXIT_USAGE : -1;
 	case 't': a->time = optarg; return -1;
 	case 'R': a->rmax = optarg; return -1;
 	case 'D': a->depth = optarg; return -1;
@@ -312,7 +350,7 @@ static int fargs_parse(struct fargs *a, int argc, char **argv, const char *mine)
 	opterr = 0;
 	optind = 1;
 	plot_opts_default(&a->popts);
-	while ((c = getopt_long(argc, argv, ":s:o:qh", field_longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":s:o:f:qh", field_longopts, NULL)) != -1) {
 		if (c != ':' && c != '?' && !strchr(mine, c))
 			return out_usage(a->cmd, "--%s is an option of 'anvil %s'", long_name(c),
 					 strcmp(a->cmd, "map") ? "map" : "field");
@@ -323,6 +361,9 @@ static int fargs_parse(struct fargs *a, int argc, char **argv, const char *mine)
 		a->scene = argv[optind++];
 	if (optind < argc)
 		return out_usage(a->cmd, "unexpected argument '%s'", argv[optind]);
+	/* TSV unless asked: its numbers are what people plot */
+	if (a->format < 0)
+		a->format = a->out && out_format_of(a->out) > 0 ? out_format_of(a->out) : OUT_TSV;
 	return -1;
 }
 
@@ -387,32 +428,69 @@ static unsigned parse_quantities(const char *cmd, const char *list)
 	return m;
 }
 
-static void field_header(FILE *f, unsigned want)
+static void field_header(struct out_grid *g, unsigned want)
 {
-	fputs("r_mm\tz_mm\tt_us\tP_kN", f);
+	out_grid_cell(g, "r_mm");
+	out_grid_cell(g, "z_mm");
+	out_grid_cell(g, "t_us");
+	out_grid_cell(g, "P_kN");
 	for (int q = 0; q < ANVIL_FQ_COUNT; q++)
-		if (want & 1u << q)
-			fprintf(f, "\t%s_%s\t%s_err_%s", anvil_fq_name(q), fq_unit(q),
-				anvil_fq_name(q), fq_unit(q));
-	fputc('\n', f);
+		if (want & 1u << q) {
+			out_grid_cell(g, "%s_%s", anvil_fq_name(q), fq_unit(q));
+			out_grid_cell(g, "%s_err_%s", anvil_fq_name(q), fq_unit(q));
+		}
 }
 
-static void field_rows(FILE *f, const struct fctx *c, unsigned want, const double *r,
+static void field_rows(struct out_grid *g, const struct fctx *c, unsigned want, const double *r,
 		       const double *z, int npt, const double *t, const struct anvil_fval *v)
 {
 	char b[40];
 	for (int i = 0; i < npt; i++)
 		for (int j = 0; j < FIELD_SAMPLES; j++) {
 			const struct anvil_fval *x = &v[i * FIELD_SAMPLES + j];
-			fprintf(f, "%.10g\t%.10g\t%.10g\t%s", r[i] * 1e3, z[i] * 1e3, t[j] * 1e6,
-				out_num(b, load_at(&c->r.hist, t[j]) * 1e-3, NULL));
+			out_grid_cell(g, "%.10g", r[i] * 1e3);
+			out_grid_cell(g, "%.10g", z[i] * 1e3);
+			out_grid_cell(g, "%.10g", t[j] * 1e6);
+			out_grid_cell(g, "%s", out_num(b, load_at(&c->r.hist, t[j]) * 1e-3, NULL));
 			for (int q = 0; q < ANVIL_FQ_COUNT; q++)
 				if (want & 1u << q) {
-					fprintf(f, "\t%s", out_num(b, x->v[q] * fq_scale(q), NULL));
-					fprintf(f, "\t%s", out_num(b, x->err[q] * fq_scale(q), NULL));
+					out_grid_cell(g, "%s", out_num(b, x->v[q] * fq_scale(q), NULL));
+					out_grid_cell(g, "%s", out_num(b, x->err[q] * fq_scale(q), NULL));
 				}
-			fputc('\n', f);
 		}
+}
+
+/* The preamble as one string (malloc'd; NULL without memory). */
+static char *preamble_text(const struct fctx *c, const struct fargs *a,
+			   const struct anvil_field_peak *pk, const char *first)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *m = open_memstream(&buf, &len);
+	if (!m)
+		return NULL;
+	if (first)
+		fputs(first, m);
+	write_preamble(m, c, a, pk);
+	if (fclose(m) != 0) {
+		free(buf);
+		return NULL;
+	}
+	return buf;
+}
+
+/* Grid and preamble out to o, then o put in place.  Returns an exit code. */
+static int emit(struct cli_out *o, const struct fargs *a, struct out_grid *g, char *pre)
+{
+	int st = g && pre ? write_grid(o->f, (enum out_format)a->format, pre, g) : ANVIL_ENOMEM;
+	out_grid_free(g);
+	free(pre);
+	if (st) {
+		cli_error("%s: %s", a->cmd, anvil_strerror(st));
+		cli_out_abort(o);
+		return EXIT_FAIL;
+	}
+	return finish_out(o);
 }
 
 static int field_compute(struct fctx *c, const struct fargs *a, const double *r,
@@ -434,10 +512,13 @@ static int field_compute(struct fctx *c, const struct fargs *a, const double *r,
 	if (code < 0)
 		code = yield_check(c, a, &pk);
 	if (code < 0) {
-		write_preamble(o->f, c, a, &pk);
-		field_header(o->f, want);
-		field_rows(o->f, c, want, r, z, a->nat, t, v);
-		code = finish_out(o);
+		int ncol = 4 + 2 * __builtin_popcount(want);
+		struct out_grid *g = out_grid_alloc(ncol);
+		if (g) {
+			field_header(g, want);
+			field_rows(g, c, want, r, z, a->nat, t, v);
+		}
+		code = emit(o, a, g, preamble_text(c, a, &pk, NULL));
 	}
 	free(v);
 	return code;
@@ -469,8 +550,8 @@ static int field_run(struct fargs *a)
 
 int anvil_cmd_field(int argc, char **argv)
 {
-	struct fargs a = {.cmd = "field"};
-	int code = fargs_parse(&a, argc, argv, "saQoYqh");
+	struct fargs a = {.cmd = "field", .format = -1};
+	int code = fargs_parse(&a, argc, argv, "saQofYqh");
 	if (code < 0)
 		code = field_run(&a);
 	cli_sets_free(&a.sets);
@@ -550,24 +631,36 @@ static int map_time(const struct fargs *a, const struct fctx *c, struct mapspec 
 	return -1;
 }
 
-static void map_tsv(FILE *f, const struct fctx *c, const struct fargs *a, const struct mapspec *m,
-		    const struct anvil_fval *v, const struct anvil_field_peak *pk)
+static struct out_grid *map_grid(const struct mapspec *m, const struct anvil_fval *v)
 {
 	char b[40];
 	int q = m->q;
-	fprintf(f, "# anvil map: %s at t = %.6g us (P = %.6g kN)\n", anvil_fq_title(q), m->t * 1e6,
-		load_at(&c->r.hist, m->t) * 1e-3);
-	write_preamble(f, c, a, pk);
-	fprintf(f, "r_mm\tz_mm\t%s_%s\t%s_err_%s\n", anvil_fq_name(q), fq_unit(q),
-		anvil_fq_name(q), fq_unit(q));
+	struct out_grid *g = out_grid_alloc(4);
+	if (!g)
+		return NULL;
+	out_grid_cell(g, "r_mm");
+	out_grid_cell(g, "z_mm");
+	out_grid_cell(g, "%s_%s", anvil_fq_name(q), fq_unit(q));
+	out_grid_cell(g, "%s_err_%s", anvil_fq_name(q), fq_unit(q));
 	for (size_t iz = 0; iz < m->nz; iz++)
 		for (size_t ir = 0; ir < m->nr; ir++) {
 			const struct anvil_fval *x = &v[iz * m->nr + ir];
-			fprintf(f, "%.10g\t%.10g\t", m->rmax * 1e3 * ir / (m->nr - 1),
-				m->depth * 1e3 * iz / (m->nz - 1));
-			fprintf(f, "%s\t", out_num(b, x->v[q] * fq_scale(q), NULL));
-			fprintf(f, "%s\n", out_num(b, x->err[q] * fq_scale(q), NULL));
+			out_grid_cell(g, "%.10g", m->rmax * 1e3 * ir / (m->nr - 1));
+			out_grid_cell(g, "%.10g", m->depth * 1e3 * iz / (m->nz - 1));
+			out_grid_cell(g, "%s", out_num(b, x->v[q] * fq_scale(q), NULL));
+			out_grid_cell(g, "%s", out_num(b, x->err[q] * fq_scale(q), NULL));
 		}
+	return g;
+}
+
+static int map_write(struct cli_out *o, const struct fctx *c, const struct fargs *a,
+		     const struct mapspec *m, const struct anvil_fval *v,
+		     const struct anvil_field_peak *pk)
+{
+	char first[256];
+	snprintf(first, sizeof first, "# anvil map: %s at t = %.6g us (P = %.6g kN)\n",
+		 anvil_fq_title(m->q), m->t * 1e6, load_at(&c->r.hist, m->t) * 1e-3);
+	return emit(o, a, map_grid(m, v), preamble_text(c, a, pk, first));
 }
 
 static int map_png(const struct fctx *c, const struct fargs *a, const struct mapspec *m,
@@ -623,10 +716,8 @@ static int map_compute(struct fctx *c, const struct fargs *a, struct mapspec *m,
 		code = map_png(c, a, m, v);
 	if (code < 0 || code == EXIT_OK) {
 		code = EXIT_OK;
-		if (o->f) {
-			map_tsv(o->f, c, a, m, v, &pk);
-			code = finish_out(o);
-		}
+		if (o->f)
+			code = map_write(o, c, a, m, v, &pk);
 	}
 	free(v);
 	return code;
@@ -660,10 +751,42 @@ static int map_run(struct fargs *a)
 
 int anvil_cmd_map(int argc, char **argv)
 {
-	struct fargs a = {.cmd = "map"};
-	int code = fargs_parse(&a, argc, argv, "sQotRDGPSzYqh");
+	struct fargs a = {.cmd = "map", .format = -1};
+	int code = fargs_parse(&a, argc, argv, "sQoftRDGPSzYqh");
 	if (code < 0)
 		code = map_run(&a);
 	cli_sets_free(&a.sets);
 	return code;
+}
+
+/* ---- for anvil run: [output] field with [effects] field = map ------------- */
+
+int anvil_field_map_file(const struct anvil_scene *sc, const char *path, int quiet)
+{
+	struct fargs a = {.cmd = "map", .out = path, .quiet = quiet, .format = OUT_TSV};
+	struct fctx c = {0};
+	struct cli_out o = {0};
+	struct mapspec m = {0};
+	struct anvil_err err = {0};
+	int code;
+	if (out_format_of(path) > 0)
+		a.format = out_format_of(path);
+	plot_opts_default(&a.popts);
+	c.sc = *sc;
+	anvil_result_init(&c.r, ANVIL_MODEL_LAYER);
+	if (anvil_params_from_scene(&c.p, &c.sc, &err)) {
+		cli_error("%s", err.msg);
+		return EXIT_USAGE;
+	}
+	code = map_spec(&a, &c, &m);
+	if (code < 0 && cli_out_open(&o, path))
+		code = EXIT_FAIL;
+	if (code < 0)
+		code = impact_field(&c, &a);
+	if (code < 0)
+		code = map_compute(&c, &a, &m, &o);
+	if (code != EXIT_OK)
+		cli_out_abort(&o);
+	fctx_free(&c);
+	return code ? code : c.tol ? EXIT_FAIL : EXIT_OK;
 }

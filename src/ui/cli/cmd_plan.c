@@ -13,7 +13,7 @@
 #include "output.h"
 
 struct plan_opts {
-	const char *scene;
+	const char *scene, *out;
 	char *models; /* "solver.models=..." built from -m, owned */
 	int format;
 	struct cli_sets sets;
@@ -21,14 +21,16 @@ struct plan_opts {
 
 static void plan_usage(FILE *f)
 {
-	fputs("usage: anvil plan [SCENE] [-s KEY=VALUE]... [-m MODELS] [--format table|tsv]\n"
+	fputs("usage: anvil plan [SCENE] [-s KEY=VALUE]... [-m MODELS] [-f FORMAT] [-o FILE]\n"
 	      "Show how 'anvil run' will compute the scene, without running it: the\n"
 	      "physical estimates, each model's method with its reason, figures and\n"
 	      "estimated cost, and warnings about effects anvil does not model.\n"
 	      "  -s, --set KEY=VALUE  change a scene key, e.g. -s effects.waves=auto\n"
 	      "  -m, --models LIST    models, e.g. layer,halfspace (as -s solver.models=)\n"
-	      "  -f, --format FORMAT  table (default) or tsv (one record per line:\n"
-	      "                       figure, row, warning, total)\n",
+	      "  -f, --format FORMAT  table, tsv or csv (one record per line: figure, row,\n"
+	      "                       warning, total) or json (default: from the extension\n"
+	      "                       of -o, else the table)\n"
+	      "  -o, --output FILE    write to FILE (default: standard output)\n",
 	      f);
 }
 
@@ -36,6 +38,7 @@ static const struct option plan_longopts[] = {
 	{"set", required_argument, NULL, 's'},
 	{"models", required_argument, NULL, 'm'},
 	{"format", required_argument, NULL, 'f'},
+	{"output", required_argument, NULL, 'o'},
 	{"help", no_argument, NULL, 'h'},
 	{NULL, 0, NULL, 0}};
 
@@ -147,29 +150,124 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 	}
 }
 
-/* ---- tsv ---- */
+void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix)
+{
+	char v[48];
+	for (int i = 0; i < pl->nwarn; i++) {
+		const struct anvil_plan_warning *w = &pl->warn[i];
+		int yield = w->kind == ANVIL_WARN_YIELD && pl->softer[0];
+		if (w->kind == ANVIL_WARN_FIELD)
+			continue; /* what was asked for, not a warning about it */
+		fprintf(f, "%s%s%s%s%s", prefix, anvil_plan_warn_text(w->kind), yield ? " (" : "",
+			yield ? pl->softer : "", yield ? ")" : "");
+		for (int k = 0; k < w->nfig; k++) {
+			const struct anvil_fig_info *fi = anvil_plan_fig_info(w->fig[k]);
+			fprintf(f, "%s%s = %s", k ? ", " : "; ", fi->name,
+				fig_text(v, sizeof v, fi->unit, pl->fig[w->fig[k]]));
+		}
+		fputc('\n', f);
+	}
+}
+
+/* ---- tsv, csv ---- */
+
+static const char *const warn_names[ANVIL_WARN_COUNT] = {
+	"yield", "yield-unknown", "superseismic", "plate-range", "refuse", "not-exact", "field"};
 
 /* One record per line, SI values: "figure NAME VALUE", "row MODEL RUN
  * METHOD EXACT MODEL_ERR COST COST_FULL CACHED WHY", "warning KIND",
- * "total COST". */
-static void print_tsv(FILE *f, const struct anvil_plan *pl)
+ * "total COST"; fields separated by sep (no field holds a tab or a
+ * comma but WHY, which CSV quotes). */
+static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 {
-	static const char *const warn_names[ANVIL_WARN_COUNT] = {
-		"yield", "yield-unknown", "superseismic", "plate-range", "refuse", "not-exact", "field"};
 	char v[40];
+	const char *q = sep == ',' ? "\"" : "";
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++)
-		fprintf(f, "figure\t%s\t%s\n", anvil_plan_fig_info((enum anvil_fig)i)->name,
+		fprintf(f, "figure%c%s%c%s\n", sep, anvil_plan_fig_info((enum anvil_fig)i)->name, sep,
 			out_num(v, pl->fig[i], NULL));
 	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
 		const struct anvil_plan_row *r = &pl->row[m];
-		fprintf(f, "row\t%s\t%d\t%s\t%d\t%.6g\t%.6g\t%.6g\t%s\t%s\n",
-			anvil_model_name((enum anvil_model)m), r->run, anvil_method_name(r->method),
-			r->exact, r->model_err, r->cost, r->cost_full, cached_text(r->cached),
-			anvil_plan_why_text(r->run ? r->why : r->off));
+		fprintf(f, "row%c%s%c%d%c%s%c%d%c%.6g%c%.6g%c%.6g%c%s%c%s%s%s\n", sep,
+			anvil_model_name((enum anvil_model)m), sep, r->run, sep,
+			anvil_method_name(r->method), sep, r->exact, sep, r->model_err, sep, r->cost,
+			sep, r->cost_full, sep, cached_text(r->cached), sep, q,
+			anvil_plan_why_text(r->run ? r->why : r->off), q);
 	}
 	for (int i = 0; i < pl->nwarn; i++)
-		fprintf(f, "warning\t%s\n", warn_names[pl->warn[i].kind]);
-	fprintf(f, "total\t%.6g\n", pl->cost);
+		fprintf(f, "warning%c%s\n", sep, warn_names[pl->warn[i].kind]);
+	fprintf(f, "total%c%.6g\n", sep, pl->cost);
+}
+
+/* ---- json ---- */
+
+static void json_text(FILE *f, const char *s)
+{
+	fputc('"', f);
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", c);
+		else if (c < 0x20)
+			fprintf(f, "\\u%04x", c);
+		else
+			fputc(c, f);
+	}
+	fputc('"', f);
+}
+
+static void json_num(FILE *f, double x)
+{
+	char v[40];
+	fputs(isfinite(x) ? out_num(v, x, NULL) : "null", f);
+}
+
+static const char *const si_unit[] = {
+	[ANVIL_UNIT_NONE] = "", [ANVIL_UNIT_FRACTION] = "", [ANVIL_UNIT_TIME] = "s",
+	[ANVIL_UNIT_FORCE] = "N", [ANVIL_UNIT_LENGTH] = "m", [ANVIL_UNIT_PRESSURE] = "Pa"};
+
+/* {"title", "figures": [{name, value, unit (SI), what}], "rows": [...],
+ * "warnings": [{kind, text}], "cost_s"} */
+static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
+{
+	fputs("{\n  \"title\": ", f);
+	json_text(f, title);
+	fputs(",\n  \"figures\": [", f);
+	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
+		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
+		fputs(i ? ",\n    {\"name\": " : "\n    {\"name\": ", f);
+		json_text(f, fi->name);
+		fputs(", \"value\": ", f);
+		json_num(f, pl->fig[i]);
+		fprintf(f, ", \"unit\": \"%s\", \"what\": ", si_unit[fi->unit]);
+		json_text(f, fi->what);
+		fputc('}', f);
+	}
+	fputs("\n  ],\n  \"rows\": [", f);
+	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
+		const struct anvil_plan_row *r = &pl->row[m];
+		fprintf(f, "%s\n    {\"model\": \"%s\", \"run\": %s, \"method\": \"%s\", "
+			"\"exact\": %s, \"model_err\": ", m ? "," : "",
+			anvil_model_name((enum anvil_model)m), r->run ? "true" : "false",
+			anvil_method_name(r->method), r->exact ? "true" : "false");
+		json_num(f, r->model_err);
+		fputs(", \"cost_s\": ", f);
+		json_num(f, r->cost);
+		fputs(", \"cost_full_s\": ", f);
+		json_num(f, r->cost_full);
+		fprintf(f, ", \"cached\": \"%s\", \"why\": ", cached_text(r->cached));
+		json_text(f, anvil_plan_why_text(r->run ? r->why : r->off));
+		fputc('}', f);
+	}
+	fputs("\n  ],\n  \"warnings\": [", f);
+	for (int i = 0; i < pl->nwarn; i++) {
+		fprintf(f, "%s\n    {\"kind\": \"%s\", \"text\": ", i ? "," : "",
+			warn_names[pl->warn[i].kind]);
+		json_text(f, anvil_plan_warn_text(pl->warn[i].kind));
+		fputc('}', f);
+	}
+	fprintf(f, "%s],\n  \"cost_s\": ", pl->nwarn ? "\n  " : "");
+	json_num(f, pl->cost);
+	fputs("\n}\n", f);
 }
 
 /* ---- the command ---- */
@@ -188,8 +286,11 @@ static int plan_option(struct plan_opts *o, int c, char **argv)
 		snprintf(o->models, n, "solver.models=%s", optarg);
 		return -1;
 	case 'f':
-		o->format = out_format_parse("plan", optarg, OUT_ALLOW(OUT_TABLE) | OUT_ALLOW(OUT_TSV));
+		o->format = out_format_parse("plan", optarg, OUT_ALL);
 		return o->format < 0 ? EXIT_USAGE : -1;
+	case 'o':
+		o->out = optarg;
+		return -1;
 	case 'h':
 		plan_usage(stdout);
 		return EXIT_OK;
@@ -203,13 +304,14 @@ static int plan_parse(int argc, char **argv, struct plan_opts *o)
 	int c, code;
 	opterr = 0;
 	optind = 1;
-	while ((c = getopt_long(argc, argv, ":s:m:f:h", plan_longopts, NULL)) != -1)
+	while ((c = getopt_long(argc, argv, ":s:m:f:o:h", plan_longopts, NULL)) != -1)
 		if ((code = plan_option(o, c, argv)) >= 0)
 			return code;
 	if (optind < argc)
 		o->scene = argv[optind++];
 	if (optind < argc)
 		return out_usage("plan", "unexpected argument '%s'", argv[optind]);
+	o->format = out_format_pick(o->format, o->out);
 	if (o->models && cli_sets_add(&o->sets, o->models))
 		return EXIT_FAIL;
 	return -1;
@@ -235,22 +337,23 @@ static int plan_scene(const struct plan_opts *o)
 		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));
 		return cli_exit_code(st);
 	}
-	if (o->format == OUT_TSV) {
-		print_tsv(stdout, &pl);
-	} else {
-		fprintf(stdout, "%s\n", sc.title[0] ? sc.title : "scene");
-		anvil_plan_print(stdout, &pl);
-	}
-	if (fflush(stdout) != 0 || ferror(stdout)) {
-		cli_error("standard output: write failed");
+	struct cli_out out;
+	if (cli_out_open(&out, o->out))
 		return EXIT_FAIL;
+	if (o->format == OUT_TSV || o->format == OUT_CSV) {
+		print_records(out.f, &pl, o->format == OUT_CSV ? ',' : '\t');
+	} else if (o->format == OUT_JSON) {
+		print_json(out.f, &pl, sc.title);
+	} else {
+		fprintf(out.f, "%s\n", sc.title[0] ? sc.title : "scene");
+		anvil_plan_print(out.f, &pl);
 	}
-	return EXIT_OK;
+	return cli_out_commit(&out) ? EXIT_FAIL : EXIT_OK;
 }
 
 int anvil_cmd_plan(int argc, char **argv)
 {
-	struct plan_opts o = {0};
+	struct plan_opts o = {.format = -1};
 	int code = plan_parse(argc, argv, &o);
 	if (code < 0)
 		code = plan_scene(&o);

@@ -3,7 +3,6 @@
 #include <errno.h>
 #include <getopt.h>
 #include <math.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,9 +29,11 @@ static void run_usage(FILE *f)
 	      "Compute one impact with every model of the scene (default: the paper's\n"
 	      "copper rod on a 1 r0 steel layer at 10 m/s).\n"
 	      "  -s, --set KEY=VALUE  change a scene key, e.g. -s layer.thickness=5r0\n"
-	      "  -f, --format FORMAT  table (default), tsv, csv or json\n"
+	      "  -f, --format FORMAT  table, tsv, csv or json (default: from the extension\n"
+	      "                       of -o, .tsv .csv .json; else the table)\n"
 	      "  -o, --output FILE    write the results to FILE (default: standard output)\n"
 	      "      --history FILE   write the time histories of every model as TSV\n"
+	      "                       ('-': standard output, when the results go to -o)\n"
 	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
 	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
 	      "  -v, --verbose        print the resolved scene, the plan and timings on stderr\n"
@@ -69,8 +70,7 @@ static int run_option(struct run_opts *o, int c, char **argv)
 	case 's':
 		return cli_sets_add(&o->sets, optarg) ? EXIT_FAIL : -1;
 	case 'f':
-		o->format = out_format_parse("run", optarg, OUT_ALLOW(OUT_TABLE) |
-				OUT_ALLOW(OUT_TSV) | OUT_ALLOW(OUT_CSV) | OUT_ALLOW(OUT_JSON));
+		o->format = out_format_parse("run", optarg, OUT_ALL);
 		return o->format < 0 ? EXIT_USAGE : -1;
 	case 'o':
 		o->out = optarg;
@@ -109,33 +109,13 @@ static int run_parse(int argc, char **argv, struct run_opts *o)
 		o->scene = argv[optind++];
 	if (optind < argc)
 		return out_usage("run", "unexpected argument '%s'", argv[optind]);
+	if (o->quiet && o->verbose)
+		return out_usage("run", "-q and -v contradict each other: give one");
+	o->format = out_format_pick(o->format, o->out);
 	/* -m comes last so that it wins over any -s solver.models. */
 	if (o->models && cli_sets_add(&o->sets, o->models))
 		return EXIT_FAIL;
 	return -1;
-}
-
-/* Ctrl-C while the models run cancels them through the progress callback,
- * so the temporary output files are removed on the way out.  The handler
- * is one-shot: a second Ctrl-C kills as usual. */
-static volatile sig_atomic_t run_interrupted;
-
-static void run_on_signal(int sig)
-{
-	(void)sig;
-	run_interrupted = 1;
-}
-
-static void run_catch_signals(int on)
-{
-	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
-	struct sigaction sa;
-	memset(&sa, 0, sizeof sa);
-	sigemptyset(&sa.sa_mask);
-	sa.sa_handler = on ? run_on_signal : SIG_DFL;
-	sa.sa_flags = SA_RESETHAND;
-	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
-		sigaction(sigs[i], &sa, NULL);
 }
 
 struct run_progress {
@@ -146,8 +126,6 @@ struct run_progress {
 static int run_progress_cb(void *ctx, double fraction, const char *what)
 {
 	struct run_progress *p = ctx;
-	if (run_interrupted)
-		return 1;
 	return p->quiet ? 0 : cli_progress_cb(&p->shown, fraction, what);
 }
 
@@ -175,44 +153,23 @@ static void run_warn(void *ctx, const char *msg)
 	cli_error("warning: %s", msg);
 }
 
-static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
+static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
+		      const struct anvil_scene *sc, const struct run_opts *o,
 		      struct anvil_result *res, int *n, int *tol)
 {
-	struct anvil_solver *s = anvil_solver_alloc();
 	struct run_progress prog = {.quiet = o->quiet};
 	size_t nhist = o->history || o->png ? RUN_NHIST : 0;
 	int code = EXIT_OK;
-	if (!s) {
-		cli_error("out of memory");
-		return EXIT_FAIL;
-	}
 	anvil_solver_set_progress(s, run_progress_cb, &prog);
 	anvil_solver_set_warn(s, run_warn, NULL);
-	/* the scene read once into a plan; every row runs from it */
-	struct anvil_plan pl;
-	struct anvil_err plan_err = {0};
-	int plan_st = cli_plan(sc, anvil_solver_cache(s), &pl, &plan_err);
-	run_catch_signals(1);
 	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
 		struct anvil_err err = {0};
 		if (!(anvil_scene_models(sc) & (1u << m)))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
-		int st = plan_st;
-		if (plan_st) { /* the scene's fault, not a model's: said once */
-			cli_error("%s", plan_err.msg[0] ? plan_err.msg : anvil_strerror(plan_st));
-			code = EXIT_FAIL;
-			break;
-		} else {
-			st = anvil_solver_run(s, &pl, (enum anvil_model)m, nhist, &res[*n], &err);
-		}
+		int st = anvil_solver_run(s, pl, (enum anvil_model)m, nhist, &res[*n], &err);
 		cli_progress_done(&prog.shown);
 		(*n)++;
-		if (run_interrupted) {
-			cli_error("interrupted");
-			code = EXIT_FAIL;
-			break;
-		}
 		if (st > 0) {
 			/* The values are there, with their error estimates: show them,
 			 * but do not let a script take them for converged ones. */
@@ -227,8 +184,6 @@ static int run_models(const struct anvil_scene *sc, const struct run_opts *o,
 				anvil_model_name((enum anvil_model)m), res[*n - 1].seconds);
 		}
 	}
-	run_catch_signals(0);
-	anvil_solver_free(s);
 	return code;
 }
 
@@ -285,21 +240,40 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 	return EXIT_OK;
 }
 
-/* -v: how the planner will compute the scene, on stderr. */
-static int run_plan(const struct anvil_scene *sc)
+/* The plan the rows will run from, before the work, on stderr: with -v
+ * the whole of it, else (not with -q) its warnings (super-seismic, yield,
+ * out of range), one line each. */
+static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
 {
-	struct anvil_plan pl;
-	struct anvil_err err = {0};
-	struct anvil_solver *s = anvil_solver_alloc(); /* for its cache only */
-	int st = s ? cli_plan(sc, anvil_solver_cache(s), &pl, &err) : ANVIL_ENOMEM;
-	anvil_solver_free(s);
-	if (st) {
-		cli_error("plan: %s", err.msg[0] ? err.msg : anvil_strerror(st));
-		return EXIT_FAIL;
+	if (o->quiet)
+		return;
+	if (o->verbose) {
+		fputs("# plan\n", stderr);
+		anvil_plan_print(stderr, pl);
+	} else {
+		anvil_plan_warnings_line(stderr, pl, "anvil: warning: ");
 	}
-	fputs("# plan\n", stderr);
-	anvil_plan_print(stderr, &pl);
-	return EXIT_OK;
+}
+
+/* R_f outside [0, 1] (beyond its error estimate) is no rebound: the
+ * contact ended with the impactor still moving into the layer, which will
+ * strike again.  Said in the row's note and on stderr; returns 1 if any. */
+static int run_unphysical(struct anvil_result *res, int n)
+{
+	static const char why[] = "R_f outside 0..1: the contact ends with the impactor "
+				  "still moving in: re-contact not modelled";
+	int any = 0;
+	for (int i = 0; i < n; i++) {
+		struct anvil_result *r = &res[i];
+		double tol = (isfinite(r->Rf.err) ? fabs(r->Rf.err) : 0) + 1e-9;
+		if (!isfinite(r->Rf.val) || (r->Rf.val >= -tol && r->Rf.val <= 1 + tol))
+			continue;
+		size_t len = strlen(r->note);
+		snprintf(r->note + len, sizeof r->note - len, "%s%s", len ? "; " : "", why);
+		cli_error("warning: %s: %s", anvil_model_name(r->model), why);
+		any = 1;
+	}
+	return any;
 }
 
 /* The scene's [output] for what the command line leaves unset. */
@@ -324,17 +298,50 @@ static int run_scene(struct run_opts *o)
 		cli_error("no model to run (set solver.models or use -m; [effects] may switch them off)");
 		return EXIT_USAGE;
 	}
-	if (o->verbose && (anvil_scene_write(&sc, stderr) || run_plan(&sc)))
+	if (o->verbose && anvil_scene_write(&sc, stderr))
 		return EXIT_FAIL;
 	run_output(o, &sc);
-	/* Open the outputs first: a bad path fails before minutes of work. */
-	if (cli_out_open(&out, o->out))
-		return EXIT_FAIL;
-	if (o->history && cli_out_open(&hist, o->history)) {
-		cli_out_abort(&out);
+	/* [output] field is only written for a map: points need --at */
+	if (sc.output.field[0] && sc.effects.field != ANVIL_FIELDMODE_MAP) {
+		cli_error("run: [output] field = %s needs [effects] field = map (the field at "
+			  "points: anvil field --at)", sc.output.field);
+		return EXIT_USAGE;
+	}
+	/* Two tables mixed on one stream would parse as neither. */
+	if (o->history && !strcmp(o->history, "-") && (!o->out || !strcmp(o->out, "-")) &&
+	    sc.output.table) {
+		cli_error("run: the history and the results cannot both go to standard output: "
+			  "give -o FILE for the results (or [output] table = off)");
+		return EXIT_USAGE;
+	}
+	/* The scene read once into a plan: -v prints it, every row runs it. */
+	struct anvil_plan pl;
+	struct anvil_err err = {0};
+	struct anvil_solver *s = anvil_solver_alloc();
+	if (!s) {
+		cli_error("out of memory");
 		return EXIT_FAIL;
 	}
-	code = run_models(&sc, o, res, &n, &tol);
+	if ((st = cli_plan(&sc, anvil_solver_cache(s), &pl, &err))) {
+		cli_error("%s", err.msg[0] ? err.msg : anvil_strerror(st));
+		anvil_solver_free(s);
+		return cli_exit_code(st);
+	}
+	run_plan(&pl, o);
+	/* Open the outputs first: a bad path fails before minutes of work. */
+	if (cli_out_open(&out, o->out)) {
+		anvil_solver_free(s);
+		return EXIT_FAIL;
+	}
+	if (o->history && cli_out_open(&hist, o->history)) {
+		cli_out_abort(&out);
+		anvil_solver_free(s);
+		return EXIT_FAIL;
+	}
+	code = run_models(s, &pl, &sc, o, res, &n, &tol);
+	anvil_solver_free(s);
+	if (!code)
+		tol |= run_unphysical(res, n);
 	if (code) {
 		cli_out_abort(&hist);
 		cli_out_abort(&out);
@@ -343,6 +350,8 @@ static int run_scene(struct run_opts *o)
 	}
 	if (!code && o->png)
 		code = run_png(&sc, o, res, n);
+	if (!code && sc.output.field[0])
+		code = anvil_field_map_file(&sc, sc.output.field, o->quiet);
 	for (int i = 0; i < n; i++)
 		anvil_result_free(&res[i]);
 	return code ? code : tol ? EXIT_FAIL : EXIT_OK;
@@ -350,7 +359,7 @@ static int run_scene(struct run_opts *o)
 
 int anvil_cmd_run(int argc, char **argv)
 {
-	struct run_opts o = {0};
+	struct run_opts o = {.format = -1};
 	int code = run_parse(argc, argv, &o);
 	if (code < 0)
 		code = run_scene(&o);

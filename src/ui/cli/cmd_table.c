@@ -13,7 +13,7 @@
 #define NROWS 11
 
 /* Tables 2 and 3 of Pyr'yev et al. 2024 exactly as printed (misprints
- * included: notes.md names them), copied from shared/paper/tables.tsv so
+ * included: doc/paper-notes.md names them), copied from shared/paper/tables.tsv so
  * the binary needs no file at run time.  E_a in J for both tables (the
  * paper prints Table 2's in mJ).  Columns in the order of table_rows. */
 static const struct paper_column {
@@ -66,23 +66,27 @@ struct table_cell {
 };
 
 struct table_opts {
-	const char *v0;
+	const char *v0, *out;
 	int format;
 	struct cli_sets sets;
 };
 
 static void table_usage(FILE *f)
 {
-	fputs("usage: anvil table [--v0 V] [--format table|tsv] [-s KEY=VALUE]...\n"
+	fputs("usage: anvil table [--v0 V] [-f table|tsv|csv|json] [-o FILE] [-s KEY=VALUE]...\n"
 	      "The paper's Tables 2 (V0 = 10 m/s) and 3 (V0 = 100 m/s): each cell is\n"
 	      "\"ours (paper)\"; unstarred rows from the layer model (halfspace at\n"
-	      "h = inf), starred rows from Zener's thin-plate model.\n",
+	      "h = inf), starred rows from Zener's thin-plate model.\n"
+	      "  -f, --format FORMAT  table, tsv, csv or json (default: from the extension\n"
+	      "                       of -o, else the table)\n"
+	      "  -o, --output FILE    write to FILE (default: standard output)\n",
 	      f);
 }
 
 static const struct option table_longopts[] = {
 	{"v0", required_argument, NULL, 'V'},
 	{"format", required_argument, NULL, 'f'},
+	{"output", required_argument, NULL, 'o'},
 	{"set", required_argument, NULL, 's'},
 	{"help", no_argument, NULL, 'h'},
 	{NULL, 0, NULL, 0}};
@@ -93,7 +97,7 @@ static int table_parse(int argc, char **argv, struct table_opts *o)
 	int c;
 	opterr = 0;
 	optind = 1;
-	while ((c = getopt_long(argc, argv, ":s:f:h", table_longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":s:f:o:h", table_longopts, NULL)) != -1) {
 		switch (c) {
 		case 'V':
 			o->v0 = optarg;
@@ -103,10 +107,12 @@ static int table_parse(int argc, char **argv, struct table_opts *o)
 				return EXIT_FAIL;
 			break;
 		case 'f':
-			o->format = out_format_parse("table", optarg,
-						     OUT_ALLOW(OUT_TABLE) | OUT_ALLOW(OUT_TSV));
+			o->format = out_format_parse("table", optarg, OUT_ALL);
 			if (o->format < 0)
 				return EXIT_USAGE;
+			break;
+		case 'o':
+			o->out = optarg;
 			break;
 		case 'h':
 			table_usage(stdout);
@@ -117,6 +123,7 @@ static int table_parse(int argc, char **argv, struct table_opts *o)
 	}
 	if (optind < argc)
 		return out_usage("table", "unexpected argument '%s'", argv[optind]);
+	o->format = out_format_pick(o->format, o->out);
 	return -1;
 }
 
@@ -219,24 +226,31 @@ static void table_free(struct table_cell *cells, int n)
 			anvil_result_free(&cells[j].r[k]);
 }
 
-/* Print one table; the machine format has one header for all tables. */
+/* The human table of one velocity goes out at once; machine rows gather
+ * in *all (one header, one JSON array for both velocities). */
 static int table_print(const struct table_cell *cells, double V0, enum out_format fmt,
-		       int first)
+		       int first, struct out_grid **all, FILE *f)
 {
-	static const char *const head[] = {"V0", "quantity", "h_r0", "ours", "paper"};
-	struct out_grid *g = out_grid_alloc(fmt == OUT_TABLE ? 1 + NTHICK : 5);
-	int st;
-	if (fmt == OUT_TABLE) {
+	static const char *const head[] = {"V0_m_s", "quantity", "h_r0", "ours", "paper"};
+	int st = ANVIL_OK;
+	if (fmt != OUT_TABLE) {
+		if (!*all && (*all = out_grid_alloc(5)) != NULL) {
+			out_grid_text(*all, 1);
+			for (int i = 0; i < 5; i++)
+				out_grid_cell(*all, "%s", head[i]);
+		}
+		if (!*all)
+			st = ANVIL_ENOMEM;
+		else
+			table_machine(*all, cells, V0);
+	} else {
+		struct out_grid *g = out_grid_alloc(1 + NTHICK);
 		table_human(g, cells, V0);
 		if (!first)
-			putchar('\n');
-	} else {
-		for (int i = 0; first && i < 5; i++)
-			out_grid_cell(g, "%s", head[i]);
-		table_machine(g, cells, V0);
+			fputc('\n', f);
+		st = out_grid_print(g, fmt, f);
+		out_grid_free(g);
 	}
-	st = out_grid_print(g, fmt, stdout);
-	out_grid_free(g);
 	if (st)
 		cli_error("table: %s", anvil_strerror(st));
 	return st;
@@ -245,7 +259,8 @@ static int table_print(const struct table_cell *cells, double V0, enum out_forma
 /* One table (one velocity): compute every column, then print.  Returns a
  * core status; a model failing is not one (its cells say n/a). */
 static int table_one(struct anvil_solver *s, struct anvil_scene sc, const char *v0,
-		     enum out_format fmt, int first, char *why, size_t whylen)
+		     enum out_format fmt, int first, struct out_grid **all, FILE *f,
+		     char *why, size_t whylen)
 {
 	struct table_cell cells[NTHICK];
 	int st = table_set(&sc, "impact.velocity", v0, "--v0"), n = 0;
@@ -257,39 +272,58 @@ static int table_one(struct anvil_solver *s, struct anvil_scene sc, const char *
 			table_compute(s, &col, &cells[n], why, whylen);
 	}
 	if (!st)
-		st = table_print(cells, sc.velocity, fmt, first);
+		st = table_print(cells, sc.velocity, fmt, first, all, f);
 	table_free(cells, n);
+	return st;
+}
+
+/* Both tables (or the one of --v0) into out. */
+static int table_all(struct anvil_solver *s, const struct anvil_scene *sc,
+		     const struct table_opts *o, FILE *f, char *why, size_t whylen)
+{
+	static const char *const both[] = {"10 m/s", "100 m/s"};
+	struct out_grid *all = NULL;
+	enum out_format fmt = (enum out_format)o->format;
+	int st = ANVIL_OK;
+	/* One solver for both tables: layer responses are reused across V0. */
+	for (int i = 0; !st && i < 2; i++)
+		if (!o->v0 || i == 0)
+			st = table_one(s, *sc, o->v0 ? o->v0 : both[i], fmt, i == 0, &all, f,
+				       why, whylen);
+	if (!st && all && (st = out_grid_print(all, fmt, f)))
+		cli_error("table: %s", anvil_strerror(st));
+	out_grid_free(all);
+	if (!st && fmt == OUT_TABLE)
+		fprintf(f, "\nours (paper): paper values in parentheses; doc/paper-notes.md (in the\n"
+			"source) lists the known misprints.\n"
+			"Unstarred rows: model layer (halfspace at h = inf); starred rows: zener.\n");
 	return st;
 }
 
 int anvil_cmd_table(int argc, char **argv)
 {
-	static const char *const both[] = {"10 m/s", "100 m/s"};
-	struct table_opts o = {0};
+	struct table_opts o = {.format = -1};
 	struct anvil_scene sc;
 	struct anvil_solver *s = NULL;
+	struct cli_out out = {0};
 	char why[ANVIL_ERR_MSG + 32] = "";
 	int code = table_parse(argc, argv, &o), st = ANVIL_OK;
 	if (code >= 0)
 		goto done;
 	if ((st = cli_scene(&sc, NULL, o.sets.v, o.sets.n)))
 		goto done;
+	if ((st = cli_out_open(&out, o.out)))
+		goto done;
 	if (!(s = anvil_solver_alloc())) {
 		cli_error("out of memory");
 		st = ANVIL_ENOMEM;
 		goto done;
 	}
-	/* One solver for both tables: layer responses are reused across V0. */
-	for (int i = 0; !st && i < 2; i++)
-		if (!o.v0 || i == 0)
-			st = table_one(s, sc, o.v0 ? o.v0 : both[i], (enum out_format)o.format,
-				       i == 0, why, sizeof why);
-	if (!st && o.format == OUT_TABLE)
-		printf("\nours (paper): paper values in parentheses; notes.md lists known misprints.\n"
-		       "Unstarred rows: model layer (halfspace at h = inf); starred rows: zener.\n");
-	if (!st && fflush(stdout))
-		st = ANVIL_EIO;
+	st = table_all(s, &sc, &o, out.f, why, sizeof why);
+	if (!st)
+		st = cli_out_commit(&out);
 done:
+	cli_out_abort(&out);
 	if (code < 0)
 		code = st ? cli_exit_code(st) : why[0] ? EXIT_FAIL : EXIT_OK;
 	if (!st && why[0])

@@ -16,8 +16,19 @@ int anvil_cmd_plan(int argc, char **argv);      /* src/ui/cmd_plan.c */
 int anvil_cmd_field(int argc, char **argv);     /* src/ui/cmd_field.c */
 int anvil_cmd_map(int argc, char **argv);       /* src/ui/cmd_field.c */
 
+/* What `anvil map SCENE -o path` writes (von Mises at t_max, the default
+ * grid; format from the extension, else TSV), for `anvil run` when the
+ * scene has [effects] field = map and [output] field = path.  Returns an
+ * exit code. */
+struct anvil_scene;
+int anvil_field_map_file(const struct anvil_scene *sc, const char *path,
+			 int quiet); /* src/ui/cli/cmd_field.c */
+
 /* The plan as `anvil plan` prints it (also for `anvil run -v`). */
 struct anvil_plan;
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl); /* src/ui/cmd_plan.c */
+/* The plan's warnings, one line each (with their figures) after prefix
+ * (`anvil run` on stderr). */
+void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix);
 
 #endif

@@ -2,6 +2,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #include "output.h"
@@ -24,6 +25,24 @@ int out_format_parse(const char *cmd, const char *name, unsigned allowed)
 	}
 	out_usage(cmd, "--format: unknown format '%s'; one of: %s", name, list);
 	return -1;
+}
+
+int out_format_of(const char *path)
+{
+	static const char *const ext[] = {".txt", ".tsv", ".csv", ".json"};
+	const char *dot = path ? strrchr(path, '.') : NULL, *slash = path ? strrchr(path, '/') : NULL;
+	if (!dot || (slash && dot < slash) || dot == path || (slash && dot == slash + 1))
+		return OUT_TABLE; /* no extension ("out", ".hidden", "-") */
+	for (int i = 0; i < NFORMATS; i++)
+		if (strcasecmp(dot, ext[i]) == 0)
+			return i;
+	return -1;
+}
+
+int out_format_pick(int given, const char *path)
+{
+	int f = given >= 0 ? given : out_format_of(path);
+	return f < 0 ? OUT_TABLE : f;
 }
 
 int out_usage(const char *cmd, const char *fmt, ...)
@@ -58,6 +77,13 @@ char *out_num(char *buf, double x, const char *fmt)
 	return buf;
 }
 
+char *out_err(char *buf, double x, const char *fmt)
+{
+	if (fmt && x == 0)
+		return strcpy(buf, "0");
+	return out_num(buf, x, fmt);
+}
+
 /* ---- the grid ---- */
 
 struct out_grid {
@@ -65,6 +91,7 @@ struct out_grid {
 	size_t n, cap;    /* cells stored */
 	char **cell;
 	unsigned char *left; /* per column */
+	unsigned char *text; /* per column: JSON strings, never numbers */
 	int nomem;
 };
 
@@ -75,7 +102,10 @@ struct out_grid *out_grid_alloc(int ncol)
 		return NULL;
 	g->ncol = ncol;
 	g->left = calloc((size_t)ncol, 1);
-	if (!g->left) {
+	g->text = calloc((size_t)ncol, 1);
+	if (!g->left || !g->text) {
+		free(g->left);
+		free(g->text);
 		free(g);
 		return NULL;
 	}
@@ -91,6 +121,7 @@ void out_grid_free(struct out_grid *g)
 		free(g->cell[i]);
 	free(g->cell);
 	free(g->left);
+	free(g->text);
 	free(g);
 }
 
@@ -98,6 +129,12 @@ void out_grid_left(struct out_grid *g, int col)
 {
 	if (g && col >= 0 && col < g->ncol)
 		g->left[col] = 1;
+}
+
+void out_grid_text(struct out_grid *g, int col)
+{
+	if (g && col >= 0 && col < g->ncol)
+		g->text[col] = g->left[col] = 1;
 }
 
 void out_grid_cell(struct out_grid *g, const char *fmt, ...)
@@ -191,12 +228,93 @@ static void print_table(const struct out_grid *g, FILE *f)
 	free(width);
 }
 
+/* ---- JSON ---- */
+
+static void json_string(FILE *f, const char *s)
+{
+	fputc('"', f);
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", c);
+		else if (c < 0x20)
+			fprintf(f, "\\u%04x", c);
+		else
+			fputc(c, f);
+	}
+	fputc('"', f);
+}
+
+void out_json_string(FILE *f, const char *s)
+{
+	json_string(f, s);
+}
+
+/* JSON has no NaN or infinity: both become null. */
+static void json_number(FILE *f, double x)
+{
+	if (isfinite(x))
+		fprintf(f, "%.10g", x);
+	else
+		fputs("null", f);
+}
+
+/* A machine cell as JSON: a number when it is one ("nan", "inf" and the
+ * table's "-" are null), else a string; text columns are always strings. */
+static void json_cell(FILE *f, const char *s, int text)
+{
+	char *end;
+	if (!text) {
+		if (!strcmp(s, "nan") || !strcmp(s, "inf") || !strcmp(s, "-inf") || !strcmp(s, "-")) {
+			fputs("null", f);
+			return;
+		}
+		double x = strtod(s, &end);
+		/* strtod also reads "0x1p3" and "infinity": JSON reads neither */
+		if (end != s && !*end && isfinite(x) && !strpbrk(s, "xXiInN")) {
+			json_number(f, x);
+			return;
+		}
+	}
+	json_string(f, s);
+}
+
+/* An array of objects, one per row after the header, keyed by it. */
+static void print_json(const struct out_grid *g, FILE *f, const char *indent)
+{
+	size_t nrow = g->n / (size_t)g->ncol;
+	fputs("[", f);
+	for (size_t r = 1; r < nrow; r++) {
+		fprintf(f, "%s\n%s  {", r > 1 ? "," : "", indent);
+		for (int c = 0; c < g->ncol; c++) {
+			fputs(c ? ", " : "", f);
+			json_string(f, g->cell[c]);
+			fputs(": ", f);
+			json_cell(f, g->cell[r * (size_t)g->ncol + (size_t)c], g->text[c]);
+		}
+		fputs("}", f);
+	}
+	fprintf(f, "%s]", nrow > 1 ? "\n" : "");
+	(void)indent;
+}
+
+int out_grid_json(const struct out_grid *g, FILE *f, const char *indent)
+{
+	if (!g || g->nomem || g->n % (size_t)g->ncol)
+		return ANVIL_ENOMEM;
+	print_json(g, f, indent ? indent : "");
+	return ferror(f) ? ANVIL_EIO : ANVIL_OK;
+}
+
 int out_grid_print(const struct out_grid *g, enum out_format fmt, FILE *f)
 {
 	if (!g || g->nomem || g->n % (size_t)g->ncol)
 		return ANVIL_ENOMEM;
 	if (fmt == OUT_TABLE) {
 		print_table(g, f);
+	} else if (fmt == OUT_JSON) {
+		print_json(g, f, "");
+		fputc('\n', f);
 	} else {
 		for (size_t i = 0; i < g->n; i++) {
 			int last = (int)(i % (size_t)g->ncol) == g->ncol - 1;
@@ -230,18 +348,20 @@ struct column {
 	size_t off;           /* offsetof(struct anvil_result, value) */
 	size_t err_off;       /* offset of its error estimate */
 	const char *fmt;      /* table format */
+	int zener_only;       /* meaningful on the zener row only */
 };
 
 #define RV(f) offsetof(struct anvil_result, f)
 static const struct column columns[] = {
-	{"ts_us", "ts_err_us", "t_s/us", 1e6, RV(ts.val), RV(ts.err), "%.2f"},
-	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax.val), RV(tmax.err), "%.2f"},
-	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax.val), RV(Pmax.err), "%#.4g"},
-	{"Vs", NULL, "V_s/(m/s)", 1, RV(Vs.val), 0, "%#.4g"},
-	{"Rf", "Rf_err", "R_f", 1, RV(Rf.val), RV(Rf.err), "%.4f"},
-	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea.val), RV(Ea.err), "%#.3g"},
-	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%.4f"},
-	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%.4f"},
+	{"ts_us", "ts_err_us", "t_s/us", 1e6, RV(ts.val), RV(ts.err), "%.2f", 0},
+	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax.val), RV(tmax.err), "%.2f", 0},
+	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax.val), RV(Pmax.err), "%#.4g", 0},
+	{"Vs_m_s", NULL, "V_s/(m/s)", 1, RV(Vs.val), 0, "%#.4g", 0},
+	{"Rf", "Rf_err", "R_f", 1, RV(Rf.val), RV(Rf.err), "%.4f", 0},
+	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea.val), RV(Ea.err), "%#.3g", 0},
+	/* Zener's parameters describe the plate model: only its row has them */
+	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%.4f", 1},
+	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%.4f", 1},
 };
 #define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
 
@@ -260,25 +380,32 @@ static double field(const struct anvil_result *r, size_t off)
 
 static double value(const struct anvil_result *r, const struct column *c)
 {
+	if (c->zener_only && r->model != ANVIL_MODEL_ZENER)
+		return NAN;
 	return c->scale * field(r, c->off);
 }
 
+/* An error estimate below OUT_ERR_NOISE of its value is the rounding of
+ * doubles, not an error of the method: it is reported as 0. */
 static double error(const struct anvil_result *r, const struct column *c)
 {
-	return c->err_name ? c->scale * field(r, c->err_off) : NAN;
+	if (!c->err_name)
+		return NAN;
+	double e = c->scale * field(r, c->err_off), x = value(r, c);
+	return fabs(e) < OUT_ERR_NOISE * fabs(x) ? 0.0 : e;
 }
 
 static void machine_header(struct out_grid *g)
 {
 	out_grid_cell(g, "model");
 	out_grid_cell(g, "h_r0");
-	out_grid_cell(g, "V0");
+	out_grid_cell(g, "V0_m_s");
 	for (int i = 0; i < NCOLUMNS; i++)
 		out_grid_cell(g, "%s", columns[i].name);
 	for (int i = 0; i < NCOLUMNS; i++)
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", columns[i].err_name);
-	out_grid_cell(g, "seconds");
+	out_grid_cell(g, "time_s");
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -317,7 +444,7 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 	for (int i = 0; i < NCOLUMNS; i++) {
 		out_grid_cell(g, "%s", out_num(b, value(r, &columns[i]), columns[i].fmt));
 		if (columns[i].err_name)
-			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), "%.2g"));
+			out_grid_cell(g, "%s", out_err(b, error(r, &columns[i]), "%.2g"));
 	}
 	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
 }
@@ -369,32 +496,6 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 	return st;
 }
 
-/* ---- JSON ---- */
-
-static void json_string(FILE *f, const char *s)
-{
-	fputc('"', f);
-	for (; *s; s++) {
-		unsigned char c = (unsigned char)*s;
-		if (c == '"' || c == '\\')
-			fprintf(f, "\\%c", c);
-		else if (c < 0x20)
-			fprintf(f, "\\u%04x", c);
-		else
-			fputc(c, f);
-	}
-	fputc('"', f);
-}
-
-/* JSON has no NaN or infinity: both become null. */
-static void json_number(FILE *f, double x)
-{
-	if (isfinite(x))
-		fprintf(f, "%.10g", x);
-	else
-		fputs("null", f);
-}
-
 static void json_key(FILE *f, const char *indent, const char *key)
 {
 	fprintf(f, ",\n%s", indent);
@@ -415,11 +516,11 @@ static void json_scene(FILE *f, const struct anvil_scene *sc)
 	json_number(f, anvil_scene_h(sc));
 	json_key(f, in, "h_r0");
 	json_number(f, out_h_r0(sc, NULL));
-	json_key(f, in, "V0");
+	json_key(f, in, "V0_m_s");
 	json_number(f, sc->velocity);
-	json_key(f, in, "mass");
+	json_key(f, in, "mass_kg");
 	json_number(f, sc->mass);
-	json_key(f, in, "radius");
+	json_key(f, in, "radius_m");
 	json_number(f, sc->radius);
 	json_key(f, in, "accuracy");
 	json_string(f, anvil_accuracy_name(sc->accuracy));
@@ -434,7 +535,7 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 	json_string(f, anvil_model_name(r->model));
 	json_key(f, in, "h_r0");
 	json_number(f, out_h_r0(sc, r));
-	json_key(f, in, "V0");
+	json_key(f, in, "V0_m_s");
 	json_number(f, sc->velocity);
 	for (int i = 0; i < NCOLUMNS; i++) {
 		json_key(f, in, columns[i].name);
@@ -446,7 +547,7 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 		json_key(f, in, columns[i].err_name);
 		json_number(f, error(r, &columns[i]));
 	}
-	json_key(f, in, "seconds");
+	json_key(f, in, "time_s");
 	json_number(f, r->seconds);
 	json_key(f, in, "note");
 	json_string(f, r->note);
@@ -477,7 +578,7 @@ int out_results(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 
 int out_history(FILE *f, const struct anvil_result *res, int n)
 {
-	fputs("model\tt_us\tP_kN\tv_m_s\tW_um\tw_um\talphaH_um\n", f);
+	fputs("model\tt_us\tP_kN\tv_m_s\tW_impactor_um\tw_layer_um\talphaH_um\n", f);
 	for (int i = 0; i < n; i++) {
 		const struct anvil_history *h = &res[i].hist;
 		const char *name = anvil_model_name(res[i].model);

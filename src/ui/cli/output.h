@@ -17,6 +17,24 @@
 
 enum out_format { OUT_TABLE, OUT_TSV, OUT_CSV, OUT_JSON };
 #define OUT_ALLOW(f) (1u << (f))
+#define OUT_ALL 0xfu
+
+/* Machine names say their unit: NAME_UNIT, the number being in UNIT, with
+ * '/' written '_' (Vs_m_s, rho_kg_m3); dimensionless quantities have no
+ * suffix (h_r0, Rf, nu, lambda_star).  TSV, CSV and JSON use the same
+ * names. */
+
+/* Relative size below which an error estimate is rounding noise: doubles
+ * carry 1.1e-16, and the longest chains of operations (quadratures of
+ * ~1e4 terms) accumulate at most ~1e4 of those. */
+#define OUT_ERR_NOISE 1e-12
+
+/* The format asked for by the extension of path: .tsv, .csv, .json (any
+ * case), .txt or none (and NULL, "-") the table; -1 for another. */
+int out_format_of(const char *path);
+/* -f when given (>= 0), else the extension of the output (another
+ * extension: the table). */
+int out_format_pick(int given, const char *path);
 
 /* The format called name, if allowed (a mask of OUT_ALLOW bits); else
  * prints "anvil CMD: --format: ..." listing the allowed ones and returns
@@ -35,6 +53,9 @@ int out_getopt_error(const char *cmd, int c, char **argv);
  * table with the printf format fmt ("-" for NaN, "inf" for infinity).
  * Returns buf, which must hold 40 bytes. */
 char *out_num(char *buf, double x, const char *fmt);
+/* The same for an error estimate: the table shows an exact 0 as "0" (an
+ * estimate at the rounding level, see OUT_ERR_NOISE), not "0.0e+00". */
+char *out_err(char *buf, double x, const char *fmt);
 
 /* A grid of text cells, printed as an aligned table or as TSV/CSV.  The
  * first row is the header.  Cells are filled left to right, ncol to a
@@ -44,15 +65,29 @@ struct out_grid *out_grid_alloc(int ncol);
 void out_grid_free(struct out_grid *g); /* NULL is a no-op */
 /* Left-align column col in the table format (numbers are right-aligned). */
 void out_grid_left(struct out_grid *g, int col);
+/* Column col holds text: left-aligned, and a JSON string even when it
+ * reads as a number. */
+void out_grid_text(struct out_grid *g, int col);
 void out_grid_cell(struct out_grid *g, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
-/* Print as OUT_TABLE, OUT_TSV or OUT_CSV.  ANVIL_ENOMEM if a cell could
+/* Print as OUT_TABLE, OUT_TSV, OUT_CSV or OUT_JSON (an array of objects
+ * keyed by the header: numbers as numbers, nan/inf/"-" as null).  ANVIL_ENOMEM if a cell could
  * not be stored, ANVIL_EIO on a write error, else ANVIL_OK. */
 int out_grid_print(const struct out_grid *g, enum out_format fmt, FILE *f);
+/* Only the JSON array, without a newline, its rows indented by indent:
+ * for a caller that wraps it in an object. */
+int out_grid_json(const struct out_grid *g, FILE *f, const char *indent);
+
+
+/* s as a JSON string: quotes, backslashes and control characters escaped
+ * (the text is taken to be UTF-8). */
+void out_json_string(FILE *f, const char *s);
 
 /* The results of `anvil run`: one row per result, columns
- *   model h_r0 V0 ts_us tmax_us Pmax_kN Vs Rf Ea_J lambda_star Rf_star
- *   ts_err_us tmax_err_us Pmax_err_kN Rf_err Ea_err_J seconds
+ *   model h_r0 V0_m_s ts_us tmax_us Pmax_kN Vs_m_s Rf Ea_J lambda_star
+ *   Rf_star ts_err_us tmax_err_us Pmax_err_kN Rf_err Ea_err_J time_s
+ * (lambda_star and Rf_star on the zener row only; errors below
+ * OUT_ERR_NOISE relative as 0)
  * (the table shows errors as a "±" column beside each value, and the
  * models' notes and the scene's title below it; JSON wraps the rows with a
  * summary of the scene).  Returns ANVIL_OK, ANVIL_ENOMEM or ANVIL_EIO. */
@@ -60,7 +95,7 @@ int out_results(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 		const struct anvil_result *res, int n);
 
 /* The histories of every result that has one, as TSV with columns
- *   model t_us P_kN v_m_s W_um w_um alphaH_um
+ *   model t_us P_kN v_m_s W_impactor_um w_layer_um alphaH_um
  * Returns ANVIL_OK or ANVIL_EIO. */
 int out_history(FILE *f, const struct anvil_result *res, int n);
 

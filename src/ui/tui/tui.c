@@ -23,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <termios.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <curses.h>
@@ -61,6 +62,7 @@ struct worker {
 	atomic_uint want;       /* the newest generation; runs for others are stale */
 	/* under mu: */
 	int quit, have_job;
+	int exited;             /* worker_main has returned (broadcast on cv) */
 	unsigned job_gen, job_mask;
 	struct anvil_scene job_sc;
 	struct done *head, **tail;
@@ -156,6 +158,10 @@ static void *worker_main(void *arg)
 		pthread_mutex_unlock(&w->mu);
 		worker_run(w, &sc, gen, mask);
 	}
+	pthread_mutex_lock(&w->mu);
+	w->exited = 1;
+	pthread_cond_broadcast(&w->cv);
+	pthread_mutex_unlock(&w->mu);
 	return NULL;
 }
 
@@ -200,13 +206,31 @@ fail:
 	return -1;
 }
 
-static void worker_stop(struct worker *w)
+/* Cancel and stop the worker; 0 once it has ended and everything is freed.
+ * A solver between two progress calls may not answer for seconds: after
+ * WORKER_STOP_MS the thread is detached and -1 returned, with nothing
+ * freed (it still uses it): the caller restores the terminal and _exits. */
+#define WORKER_STOP_MS 100
+static int worker_stop(struct worker *w)
 {
+	struct timespec until;
+	int exited;
 	atomic_store(&w->want, atomic_load(&w->want) + 1); /* cancel the run */
+	clock_gettime(CLOCK_REALTIME, &until);
+	until.tv_nsec += WORKER_STOP_MS * 1000000L;
+	until.tv_sec += until.tv_nsec / 1000000000L;
+	until.tv_nsec %= 1000000000L;
 	pthread_mutex_lock(&w->mu);
 	w->quit = 1;
-	pthread_cond_signal(&w->cv);
+	pthread_cond_broadcast(&w->cv);
+	while (!w->exited && pthread_cond_timedwait(&w->cv, &w->mu, &until) == 0)
+		;
+	exited = w->exited;
 	pthread_mutex_unlock(&w->mu);
+	if (!exited) {
+		pthread_detach(w->thread);
+		return -1;
+	}
 	pthread_join(w->thread, NULL);
 	for (struct done *d = w->head, *next; d; d = next) {
 		next = d->next;
@@ -218,6 +242,7 @@ static void worker_stop(struct worker *w)
 	close(w->wake[0]);
 	close(w->wake[1]);
 	anvil_solver_free(w->solver);
+	return 0;
 }
 
 static void worker_post(struct worker *w, unsigned gen,
@@ -413,7 +438,7 @@ static int on_key(struct tui *t, int ch, int *dirty)
 	}
 	/* on the size message only quitting makes sense: keys typed blind
 	 * must not change a scene nobody can see */
-	if (key < 0 || (too_small() && key != 'q'))
+	if (key <= 0 || (too_small() && !strchr("qQyn", key)))
 		return 0;
 	switch (tui_model_key(&t->m, key)) {
 	case TUI_ACT_NONE: return 0;
@@ -610,15 +635,25 @@ static int run(struct tui *t, const struct tui_view *want)
 	signals_install();
 	if (!(scr = screen_start(want, &t->view))) {
 		signals_restore();
-		worker_stop(&t->w);
+		(void)worker_stop(&t->w);
 		cli_error("tui: cannot use the terminal (TERM=%s)",
 			  getenv("TERM") ? getenv("TERM") : "");
 		return EXIT_FAIL;
 	}
 	loop(t);
-	worker_stop(&t->w);
+	int stuck = worker_stop(&t->w);
 	screen_end(scr);
 	signals_restore();
+	if (stuck) {
+		/* the worker still computes with memory we would free: leave now,
+		 * the terminal restored, as a signal would have */
+		fflush(NULL);
+		if (got_sigint) {
+			signal(SIGINT, SIG_DFL);
+			raise(SIGINT);
+		}
+		_exit(EXIT_OK);
+	}
 	return EXIT_OK;
 }
 

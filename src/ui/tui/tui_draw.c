@@ -185,30 +185,43 @@ static const struct {
 	const char *label, *label_utf8;
 	double scale;
 	size_t off;
+	int zener_only; /* Zener's parameters describe no other model */
 } quantities[] = {
-	{"t_s   us", "t_s   \xc2\xb5s", 1e6, offsetof(struct anvil_result, ts)},
-	{"t_max us", "t_max \xc2\xb5s", 1e6, offsetof(struct anvil_result, tmax)},
-	{"P_max kN", NULL, 1e-3, offsetof(struct anvil_result, Pmax)},
-	{"V_s  m/s", NULL, 1, offsetof(struct anvil_result, Vs)},
-	{"R_f", NULL, 1, offsetof(struct anvil_result, Rf)},
-	{"E_a   mJ", NULL, 1e3, offsetof(struct anvil_result, Ea)},
-	{"lambda*", "\xce\xbb*", 1, offsetof(struct anvil_result, lambda_star)},
-	{"R_f*", NULL, 1, offsetof(struct anvil_result, Rf_star)},
-	{"time  ms", NULL, 1e3, offsetof(struct anvil_result, seconds)},
+	{"t_s   us", "t_s   \xc2\xb5s", 1e6, offsetof(struct anvil_result, ts), 0},
+	{"t_max us", "t_max \xc2\xb5s", 1e6, offsetof(struct anvil_result, tmax), 0},
+	{"P_max kN", NULL, 1e-3, offsetof(struct anvil_result, Pmax), 0},
+	{"V_s  m/s", NULL, 1, offsetof(struct anvil_result, Vs), 0},
+	{"R_f", NULL, 1, offsetof(struct anvil_result, Rf), 0},
+	{"E_a   mJ", NULL, 1e3, offsetof(struct anvil_result, Ea), 0},
+	{"lambda*", "\xce\xbb*", 1, offsetof(struct anvil_result, lambda_star), 1},
+	{"R_f*", NULL, 1, offsetof(struct anvil_result, Rf_star), 1},
+	{"time  ms", NULL, 1e3, offsetof(struct anvil_result, seconds), 0},
 };
 #define NQUANT ((int)(sizeof quantities / sizeof quantities[0]))
+
+/* Magnitudes no quantity of an impact reaches (seconds, newtons, joules,
+ * m/s in the units shown): beyond them a number is garbage (1.797e-299 for
+ * an unset field), shown as "-" rather than as a value. */
+#define CELL_TINY 1e-100
+#define CELL_HUGE 1e100
 
 static void cell_text(const struct tui_row *row, int q, const struct tui_view *v,
 		      char *buf, size_t n)
 {
-	if (row->state == TUI_ROW_OFF)
+	if (row->state == TUI_ROW_OFF ||
+	    (quantities[q].zener_only && row->res.model != ANVIL_MODEL_ZENER)) {
 		snprintf(buf, n, "-");
-	else if (!row->have)
-		snprintf(buf, n, "%s", row->state == TUI_ROW_PENDING ? ellipsis(v) : "n/a");
-	else {
+	} else if (!row->have) {
+		/* a refusal says so: its zeros would read as computed ones */
+		snprintf(buf, n, "%s", row->state == TUI_ROW_PENDING ? ellipsis(v)
+				       : row->status != ANVIL_OK ? "refused" : "n/a");
+	} else {
 		double x = *(const double *)((const char *)&row->res + quantities[q].off);
-		snprintf(buf, n, "%s%.4g", row->status > 0 ? "~" : "",
-			 x * quantities[q].scale);
+		x *= quantities[q].scale;
+		if (!isfinite(x) || fabs(x) > CELL_HUGE || (x != 0 && fabs(x) < CELL_TINY))
+			snprintf(buf, n, "-");
+		else
+			snprintf(buf, n, "%s%.4g", row->status > 0 ? "~" : "", x);
 	}
 }
 
@@ -641,6 +654,42 @@ static void draw_plot(const struct tui_model *m, const struct tui_view *v,
 
 /* ---- the bottom lines ---- */
 
+/* A message too long for one line, wrapped at spaces onto the lines above
+ * bottom (over the foot of the plot), at most STATUS_MAX_LINES. */
+#define STATUS_MAX_LINES 4
+static void put_wrapped(int bottom, attr_t a, const char *msg)
+{
+	const char *line[STATUS_MAX_LINES];
+	int len[STATUS_MAX_LINES], n = 0, w = COLS - 1;
+	const char *p = msg;
+	while (*p && n < STATUS_MAX_LINES) {
+		int cols = 0, cut = -1, i = 0;
+		for (; p[i] && cols < w; i++) {
+			cols += ((unsigned char)p[i] & 0xC0) != 0x80;
+			if (p[i] == ' ')
+				cut = i;
+		}
+		while (p[i] && ((unsigned char)p[i] & 0xC0) == 0x80)
+			i++; /* never split a character */
+		if (p[i] && cut > 0)
+			i = cut; /* break at the last space */
+		line[n] = p;
+		len[n++] = i;
+		p += i;
+		while (*p == ' ')
+			p++;
+	}
+	for (int k = 0; k < n; k++) {
+		char buf[ANVIL_ERR_MSG + 1];
+		snprintf(buf, sizeof buf, "%.*s", len[k], line[k]);
+		size_t l = strlen(buf);
+		if (k + 1 == n && *p && l > 3) /* more than fits */
+			strcpy(buf + l - 3, "...");
+		bar(bottom - n + 1 + k, A_NORMAL);
+		put(bottom - n + 1 + k, 0, w, a, buf);
+	}
+}
+
 static void draw_status(const struct tui_model *m)
 {
 	static const char keys_long[] =
@@ -656,7 +705,7 @@ static void draw_status(const struct tui_model *m)
 		putf(y, 0, COLS - 1, attr(R_NORMAL), "%s%s %s", prompt,
 		     m->edit_key[0] ? " =" : ":", m->edit);
 	} else if (m->msg[0]) {
-		put(y, 0, COLS - 1, attr(m->msg_error ? R_ERROR : R_INFO), m->msg);
+		put_wrapped(y, attr(m->msg_error ? R_ERROR : R_INFO), m->msg);
 	}
 	/* while typing, an error about the text replaces the key hints */
 	if (m->editing && m->msg[0]) {

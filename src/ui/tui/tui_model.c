@@ -33,7 +33,8 @@ const char *const tui_help_lines[] = {
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
 	"  Ctrl-L                repaint the screen",
 	"  ?, F1                 this help",
-	"  q                     quit",
+	"  q                     quit (asks first when the scene has unsaved changes)",
+	"  Q                     quit without asking",
 	"",
 	"Every change recomputes in the background; dimmed values are being",
 	"recomputed.  '~' marks a value whose accuracy target was not reached.",
@@ -658,7 +659,13 @@ static enum tui_action main_key(struct tui_model *m, int key)
 	case '?': case TUI_KEY_HELP:
 		m->screen = TUI_SCREEN_HELP;
 		return TUI_ACT_REDRAW;
-	case 'q': return TUI_ACT_QUIT;
+	case 'q':
+		if (!m->modified)
+			return TUI_ACT_QUIT;
+		m->confirm_quit = 1;
+		tui_model_message(m, 1, "the scene has unsaved changes: quit anyway? (y/n; s saves)");
+		return TUI_ACT_REDRAW;
+	case 'Q': return TUI_ACT_QUIT;
 	case TUI_CTRL('l'): return TUI_ACT_REPAINT;
 	case TUI_KEY_ESC: case 27:
 		m->msg[0] = '\0';
@@ -674,8 +681,21 @@ static enum tui_action help_key(struct tui_model *m, int key)
 	return TUI_ACT_REDRAW;
 }
 
+/* The answer to "quit anyway?": y quits, s saves (and stays), anything
+ * else goes back. */
+static enum tui_action confirm_key(struct tui_model *m, int key)
+{
+	m->confirm_quit = 0;
+	m->msg[0] = '\0';
+	if (key == 'y' || key == 'Y' || key == 'Q')
+		return TUI_ACT_QUIT;
+	return key == 's' ? TUI_ACT_SAVE : TUI_ACT_REDRAW;
+}
+
 enum tui_action tui_model_key(struct tui_model *m, int key)
 {
+	if (m->confirm_quit)
+		return confirm_key(m, key);
 	if (m->screen == TUI_SCREEN_HELP)
 		return help_key(m, key);
 	if (m->editing)

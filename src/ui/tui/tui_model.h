@@ -122,6 +122,7 @@ struct tui_model {
 	enum tui_screen screen;
 	enum tui_quantity quantity;
 	int editing;                /* the status line is a text field */
+	int confirm_quit;           /* q with unsaved changes: y quits */
 	char edit_key[64];          /* scene key being edited; "" for ':' */
 	char edit_unit[8];          /* unit added to a bare number */
 	char edit[TUI_EDIT_MAX];
