@@ -115,6 +115,12 @@ assert '? shows the help' wait_for main 'this help'
 T send-keys -t main x
 assert 'a key leaves the help' wait_for main 'Results'
 
+T send-keys -t main P
+assert 'P shows the plan the rows ran from' wait_for main 'the plan \(any key returns\)'
+assert 'the plan names the zener row and its method' wait_for main 'zener'
+T send-keys -t main x
+assert 'a key leaves the plan' wait_for main 'Results'
+
 T send-keys -t main p
 assert 'a missing gnuplot is a status-line message' wait_for main 'export failed: .*gnuplot'
 assert 'and the TUI is still running' wait_for main 'Results'

@@ -123,6 +123,11 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 		fprintf(f, "  [layer response %s]", cached_text(r->cached));
 	fprintf(f, "\n      %s\n", anvil_plan_why_text(r->why));
 	fig_list(f, pl, r->fig, r->nfig);
+	/* decided here, returned by the solver as it stands, without work */
+	if (r->status < 0)
+		fprintf(f, "      refused: %s\n", r->refusal[0] ? r->refusal : anvil_strerror(r->status));
+	if (r->fallback)
+		fprintf(f, "      fallback: the layer, if the computed contact outlasts 2h/c1\n");
 }
 
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl)

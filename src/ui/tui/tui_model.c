@@ -32,6 +32,7 @@ const char *const tui_help_lines[] = {
 	"                        current directory or $ANVIL_PNG_DIR",
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
 	"  Ctrl-L                repaint the screen",
+	"  P                     the plan: how each row is computed, and why",
 	"  ?, F1                 this help",
 	"  q                     quit (asks first when the scene has unsaved changes)",
 	"  Q                     quit without asking",
@@ -318,6 +319,15 @@ int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 			cache_put(m, &key, row);
 	}
 	return 1;
+}
+
+void tui_model_deliver_plan(struct tui_model *m, unsigned gen, const struct anvil_plan *pl)
+{
+	if (gen != m->gen)
+		return;
+	m->plan = *pl;
+	m->plan_gen = gen;
+	m->have_plan = 1;
 }
 
 void tui_model_progress(struct tui_model *m, unsigned gen, double fraction,
@@ -659,6 +669,9 @@ static enum tui_action main_key(struct tui_model *m, int key)
 	case '?': case TUI_KEY_HELP:
 		m->screen = TUI_SCREEN_HELP;
 		return TUI_ACT_REDRAW;
+	case 'P':
+		m->screen = TUI_SCREEN_PLAN;
+		return TUI_ACT_REDRAW;
 	case 'q':
 		if (!m->modified)
 			return TUI_ACT_QUIT;
@@ -696,7 +709,7 @@ enum tui_action tui_model_key(struct tui_model *m, int key)
 {
 	if (m->confirm_quit)
 		return confirm_key(m, key);
-	if (m->screen == TUI_SCREEN_HELP)
+	if (m->screen == TUI_SCREEN_HELP || m->screen == TUI_SCREEN_PLAN)
 		return help_key(m, key);
 	if (m->editing)
 		return edit_key(m, key);
