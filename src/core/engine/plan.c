@@ -311,19 +311,18 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 	double tau_end = anvil_wave_window(&e->lay, 0);
 	int tau_idx = anvil_cache_grid_up(tau_end);
 	double om = anvil_cache_grid(e->lay.omega_idx), tau_q = anvil_cache_grid(tau_idx);
-	/* the response and its coarse twin (half the bandwidth, solver.c) */
-	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx };
-	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx };
+	/* the response and its coarse twin (half the bandwidth, solver.c), made
+	 * together from one spectrum: the main one's evaluations pay for both */
+	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx, 0 };
+	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx, 1 };
 	enum anvil_cache_where wm = ANVIL_CACHE_NONE, wt = ANVIL_CACHE_NONE;
 	if (cache) {
 		wm = anvil_cache_probe(cache, &key);
 		wt = anvil_cache_probe(cache, &twin);
 	}
 	double evals = 0;
-	if (wm == ANVIL_CACHE_NONE)
+	if (wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE)
 		evals += corr_evals(e->lay.hh, p->nu, p->cR / p->c2, om, tau_q, acc);
-	if (wt == ANVIL_CACHE_NONE)
-		evals += corr_evals(e->lay.hh, p->nu, p->cR / p->c2, 0.5 * om, tau_q, acc);
 	/* found only when both are: else something is computed */
 	*where = wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE ? ANVIL_CACHE_NONE
 		 : wm == ANVIL_CACHE_DISK || wt == ANVIL_CACHE_DISK ? ANVIL_CACHE_DISK
