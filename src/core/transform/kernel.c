@@ -49,8 +49,12 @@ cplx anvil_kernel_csqrt(cplx z)
 
 cplx anvil_kernel_recip(cplx z)
 {
-	double x = creal(z), y = cimag(z), sc = 1.0 / (fabs(x) + fabs(y));
-	double xs = x * sc, ys = y * sc, r = sc / (xs * xs + ys * ys);
+	double x = creal(z), y = cimag(z), n = x * x + y * y;
+	if (n > 1e-290 && n < 1e290) { /* no overflow or underflow: one division */
+		double r = 1.0 / n;
+		return anvil_kernel_cmplx(x * r, -y * r);
+	}
+	double sc = 1.0 / (fabs(x) + fabs(y)), xs = x * sc, ys = y * sc, r = sc / (xs * xs + ys * ys);
 	return anvil_kernel_cmplx(xs * r, -ys * r);
 }
 

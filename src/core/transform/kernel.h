@@ -25,8 +25,8 @@ double complex anvil_kernel_expm1(double complex z);
  * (csqrt was a fifth of a kernel evaluation). */
 double complex anvil_kernel_csqrt(double complex z);
 
-/* 1/z for finite z != 0, scaled by 1/(|x| + |y|) so that nothing overflows or
- * underflows: one real division, where C's complex division (__divdc3, with
+/* 1/z for finite z != 0: conj(z)/|z|^2, scaled by 1/(|x| + |y|) where |z|^2
+ * would overflow or underflow: one or two real divisions, where C's complex division (__divdc3, with
  * its inf/nan recovery the kernels never need) cost a sixth of an
  * evaluation.  Relative error a few ulp, as the division's. */
 double complex anvil_kernel_recip(double complex z);
