@@ -245,9 +245,10 @@ static double bending(const struct anvil_params *p)
  * The count of kernel evaluations mirrors green.c's k_integral: the
  * starting panels (of width min(1, 2/hh) over the band that holds the
  * Lamb-mode poles, 4 beyond), 21 nodes each (real and imaginary parts
- * share them), times the adaptive splitting's extra work, which measured
- * 2-2.9x for hh <= 2, 1.5x at 5, 1.05x at 10 and 1x beyond (to 25 %). */
-#define COST_EVAL 6.0e-7
+ * share them), times the adaptive splitting's extra work (refine()).
+ * One evaluation costs 0.28-0.33 us since the kernel was made leaner
+ * (transform/layer_bc.c); the twin comes from the main spectrum for free. */
+#define COST_EVAL 3.5e-7
 #define COST_HERTZ 2.0e-6
 #define COST_ZENER 2.0e-4
 #define COST_HALFSPACE 1.0e-4
@@ -256,9 +257,22 @@ static double bending(const struct anvil_params *p)
 #define IMPACT_LIN_LAYER 1.0e-5
 #define IMPACT_SQ_LAYER 3.0e-9
 
-static double refine(double hh)
+static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
+			 enum anvil_accuracy acc);
+
+/* The adaptive splitting's work over the starting panels: it bisects
+ * towards each Lamb-mode pole until the pieces are as narrow as the poles'
+ * distance from the real axis, about c0/c_group with c0 = c0T/(2 tau_end),
+ * so about log2 of (starting width w0 = min(1, 2/hh)) / c0 splittings per
+ * pole, and a thin layer has fewer poles per starting panel (the factor
+ * min(1, hh/2)^(1/4)).  Fitted on 383 responses (tests/test_work.c's
+ * generator, another seed, h/r0 0.18-25, draft and normal): the
+ * prediction was within 0.73-1.36 of the count; the form before (a
+ * function of hh alone) was off by 0.33-2.2. */
+static double refine(double hh, double tau_end)
 {
-	return hh <= 3.0 ? 2.5 : 1.0 + 1.5 * exp(-(hh - 3.0) / 2.0);
+	double w0 = fmin(1.0, 2.0 / hh), l = fmax(0.0, log2(tau_end * w0 / 16.0));
+	return 1.0 + 0.5 * pow(l, 1.25) * pow(fmin(1.0, 0.5 * hh), 0.25);
 }
 
 /* Terms summed exactly up to this many; beyond, every stride-th term
@@ -266,6 +280,15 @@ static double refine(double hh)
  * the planner's work is bounded whatever the scene (a 10 um radius asks
  * for millions of terms, which the solver then refuses). */
 #define CORR_SAMPLES 4096.0
+
+double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
+			     enum anvil_accuracy acc)
+{
+	double xr;
+	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
+		return NAN;
+	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc);
+}
 
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
 			 enum anvil_accuracy acc)
@@ -283,7 +306,7 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 		double kend = fmax(kband, sqrt(pow(L / hh, 2) + om * om));
 		panels += stride * (ceil(kband / w0) + ceil((kend - kband) / 4.0));
 	}
-	return 21.0 * refine(hh) * panels;
+	return 21.0 * refine(hh, tau_end) * panels;
 }
 
 /* One coupled run over a window of window_s seconds at step dt. */

@@ -249,6 +249,12 @@ void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t n
 int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b);
 
 /* The pieces, for the solver and for tests. */
+/* The layer-kernel evaluations the planner predicts for one layer
+ * correction (green.h, with its twin) of thickness hh, Poisson ratio nu,
+ * bandwidth omega and window tau_end at level acc: the count the cost
+ * model prices (tests/test_work.c holds it to the real count within 2x). */
+double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
+			     enum anvil_accuracy acc);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);
