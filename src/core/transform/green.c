@@ -174,7 +174,10 @@ static int adapt(struct quad *q, struct heap *h, double kband, double kend, doub
  * to about omega/c_A0, where the slowest mode (A0) has phase speed below
  * both c_R and the thin-plate flexural speed: that band starts in small
  * pieces; beyond it the fields are evanescent and the integrand smooth
- * (exp(-2kH) times the period-2pi oscillation of zhat). */
+ * (exp(-2kH) times the period-2pi oscillation of zhat).  The layer
+ * correction is O(E1^2) = O(exp(-2 Re(alpha1) hh)) there (layer_bc.c: its
+ * numerator is a sum of products of u1 and d, each O(E1)), so it is cut
+ * where E1^2, the integrand's own decay, falls below ktail. */
 static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 		      double cr, double ktail, double eps, cplx *val, double *abserr)
 {
@@ -183,7 +186,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	double kband = anvil_kband(omega, wabs, q->nu, hs ? INFINITY : hh, cr);
 	double L = -log(ktail);
 	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
-			 : fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
+			 : fmax(kband, sqrt(pow(0.5 * L / hh, 2) + omega * omega));
 	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
 	 * the band, wider in the smooth tail; the adaptive splitting finds the
 	 * poles from there (the results do not move when these are halved). */
