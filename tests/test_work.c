@@ -7,7 +7,7 @@
  * kernel evaluations (anvil_plan_corr_evals, what the cost model prices)
  * are compared with the count green.c reports: deterministic counts, not
  * seconds (scripts/bench compares seconds).  Each must be within a factor
- * of 2.  Of the 400 scenes drawn (h/r0 0.1-30, V0 0.1-100 m/s, m 1 g-1 kg),
+ * of 2.  Of the 300 scenes drawn (h/r0 0.1-30, V0 0.1-100 m/s, m 1 g-1 kg),
  * those whose response the planner itself predicts to cost more than
  * EVALS_MAX evaluations are left out to keep make check short (about 10 s;
  * ANVIL_TEST_N and ANVIL_TEST_EMAX widen the run, ANVIL_TEST_DUMP prints
@@ -23,8 +23,8 @@
 #include "scene_run.h"
 #include "tap.h"
 
-#define NSCENES (getenv("ANVIL_TEST_N") ? atoi(getenv("ANVIL_TEST_N")) : 400)
-#define EVALS_MAX (getenv("ANVIL_TEST_EMAX") ? atof(getenv("ANVIL_TEST_EMAX")) : 1.0e5)
+#define NSCENES (getenv("ANVIL_TEST_N") ? atoi(getenv("ANVIL_TEST_N")) : 300)
+#define EVALS_MAX (getenv("ANVIL_TEST_EMAX") ? atof(getenv("ANVIL_TEST_EMAX")) : 4.0e4)
 
 /* A deterministic generator (a 64-bit LCG, Knuth's MMIX constants): the
  * sample is the same on every machine. */
@@ -120,7 +120,7 @@ int main(void)
 	     tried, hmin, hmax, skipped);
 	diag("predicted/actual kernel evaluations from %.2f to %.2f; worst: %s", worst_lo, worst_hi,
 	     worst);
-	ok(tried >= 120, "at least 120 layer responses in the sample (%d)", tried);
+	ok(tried >= 80, "at least 80 layer responses in the sample (%d)", tried);
 	ok(within == tried, "the planner's kernel evaluations within 2x of green.c's on %d of %d",
 	   within, tried);
 	return done_testing();

@@ -13,6 +13,7 @@
 #include "kernel.h"
 #include "material.h"
 #include "plan.h"
+#include "plate.h"
 #include "radiation.h"
 #include "zener.h"
 
@@ -80,7 +81,7 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
 		      struct anvil_err *err)
 {
 	double steps = tau_end * p->r0 / p->c2 / j->dt;
-	double terms = omega * 2.0 * tau_end / M_PI;
+	double terms = omega * 2.0 * anvil_plan_inversion_window(j->hh, tau_end) / M_PI;
 	if (scene_dt > 0.25 * j->ts)
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
@@ -290,10 +291,20 @@ double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
 	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc);
 }
 
+double anvil_plan_inversion_window(double hh, double tau_end)
+{
+	double tq = anvil_cache_grid(anvil_cache_grid_up(tau_end)); /* as the solver asks */
+	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tq) : 0.0;
+	return t1 > 0 ? t1 : tau_end;
+}
+
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
 			 enum anvil_accuracy acc)
 {
 	struct anvil_green_settings gs;
+	double t1 = anvil_plate_t1(hh, tau_end);
+	if (t1 > 0) /* the inversion covers [0, T1], the plate the rest (plate.h) */
+		tau_end = t1;
 	anvil_green_settings(acc, &gs);
 	double Tp = 2.0 * tau_end, c0 = gs.c0T / Tp, L = -log(gs.ktail), panels = 0;
 	double M = ceil(omega * Tp / M_PI), w0 = fmin(1.0, 2.0 / hh);
@@ -452,7 +463,7 @@ static int estimate(const struct anvil_problem *pb, struct est *e, struct anvil_
 	double tau_end = anvil_wave_window(&e->lay, 0);
 	e->window_lay = tau_end * p->r0 / p->c2;
 	e->steps = ceil(e->window_lay / e->lay.dt);
-	e->terms = ceil(e->lay.omega * 2.0 * tau_end / M_PI);
+	e->terms = ceil(e->lay.omega * 2.0 * anvil_plan_inversion_window(e->lay.hh, tau_end) / M_PI);
 	return ANVIL_OK;
 }
 

@@ -16,6 +16,7 @@
 #include "kernel.h"
 #include "layer_bc.h"
 #include "material.h"
+#include "plate.h"
 
 typedef double complex cplx;
 
@@ -340,30 +341,38 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 			const double *err, const struct plate *pl)
 {
 	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
-	double Tp = dl->Tp, qsum = 0;
+	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
 	g->dtau = 2.0 * Tp / (double)N;
 	g->n = (size_t)floor(g->tau_end / g->dtau) + 2; /* about N/4: bounded with M */
+	/* the inversion's samples; beyond its window, the plate (plate.h) */
+	size_t n1 = t_inv < g->tau_end ? (size_t)floor(t_inv / g->dtau) + 2 : g->n;
+	if (g->n > GREEN_SAMPLES_MAX)
+		return ANVIL_EINVAL;
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
 	if (!g->tau)
 		return ANVIL_ENOMEM;
 	g->ramp = g->tau + g->n;
-	int st = anvil_durbin_fft(dl, spec, N, g->ramp, g->n);
+	int st = anvil_durbin_fft(dl, spec, N, g->ramp, n1);
 	if (st)
 		return st;
 	for (size_t n = 0; n <= M; n++)
 		qsum += err[n];
-	double amp = exp(dl->c0 * g->tau_end) / Tp; /* series -> time at tau_end */
+	double amp = exp(dl->c0 * fmin(t_inv, g->tau_end)) / Tp; /* series -> time at its end */
 	double tail = cabs(spec[M]) * (double)M * 0.5;
-	g->abserr = amp * qsum + amp * tail;
-	for (size_t j = 0; j < g->n; j++) {
-		g->tau[j] = (double)j * g->dtau;
+	for (size_t j = 0; j < n1; j++) {
+		double t = (double)j * g->dtau;
 		/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
 		if (g->mode == ANVIL_GREEN_HALFSPACE)
-			g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * g->tau[j];
+			g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * t;
 		else
-			g->ramp[j] += plate_t(pl, g->tau[j]);
+			g->ramp[j] += plate_t(pl, t);
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
+	if (n1 < g->n && (st = anvil_plate_extend(g->hh, g->nu, g->dtau, n1, g->n, g->ramp, &ext_err)))
+		return st;
+	g->abserr = amp * qsum + amp * tail + ext_err;
+	for (size_t j = 0; j < g->n; j++)
+		g->tau[j] = (double)j * g->dtau;
 	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
 	if (!g->interp)
 		return ANVIL_ENOMEM;
@@ -380,8 +389,10 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 			 const struct anvil_green_settings *gs, anvil_progress_fn progress,
 			 void *ctx)
 {
-	/* the line: output kept to [0, T'/2] of the period 2T' */
-	double Tp = 2.0 * g->tau_end, xr;
+	/* the line: output kept to [0, T'/2] of the period 2T'; for a long
+	 * window of a layer correction, only over [0, T1], the plate beyond */
+	double t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(g->hh, g->tau_end) : 0;
+	double t_inv = t1 > 0 ? t1 : g->tau_end, Tp = 2.0 * t_inv, xr;
 	struct anvil_durbin dl, dt;
 	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0) ||
 	    (tw && anvil_durbin_init(&dt, Tp, gs->c0T / Tp, 0.5 * gs->omega_max, 0)))
@@ -389,8 +400,8 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	if (anvil_rayleigh_x(g->kap2, &xr, NULL))
 		return ANVIL_ENUM;
 	size_t M = dl.M;
-	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * g->tau_end; /* half-space ramp */
-	double amp = exp(dl.c0 * g->tau_end) / Tp;
+	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
+	double amp = exp(dl.c0 * t_inv) / Tp;
 	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh };
 	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
@@ -522,9 +533,12 @@ static int sizes_ok(const struct anvil_green_samples *s)
 	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
 	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) || !s->ramp)
 		return 0;
-	double ratio = s->tau_end / s->dtau, N = exp2(round(log2(4.0 * ratio)));
-	if (!(ratio >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
-	    !(fabs(4.0 * ratio - N) <= 1e-9 * N))
+	/* a long window's inversion covered [0, T1] only (plate.h) */
+	double t1 = s->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(s->hh, s->tau_end) : 0;
+	double ratio = s->tau_end / s->dtau, r1 = (t1 > 0 ? t1 : s->tau_end) / s->dtau;
+	double N = exp2(round(log2(4.0 * r1)));
+	if (!(r1 >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
+	    !(fabs(4.0 * r1 - N) <= 1e-9 * N))
 		return 0;
 	return s->n == (size_t)floor(ratio) + 2;
 }
