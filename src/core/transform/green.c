@@ -391,7 +391,8 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 {
 	/* the line: output kept to [0, T'/2] of the period 2T'; for a long
 	 * window of a layer correction, only over [0, T1], the plate beyond */
-	double t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(g->hh, g->tau_end) : 0;
+	double t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION && !gs->no_plate
+			    ? anvil_plate_t1(g->hh, g->tau_end) : 0;
 	double t_inv = t1 > 0 ? t1 : g->tau_end, Tp = 2.0 * t_inv, xr;
 	struct anvil_durbin dl, dt;
 	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0) ||

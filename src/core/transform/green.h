@@ -44,6 +44,8 @@ struct anvil_green_settings {
 	double omega_max; /* highest frequency summed (dimensionless) */
 	double tol;     /* ramp error target, relative to its half-space size */
 	double ktail;   /* integrand cut-off: exp(-2 Re(alpha1) H) below this */
+	int no_plate;   /* 1: invert over the whole window, never the plate beyond
+			   (plate.h; for tests: the second method) */
 };
 
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);
