@@ -249,6 +249,17 @@ void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t n
 int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b);
 
 /* The pieces, for the solver and for tests. */
+/* The window the layer correction's inversion covers for a response over
+ * [0, tau_end] (a wave run's window, rounded up to the cache grid as the
+ * solver does): tau_end itself, or for a long window the plate's T1
+ * (transform/plate.h), the plate's closed form beyond. */
+double anvil_plan_inversion_window(double hh, double tau_end);
+/* The layer-kernel evaluations the planner predicts for one layer
+ * correction (green.h, with its twin) of thickness hh, Poisson ratio nu,
+ * bandwidth omega and window tau_end at level acc: the count the cost
+ * model prices (tests/test_work.c holds it to the real count within 2x). */
+double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
+			     enum anvil_accuracy acc);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);
