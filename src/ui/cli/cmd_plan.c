@@ -205,21 +205,6 @@ static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 
 /* ---- json ---- */
 
-static void json_text(FILE *f, const char *s)
-{
-	fputc('"', f);
-	for (; *s; s++) {
-		unsigned char c = (unsigned char)*s;
-		if (c == '"' || c == '\\')
-			fprintf(f, "\\%c", c);
-		else if (c < 0x20)
-			fprintf(f, "\\u%04x", c);
-		else
-			fputc(c, f);
-	}
-	fputc('"', f);
-}
-
 static void json_num(FILE *f, double x)
 {
 	char v[40];
@@ -235,16 +220,16 @@ static const char *const si_unit[] = {
 static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 {
 	fputs("{\n  \"title\": ", f);
-	json_text(f, title);
+	out_json_string(f, title);
 	fputs(",\n  \"figures\": [", f);
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
 		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
 		fputs(i ? ",\n    {\"name\": " : "\n    {\"name\": ", f);
-		json_text(f, fi->name);
+		out_json_string(f, fi->name);
 		fputs(", \"value\": ", f);
 		json_num(f, pl->fig[i]);
 		fprintf(f, ", \"unit\": \"%s\", \"what\": ", si_unit[fi->unit]);
-		json_text(f, fi->what);
+		out_json_string(f, fi->what);
 		fputc('}', f);
 	}
 	fputs("\n  ],\n  \"rows\": [", f);
@@ -260,14 +245,14 @@ static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 		fputs(", \"cost_full_s\": ", f);
 		json_num(f, r->cost_full);
 		fprintf(f, ", \"cached\": \"%s\", \"why\": ", cached_text(r->cached));
-		json_text(f, anvil_plan_why_text(r->run ? r->why : r->off));
+		out_json_string(f, anvil_plan_why_text(r->run ? r->why : r->off));
 		fputc('}', f);
 	}
 	fputs("\n  ],\n  \"warnings\": [", f);
 	for (int i = 0; i < pl->nwarn; i++) {
 		fprintf(f, "%s\n    {\"kind\": \"%s\", \"text\": ", i ? "," : "",
 			warn_names[pl->warn[i].kind]);
-		json_text(f, anvil_plan_warn_text(pl->warn[i].kind));
+		out_json_string(f, anvil_plan_warn_text(pl->warn[i].kind));
 		fputc('}', f);
 	}
 	fprintf(f, "%s],\n  \"cost_s\": ", pl->nwarn ? "\n  " : "");
