@@ -55,6 +55,14 @@ int anvil_scene_key_index(int sec, const char *key);
 int anvil_scene_range_check(double v, double lo, double hi, const char *unit,
 			    const char *text, struct anvil_err *err);
 
+/* scene_text.c.  text written so that the parser reads it back: bare when
+ * it would survive, else in double quotes with '"' and '\\' escaped; buf of
+ * at least 2 strlen(text) + 3 bytes holds it all. */
+void anvil_scene_text_put(char *buf, size_t n, const char *text);
+/* value[0..n), which starts with '"', without its quotes and escapes into v
+ * (at least n bytes); ANVIL_EPARSE when the closing quote is missing or
+ * not last. */
+int anvil_scene_text_unquote(const char *value, size_t n, char *v, struct anvil_err *err);
 /* Whether s[0..n) is valid UTF-8 (no overlong forms, surrogates or code
  * points above U+10FFFF). */
 int anvil_utf8_valid(const char *s, size_t n);
