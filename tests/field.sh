@@ -92,7 +92,7 @@ assert 'half-space map: depth 8 mm, radius 8 mm' \
 printf '[layer]\nyield = 150 MPa\n' >"$tmp/soft.scene"
 check 'a soft layer' "$ANVIL" map $D -q --grid 4x4 "$tmp/soft.scene"
 assert 'yield exceeded: in the output' grep -q 'EXCEEDED' "$tmp/out"
-assert 'yield exceeded: a warning on stderr' grep -q '^anvil: warning: the von Mises stress reaches .* above the layer' "$tmp/err"
+assert 'yield exceeded: the verdict on stderr' grep -q '^anvil: the steel layer yields: peak von Mises .* Y = 150 MPa' "$tmp/err"
 
 check_exit 2 'map: bad --time' "$ANVIL" map $D --time soon
 check_exit 2 'map: --time past 4 contacts' "$ANVIL" map $D --time 1ms

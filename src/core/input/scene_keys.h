@@ -37,6 +37,11 @@ int anvil_scene_section_find(const char *name, struct anvil_err *err);
 int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 			const char *key, const char *value, int deferred, int line,
 			struct anvil_err *err);
+/* The geometry keys a key of section sec replaces when it is set
+ * (scene.h): velocity <-> drop_height, radius <-> diameter, mass <->
+ * length, shape = ball drops length.  impactor.c. */
+void anvil_scene_geometry_replace(struct anvil_scene *sc, int sec, const char *key);
+
 /* The key number of SECTION's key (an index of sc->key_line), -1 if none. */
 int anvil_scene_key_index(int sec, const char *key);
 

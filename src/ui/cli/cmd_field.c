@@ -14,6 +14,7 @@
 #include "params.h"
 #include "units.h"
 #include "commands.h"
+#include "verdict.h"
 #include "common.h"
 #include "output.h"
 #include "plot.h"
@@ -150,17 +151,23 @@ static int yield_check(struct fctx *c, const struct fargs *a, struct anvil_field
 	struct anvil_err err = {0};
 	if (a->no_yield)
 		return -1;
-	int st = anvil_field_peak(c->f, c->sc.layer.mat.yield, pk, &err);
+	/* The one verdict (verdict.h): it turns the field's true contact on,
+	 * so the peak below and the columns are the true contact's too. */
+	struct anvil_problem pb;
+	struct anvil_verdict v;
+	char line[320];
+	int st = anvil_problem_init(&pb, &c->sc, &err);
+	if (!st)
+		st = anvil_verdict_make(&pb, c->f, &v, &err);
+	if (!st)
+		st = anvil_field_peak(c->f, c->sc.layer.mat.yield, pk, &err);
 	cli_progress_done(&c->prog);
 	if (st) {
 		cli_error("%s: yield check: %s", a->cmd, err.msg);
 		return cli_exit_code(st);
 	}
-	if (pk->exceeded)
-		cli_error("warning: the von Mises stress reaches %.4g MPa at r = %.3g mm, z = %.3g mm, "
-			  "t = %.4g us, above the layer's yield stress %.4g MPa: the layer yields, and the "
-			  "elastic model does not hold there", pk->vm * 1e-6, pk->r * 1e3, pk->z * 1e3,
-			  pk->t * 1e6, pk->yield * 1e-6);
+	anvil_verdict_text(&v, line, sizeof line);
+	cli_error("%s", line);
 	return -1;
 }
 

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "plan.h"
+#include "verdict.h"
 #include "commands.h"
 #include "common.h"
 #include "output.h"
@@ -337,6 +338,13 @@ static int plan_scene(const struct plan_opts *o)
 	} else {
 		fprintf(out.f, "%s\n", sc.title[0] ? sc.title : "scene");
 		anvil_plan_print(out.f, &pl);
+		/* the one verdict (verdict.h), at the cost a plan may have: no run */
+		struct anvil_verdict v;
+		char line[320];
+		if (!anvil_verdict_make(&pl.pb, NULL, &v, NULL)) {
+			anvil_verdict_text(&v, line, sizeof line);
+			fprintf(out.f, "\nverdict\n  %s\n", line);
+		}
 	}
 	return cli_out_commit(&out) ? EXIT_FAIL : EXIT_OK;
 }
