@@ -425,7 +425,8 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 	return ANVIL_ETOL;
 }
 
-static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct pass *s)
+static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t direct_max,
+		    struct pass *s)
 {
 	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
 	size_t cap = (size_t)floor(t_avail / dt) - 1;
@@ -438,7 +439,7 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct p
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
 	c->fc = NULL;
-	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, 0)))
+	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, direct_max)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s) : pass_implicit(c, s);
@@ -544,9 +545,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	int st;
 	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail };
 	struct pass a = {0}, b = {0};
-	st = run_pass(&c, o->scheme, dt, &a);
+	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	if (!st)
-		st = run_pass(&c, o->scheme, 0.5 * dt, &b);
+		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, &b);
 	if (!st && o->single) { /* the dt pass alone; its error vs dt/2 */
 		fill(r, p, &a, &b, ANVIL_SCHEME_PAPER);
 		if (o->nhist > 1)
