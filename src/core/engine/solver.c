@@ -338,6 +338,22 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 			 t_refl, r->ts.val * 1e6);
 }
 
+/* Repeated contacts (impact.h) in the note: how many, and the first few's
+ * times. */
+static void contacts_note(struct anvil_result *r)
+{
+	size_t len = strlen(r->note), nc = r->ncontacts;
+	if (nc < 2)
+		return;
+	len += (size_t)snprintf(r->note + len, len < sizeof r->note ? sizeof r->note - len : 0,
+			       "%s%zu contacts (us):", len ? "; " : "", nc);
+	for (size_t i = 0; i < nc && i < 4 && len < sizeof r->note; i++)
+		len += (size_t)snprintf(r->note + len, sizeof r->note - len, " %.4g-%.4g",
+				       r->contact_on[i] * 1e6, r->contact_off[i] * 1e6);
+	if (nc > 4 && len < sizeof r->note)
+		snprintf(r->note + len, sizeof r->note - len, " ... -%.4g", r->ts.val * 1e6);
+}
+
 /* A wave row (STATIC, HALFSPACE or LAYER) as the plan says, with its
  * fallback when the computed contact outlasts the reflection. */
 static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
@@ -368,6 +384,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		r->Rf_star = 1.0;
 	}
 	waves_note(r, p, &row, row.method, corr);
+	contacts_note(r);
 	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, pl->pb.accuracy, err);
 }
 

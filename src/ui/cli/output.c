@@ -395,6 +395,13 @@ static double error(const struct anvil_result *r, const struct column *c)
 	return fabs(e) < OUT_ERR_NOISE * fabs(x) ? 0.0 : e;
 }
 
+/* The number of contacts (impact.h: repeated contacts), NaN when the
+ * model does not count them. */
+static double contacts(const struct anvil_result *r)
+{
+	return r->ncontacts ? (double)r->ncontacts : NAN;
+}
+
 static void machine_header(struct out_grid *g)
 {
 	out_grid_cell(g, "model");
@@ -405,6 +412,7 @@ static void machine_header(struct out_grid *g)
 	for (int i = 0; i < NCOLUMNS; i++)
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", columns[i].err_name);
+	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time_s");
 }
 
@@ -420,6 +428,7 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 	for (int i = 0; i < NCOLUMNS; i++)
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), NULL));
+	out_grid_cell(g, "%s", out_num(b, contacts(r), NULL));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
 }
 
@@ -432,6 +441,7 @@ static void table_header(struct out_grid *g)
 		if (columns[i].err_name)
 			out_grid_cell(g, "±");
 	}
+	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time/s");
 }
 
@@ -446,6 +456,7 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", out_err(b, error(r, &columns[i]), "%.2g"));
 	}
+	out_grid_cell(g, "%s", out_num(b, contacts(r), "%.0f"));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
 }
 
@@ -467,8 +478,8 @@ static void table_caption(FILE *f, const struct anvil_scene *sc)
 static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 			const struct anvil_result *res, int n)
 {
-	/* model, h_r0, V0 (not in the table), values, errors, seconds */
-	int ncol = 3 + NCOLUMNS + nerr() + 1 - (fmt == OUT_TABLE);
+	/* model, h_r0, V0 (not in the table), values, errors, contacts, seconds */
+	int ncol = 3 + NCOLUMNS + nerr() + 2 - (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)
 		return ANVIL_ENOMEM;
