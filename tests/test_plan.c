@@ -28,6 +28,7 @@
 #include "cache.h"
 #include "green.h"
 #include "halfspace.h"
+#include "hertz_field.h"
 #include "plan.h"
 #include "radiation.h"
 #include "solver.h"
@@ -376,10 +377,25 @@ static void test_warnings(void)
 	struct anvil_plan pl;
 	struct anvil_scene sc = scene(NULL);
 	scene_plan(&sc, &pl, NULL);
-	ok(has_warning(&pl, ANVIL_WARN_YIELD) && strcmp(pl.softer, "copper") == 0 &&
-		   pl.fig[ANVIL_FIG_P_MEAN] > 100 * pl.fig[ANVIL_FIG_YIELD],
-	   "the paper's copper rod yields: p_m = %.0f MPa against 1.1 Y = %.1f MPa",
-	   pl.fig[ANVIL_FIG_P_MEAN] / 1e6, pl.fig[ANVIL_FIG_YIELD] / 1e6);
+	/* the one verdict (verdict.h): the layer, and the impactor under the
+	 * same contact judged on its own nu and Y (the old 1.1 Y of the softer
+	 * body is gone: it judged the copper and said it was the layer's) */
+	const struct anvil_verdict *vd = &pl.verdict;
+	double vm_cu = NAN, z_cu = NAN;
+	ok(vd->fate == ANVIL_HERTZ_YIELDS && strcmp(vd->material, "steel") == 0 && vd->known &&
+		   vd->stress > vd->limit,
+	   "the paper's steel layer yields: von Mises %.0f MPa against Y = %.0f MPa",
+	   vd->stress / 1e6, vd->limit / 1e6);
+	ok(vd->imp.fate == ANVIL_HERTZ_YIELDS && strcmp(vd->imp.material, "copper") == 0 &&
+		   vd->imp.stress > 100 * vd->imp.limit,
+	   "  and, on its own line, the copper impactor: %.0f MPa against Y = %.1f MPa",
+	   vd->imp.stress / 1e6, vd->imp.limit / 1e6);
+	int st_cu = anvil_hertz_vm_peak(vd->a, vd->p0, pl.pb.impactor.nu, &vm_cu, &z_cu);
+	ok(!st_cu && fabs(vd->imp.stress - vm_cu) <= 1e-12 * vm_cu && pl.pb.impactor.nu != pl.pb.layer.nu &&
+		   fabs(vd->imp.stress - vd->stress) > 1e-3 * vd->stress,
+	   "  the impactor's peak is Hertz's with copper's nu = %.2f (%.4g p0), not the layer's",
+	   pl.pb.impactor.nu, vm_cu / vd->p0);
+	ok(anvil_verdict_fails(vd), "  the plan's verdict fails");
 	is_rel(pl.fig[ANVIL_FIG_P_MEAN], 2.0 / 3.0 * 3.0 * pl.fig[ANVIL_FIG_P_MAX] /
 	       (2 * M_PI * pow(pl.fig[ANVIL_FIG_A_HERTZ], 2)), 1e-12, "  p_m = 2/3 p0, p0 = 3P/(2 pi a^2)");
 	ok(!has_warning(&pl, ANVIL_WARN_SUPERSEISMIC) && !has_warning(&pl, ANVIL_WARN_PLATE_RANGE) &&
@@ -387,11 +403,21 @@ static void test_warnings(void)
 	   "  and nothing else at h = r0, 10 m/s");
 	sc = scene((const char *[]){ "impactor.yield", "100 GPa", "layer.yield", "100 GPa", NULL });
 	scene_plan(&sc, &pl, NULL);
-	ok(!has_warning(&pl, ANVIL_WARN_YIELD) && !has_warning(&pl, ANVIL_WARN_YIELD_UNKNOWN),
-	   "no yield warning for strong bodies");
+	ok(pl.verdict.fate == ANVIL_HERTZ_ELASTIC && pl.verdict.known &&
+		   pl.verdict.imp.fate == ANVIL_HERTZ_ELASTIC && pl.verdict.imp.known &&
+		   !anvil_verdict_fails(&pl.verdict),
+	   "strong bodies: both elastic, both judged");
+	sc = scene((const char *[]){ "impactor.yield", "0 GPa", "layer.yield", "0 GPa", NULL });
+	scene_plan(&sc, &pl, NULL);
+	ok(!pl.verdict.known && !pl.verdict.imp.known && !anvil_verdict_fails(&pl.verdict),
+	   "no yield stress known: neither body judged");
 	sc = scene((const char *[]){ "impactor.material", "glass", "layer.material", "glass", NULL });
 	scene_plan(&sc, &pl, NULL);
-	ok(has_warning(&pl, ANVIL_WARN_YIELD_UNKNOWN), "no yield stress known: said so");
+	ok(pl.verdict.brittle && pl.verdict.imp.brittle && pl.verdict.imp.known &&
+		   fabs(pl.verdict.imp.stress - anvil_hertz_tension(pl.verdict.p0, pl.pb.impactor.nu)) <=
+			   1e-12 * pl.verdict.imp.stress,
+	   "glass on glass: both judged by the edge tension (1-2nu) p0/3 (%s)",
+	   pl.verdict.imp.fate == ANVIL_HERTZ_CRACKS ? "cracks" : "elastic");
 	sc = scene((const char *[]){ "impact.velocity", "3000 m/s", NULL });
 	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_SUPERSEISMIC) && pl.fig[ANVIL_FIG_ALPHA_A] > 0.1,

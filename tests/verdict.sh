@@ -19,6 +19,14 @@ check 'field of the same' "$ANVIL" field -q $ball --at 0,0.4mm -o "$tmp/f.tsv"
 assert '  the same verdict' grep -q '^anvil: the steel layer yields: peak von Mises 3.3. GPa at 0.5 a' "$tmp/err"
 assert '  and the peak in the file is the true contact'"'"'s' grep -q '^# yield check: peak von Mises 33.. MPa' "$tmp/f.tsv"
 
+check 'run of the default scene' "$ANVIL" run -m hertz
+assert '  one line on the layer' sh -c "grep -c '^anvil: the steel layer yields' '$tmp/err' | grep -qx 1"
+assert '  one on the copper impactor' grep -q '^anvil: the copper impactor yields under the same contact: peak von Mises .* Y = 57 MPa' "$tmp/err"
+assert '  and no other yield text' sh -c "! grep -v '^anvil: the \(steel layer\|copper impactor\)' '$tmp/err' | grep -qi 'yield'"
+check 'run with strong bodies' "$ANVIL" run -m hertz -s impactor.yield=100GPa -s layer.yield=100GPa
+assert '  the layer stays elastic, the impactor not mentioned' \
+	sh -c "grep -q '^anvil: the steel layer stays elastic' '$tmp/err' && ! grep -q impactor '$tmp/err'"
+
 check 'run of a steel ball on glass' "$ANVIL" run -m layer "$top_srcdir/examples/ball-on-glass.scene"
 assert '  names the tensile criterion' grep -q '^anvil: the glass layer cracks: edge tension (1-2nu) p0/3 .* tensile strength 45 MPa' "$tmp/err"
 check 'run -q says nothing' "$ANVIL" run -q -m layer "$top_srcdir/examples/ball-on-glass.scene"

@@ -384,7 +384,6 @@ static const struct anvil_fig_info fig_info[ANVIL_FIG_COUNT] = {
 	[ANVIL_FIG_A_HERTZ] = { "a", "Hertz contact radius sqrt(r0 alpha_max)",
 				ANVIL_UNIT_LENGTH },
 	[ANVIL_FIG_P_MEAN] = { "p_m", "mean contact pressure", ANVIL_UNIT_PRESSURE },
-	[ANVIL_FIG_YIELD] = { "1.1 Y", "yield onset of the softer body", ANVIL_UNIT_PRESSURE },
 	[ANVIL_FIG_STEPS] = { "steps", "time steps of a wave run", ANVIL_UNIT_NONE },
 	[ANVIL_FIG_TERMS] = { "terms", "Fourier terms of the layer response", ANVIL_UNIT_NONE },
 };
@@ -425,9 +424,6 @@ const char *anvil_plan_why_text(enum anvil_plan_why w)
 }
 
 static const char *const warn_text[ANVIL_WARN_COUNT] = {
-	[ANVIL_WARN_YIELD] = "the Hertz mean pressure exceeds the yield onset 1.1 Y of the "
-			     "softer body: it yields, which anvil does not model",
-	[ANVIL_WARN_YIELD_UNKNOWN] = "no yield stress known for either body: yielding not checked",
 	[ANVIL_WARN_SUPERSEISMIC] = "alpha_A is not small: the super-seismic phase right after "
 				    "first contact matters, which anvil does not model",
 	[ANVIL_WARN_PLATE_RANGE] = "thin-plate theory (zener) is out of its range: h/r0 > 1",
@@ -668,32 +664,10 @@ static void warn_add(struct anvil_plan *pl, enum anvil_plan_warn k, enum anvil_f
 			w->fig[w->nfig++] = f[i];
 }
 
-/* Johnson (1985, sec. 6.2): under a Hertz contact yield starts below the
- * surface when p_m = 1.1 Y (p0 = 1.6 Y, nu = 0.3), Y of the softer body. */
-static void warn_yield(const struct anvil_problem *pb, struct anvil_plan *pl)
-{
-	const struct anvil_material *a = &pb->impactor, *b = &pb->layer, *soft = NULL;
-	if (a->yield > 0)
-		soft = a;
-	if (b->yield > 0 && (!soft || b->yield < soft->yield))
-		soft = b;
-	if (!soft) {
-		pl->fig[ANVIL_FIG_YIELD] = 0.0;
-		warn_add(pl, ANVIL_WARN_YIELD_UNKNOWN, ANVIL_FIG_P_MEAN, ANVIL_FIG_COUNT,
-			 ANVIL_FIG_COUNT);
-		return;
-	}
-	snprintf(pl->softer, sizeof pl->softer, "%s", soft->name);
-	pl->fig[ANVIL_FIG_YIELD] = ANVIL_PLAN_YIELD_ONSET * soft->yield;
-	if (pl->fig[ANVIL_FIG_P_MEAN] > pl->fig[ANVIL_FIG_YIELD])
-		warn_add(pl, ANVIL_WARN_YIELD, ANVIL_FIG_P_MEAN, ANVIL_FIG_YIELD, ANVIL_FIG_A_HERTZ);
-}
-
 static void warnings(const struct anvil_problem *pb, const struct est *e, struct anvil_plan *pl)
 {
 	const struct anvil_plan_row *lay = &pl->row[ANVIL_MODEL_LAYER];
 	const enum anvil_fig none = ANVIL_FIG_COUNT;
-	warn_yield(pb, pl);
 	if (e->p.alpha_A > ANVIL_PLAN_ALPHA_A_MAX)
 		warn_add(pl, ANVIL_WARN_SUPERSEISMIC, ANVIL_FIG_ALPHA_A, none, none);
 	if (pl->row[ANVIL_MODEL_ZENER].run && !(e->p.h <= e->p.r0))
@@ -721,7 +695,8 @@ int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *ca
 	figures(&e, pl);
 	rows(&pl->pb, &e, cache, pl);
 	warnings(&pl->pb, &e, pl);
-	return ANVIL_OK;
+	/* the one verdict (verdict.h), quasi-static: a plan runs nothing */
+	return anvil_verdict_make(&pl->pb, NULL, &pl->verdict, err);
 }
 
 /* ---- the key of a result ---- */

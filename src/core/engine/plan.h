@@ -32,8 +32,9 @@
  * executes a row and never plans; `anvil plan`, `anvil run -v` and the TUI
  * print the same object.
  *
- * It warns when the scene needs what anvil does not model: yielding (the
- * Hertz mean pressure against 1.1 Y of the softer body), a super-seismic
+ * It carries the one yield verdict (verdict.h, quasi-static Hertz: the
+ * layer, and the impactor under the same contact), and warns when the
+ * scene needs what anvil does not model: a super-seismic
  * phase (alpha_A > 0.1), thin-plate theory out of its range (plate on,
  * h/r0 > 1), a scene the layer solver will refuse, a forced half-space
  * that is not exact.
@@ -52,6 +53,7 @@
 #include "params.h"
 #include "problem.h"
 #include "status.h"
+#include "verdict.h"
 
 /* The wave solver refuses a run needing more (it would grind for minutes):
  * very thin layers have contacts thousands of Hertz times long.  The
@@ -147,7 +149,6 @@ enum anvil_fig {
 	ANVIL_FIG_P_MAX,     /* Hertz peak force, N */
 	ANVIL_FIG_A_HERTZ,   /* Hertz contact radius sqrt(r0 alpha_max), m */
 	ANVIL_FIG_P_MEAN,    /* mean contact pressure P_max / (pi a^2), Pa */
-	ANVIL_FIG_YIELD,     /* 1.1 Y of the softer body, Pa; 0 when unknown */
 	ANVIL_FIG_STEPS,     /* time steps of a wave run (first window) */
 	ANVIL_FIG_TERMS,     /* Fourier terms of the layer correction */
 	ANVIL_FIG_COUNT
@@ -194,8 +195,6 @@ struct anvil_plan_row {
 };
 
 enum anvil_plan_warn {
-	ANVIL_WARN_YIELD,        /* the Hertz pressure exceeds the yield onset */
-	ANVIL_WARN_YIELD_UNKNOWN,/* no yield stress known: plasticity not checked */
 	ANVIL_WARN_SUPERSEISMIC, /* alpha_A > 0.1 */
 	ANVIL_WARN_PLATE_RANGE,  /* Zener with h/r0 > 1 (or a half-space) */
 	ANVIL_WARN_REFUSE,       /* the layer solver will refuse the scene */
@@ -206,7 +205,6 @@ enum anvil_plan_warn {
 const char *anvil_plan_warn_text(enum anvil_plan_warn w);
 
 #define ANVIL_PLAN_MAXWARN ANVIL_WARN_COUNT
-#define ANVIL_PLAN_YIELD_ONSET 1.1 /* p_m = 1.1 Y at first yield (Johnson 1985, sec. 6.2) */
 #define ANVIL_PLAN_ALPHA_A_MAX 0.1 /* alpha_A above this is not small (paper, sec. 4) */
 
 struct anvil_plan_warning {
@@ -221,7 +219,7 @@ struct anvil_plan {
 	struct anvil_plan_row row[ANVIL_MODEL_COUNT]; /* by enum anvil_model */
 	int nwarn;
 	struct anvil_plan_warning warn[ANVIL_PLAN_MAXWARN];
-	char softer[ANVIL_NAME_MAX]; /* the body that yields first ("" if unknown) */
+	struct anvil_verdict verdict; /* layer and impactor, quasi-static Hertz (verdict.h) */
 	enum anvil_waves waves;      /* the scene's setting */
 	enum anvil_fieldmode field;  /* the scene's setting */
 	double cost;                 /* estimated seconds for the rows run */

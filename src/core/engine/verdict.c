@@ -46,6 +46,31 @@ static int quasi_static(const struct anvil_problem *pb, struct anvil_verdict *v)
 	return ANVIL_OK;
 }
 
+/* The impactor under the layer's contact (a, p0): the Hertz field with
+ * its own nu, against its own criterion (verdict.h). */
+static int impactor(const struct anvil_problem *pb, struct anvil_verdict *v)
+{
+	const struct anvil_material *m = &pb->impactor;
+	struct anvil_verdict_impactor *im = &v->imp;
+	struct anvil_hertz_verdict hv;
+	memset(im, 0, sizeof *im);
+	snprintf(im->material, sizeof im->material, "%s", m->name);
+	im->brittle = m->brittle;
+	im->limit = m->brittle ? m->tensile : m->yield;
+	im->known = im->limit > 0;
+	im->fate = ANVIL_HERTZ_ELASTIC;
+	if (!(v->a > 0 && v->p0 > 0))
+		return ANVIL_OK; /* no contact, no stress */
+	int st = anvil_hertz_judge(v->a, v->p0, m->nu, NAN, NAN, &hv);
+	if (st)
+		return st;
+	im->stress = im->brittle ? hv.tension : hv.vm;
+	im->z = im->brittle ? 0 : hv.z_vm;
+	if (im->known && im->stress > im->limit)
+		im->fate = im->brittle ? ANVIL_HERTZ_CRACKS : ANVIL_HERTZ_YIELDS;
+	return ANVIL_OK;
+}
+
 /* The largest radial stress at the edge r = a(t) of the contact, z = 0,
  * at instants around the peak force. */
 static int edge_tension(struct anvil_field *f, const struct anvil_field_peak *pk,
@@ -79,7 +104,7 @@ int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
 	if (!f) {
 		int st = quasi_static(pb, v);
 		judge(v);
-		return st;
+		return st ? st : impactor(pb, v);
 	}
 	struct anvil_field_peak pk;
 	anvil_field_set_contact(f, 1);
@@ -100,7 +125,12 @@ int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
 	v->a = anvil_field_contact_radius(f, P);
 	v->p0 = v->a > 0 ? 1.5 * P / (M_PI * v->a * v->a) : 0;
 	judge(v);
-	return st;
+	return st ? st : impactor(pb, v);
+}
+
+int anvil_verdict_fails(const struct anvil_verdict *v)
+{
+	return v->fate != ANVIL_HERTZ_ELASTIC || v->imp.fate != ANVIL_HERTZ_ELASTIC;
 }
 
 /* A stress in MPa below 1 GPa, else GPa, 3 significant digits. */
@@ -133,4 +163,25 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
 		 v->dynamic ? "" : " (quasi-static Hertz)",
 		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "");
+}
+
+void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	const struct anvil_verdict_impactor *im = &v->imp;
+	char s[32], l[32], where[96];
+	const char *what = im->fate == ANVIL_HERTZ_YIELDS   ? "yields"
+			   : im->fate == ANVIL_HERTZ_CRACKS ? "cracks"
+			   : !im->known                     ? "is not judged"
+							    : "stays elastic";
+	stress_text(im->stress, s, sizeof s);
+	stress_text(im->limit, l, sizeof l);
+	if (im->brittle)
+		snprintf(where, sizeof where, "at the contact edge");
+	else
+		snprintf(where, sizeof where, "at %.2g a = %.3g mm inside its tip",
+			 v->a > 0 ? im->z / v->a : 0, im->z * 1e3);
+	snprintf(buf, n, "the %s impactor %s under the same contact: %s %s %s, %s%s%s", im->material,
+		 what, im->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
+		 im->brittle ? "tensile strength " : "Y = ", im->known ? l : "unknown",
+		 !im->known ? (im->brittle ? ": set impactor.tensile" : ": set impactor.yield") : "");
 }

@@ -28,7 +28,24 @@
 #include "field.h"
 #include "hertz_field.h"
 #include "problem.h"
-#include "solver.h"
+
+struct anvil_plan;   /* plan.h, which holds a verdict */
+struct anvil_solver; /* solver.h */
+
+/* The impactor under the same contact: the pressure on its tip is the
+ * layer's, so the same Hertz field with the impactor's own nu (Johnson
+ * 1985, sec. 4.2: each body of a Hertz contact carries the half-space
+ * field of its own elastic constants), judged against its own Y, or for a
+ * brittle impactor its tensile strength.  Quasi-static always: the
+ * impactor's waves are not modelled (a rigid-body impactor), so its field
+ * is the Hertz one at the layer verdict's contact (a, p0). */
+struct anvil_verdict_impactor {
+	enum anvil_hertz_fate fate; /* ELASTIC, YIELDS or CRACKS */
+	int known, brittle;         /* as for the layer */
+	char material[ANVIL_NAME_MAX];
+	double stress, limit;       /* Pa; accurate to 1e-10 (closed form) */
+	double z;                   /* depth of the von Mises peak inside the tip, m */
+};
 
 struct anvil_verdict {
 	enum anvil_hertz_fate fate; /* ELASTIC, YIELDS or CRACKS */
@@ -40,10 +57,12 @@ struct anvil_verdict {
 	double limit;       /* Y or the tensile strength, Pa; 0 unknown */
 	double r, z, t;     /* where (m) and when (s) */
 	double a, p0;       /* contact radius (m) and peak pressure (Pa) at t */
+	struct anvil_verdict_impactor imp; /* the impactor under the same (a, p0) */
 };
 
 /* The verdict on pb's layer, from field f (true contact turned on here) or,
- * f NULL, from quasi-static Hertz.  ANVIL_OK, or the field's status. */
+ * f NULL, from quasi-static Hertz, and on its impactor (v->imp) under the
+ * same contact.  ANVIL_OK, or the field's status (or hertz_field.h's). */
 int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
 		       struct anvil_verdict *v, struct anvil_err *err);
 
@@ -58,5 +77,13 @@ int anvil_solver_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 /* One line without a newline: "the steel layer yields: peak von Mises
  * 3.41 GPa at 0.48 a = 0.42 mm below the contact at t = 32.5 us, Y = 1 GPa". */
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n);
+
+/* The impactor's line, without a newline: "the copper impactor yields
+ * under the same contact: peak von Mises 3.04 GPa at 0.48 a = 0.11 mm
+ * inside its tip, Y = 57 MPa". */
+void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n);
+
+/* 1 when the layer or the impactor yields or cracks. */
+int anvil_verdict_fails(const struct anvil_verdict *v);
 
 #endif

@@ -94,10 +94,8 @@ static void print_estimates(FILE *f, const struct anvil_plan *pl)
 	fputs("estimates\n", f);
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
 		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
-		if (i == ANVIL_FIG_YIELD && !(pl->fig[i] > 0))
-			continue;
-		fprintf(f, "  %-12s %-12s %s%s%s\n", fi->name, fig_text(v, sizeof v, fi->unit, pl->fig[i]),
-			fi->what, i == ANVIL_FIG_YIELD ? ": " : "", i == ANVIL_FIG_YIELD ? pl->softer : "");
+		fprintf(f, "  %-12s %-12s %s\n", fi->name, fig_text(v, sizeof v, fi->unit, pl->fig[i]),
+			fi->what);
 	}
 }
 
@@ -131,6 +129,17 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 		fprintf(f, "      fallback: the layer, if the computed contact outlasts 2h/c1\n");
 }
 
+/* The one verdict (verdict.h): the layer, then the impactor under the
+ * same contact, each on its own line. */
+static void print_verdict(FILE *f, const struct anvil_verdict *v)
+{
+	char line[320];
+	anvil_verdict_text(v, line, sizeof line);
+	fprintf(f, "\nverdict\n  %s\n", line);
+	anvil_verdict_impactor_text(v, line, sizeof line);
+	fprintf(f, "  %s\n", line);
+}
+
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 {
 	char c[32], full[32];
@@ -149,11 +158,10 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 		fputs("\nwarnings\n", f);
 	for (int i = 0; i < pl->nwarn; i++) {
 		const struct anvil_plan_warning *w = &pl->warn[i];
-		fprintf(f, "  %s%s%s%s\n", anvil_plan_warn_text(w->kind),
-			w->kind == ANVIL_WARN_YIELD ? " (" : "", w->kind == ANVIL_WARN_YIELD ? pl->softer : "",
-			w->kind == ANVIL_WARN_YIELD ? ")" : "");
+		fprintf(f, "  %s\n", anvil_plan_warn_text(w->kind));
 		fig_list(f, pl, w->fig, w->nfig);
 	}
+	print_verdict(f, &pl->verdict);
 }
 
 void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix)
@@ -161,11 +169,9 @@ void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *
 	char v[48];
 	for (int i = 0; i < pl->nwarn; i++) {
 		const struct anvil_plan_warning *w = &pl->warn[i];
-		int yield = w->kind == ANVIL_WARN_YIELD && pl->softer[0];
 		if (w->kind == ANVIL_WARN_FIELD)
 			continue; /* what was asked for, not a warning about it */
-		fprintf(f, "%s%s%s%s%s", prefix, anvil_plan_warn_text(w->kind), yield ? " (" : "",
-			yield ? pl->softer : "", yield ? ")" : "");
+		fprintf(f, "%s%s", prefix, anvil_plan_warn_text(w->kind));
 		for (int k = 0; k < w->nfig; k++) {
 			const struct anvil_fig_info *fi = anvil_plan_fig_info(w->fig[k]);
 			fprintf(f, "%s%s = %s", k ? ", " : "; ", fi->name,
@@ -177,12 +183,19 @@ void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *
 
 /* ---- tsv, csv ---- */
 
+static const char *fate_name(enum anvil_hertz_fate fate, int known)
+{
+	return fate == ANVIL_HERTZ_YIELDS ? "yields" : fate == ANVIL_HERTZ_CRACKS ? "cracks"
+		: known ? "elastic" : "unknown";
+}
+
 static const char *const warn_names[ANVIL_WARN_COUNT] = {
-	"yield", "yield-unknown", "superseismic", "plate-range", "refuse", "not-exact", "field"};
+	"superseismic", "plate-range", "refuse", "not-exact", "field"};
 
 /* One record per line, SI values: "figure NAME VALUE", "row MODEL RUN
  * METHOD EXACT MODEL_ERR COST COST_FULL CACHED WHY", "warning KIND",
- * "total COST"; fields separated by sep (no field holds a tab or a
+ * "verdict BODY MATERIAL FATE STRESS LIMIT" (BODY layer or impactor, FATE
+ * elastic, yields, cracks or unknown, LIMIT 0 when unknown), "total COST"; fields separated by sep (no field holds a tab or a
  * comma but WHY, which CSV quotes). */
 static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 {
@@ -201,6 +214,11 @@ static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 	}
 	for (int i = 0; i < pl->nwarn; i++)
 		fprintf(f, "warning%c%s\n", sep, warn_names[pl->warn[i].kind]);
+	const struct anvil_verdict *vd = &pl->verdict;
+	fprintf(f, "verdict%clayer%c%s%c%s%c%.6g%c%.6g\n", sep, sep, vd->material, sep,
+		fate_name(vd->fate, vd->known), sep, vd->stress, sep, vd->limit);
+	fprintf(f, "verdict%cimpactor%c%s%c%s%c%.6g%c%.6g\n", sep, sep, vd->imp.material, sep,
+		fate_name(vd->imp.fate, vd->imp.known), sep, vd->imp.stress, sep, vd->imp.limit);
 	fprintf(f, "total%c%.6g\n", sep, pl->cost);
 }
 
@@ -216,8 +234,29 @@ static const char *const si_unit[] = {
 	[ANVIL_UNIT_NONE] = "", [ANVIL_UNIT_FRACTION] = "", [ANVIL_UNIT_TIME] = "s",
 	[ANVIL_UNIT_FORCE] = "N", [ANVIL_UNIT_LENGTH] = "m", [ANVIL_UNIT_PRESSURE] = "Pa"};
 
+/* One body's verdict: {"material", "fate", "stress_Pa", "limit_Pa", "text"}. */
+static void json_verdict(FILE *f, const char *body, const char *mat, const char *fate,
+			 double stress, double limit, const struct anvil_verdict *v)
+{
+	char line[320];
+	if (body[0] == 'l')
+		anvil_verdict_text(v, line, sizeof line);
+	else
+		anvil_verdict_impactor_text(v, line, sizeof line);
+	fprintf(f, "\n    \"%s\": {\"material\": ", body);
+	out_json_string(f, mat);
+	fprintf(f, ", \"fate\": \"%s\", \"stress_Pa\": ", fate);
+	json_num(f, stress);
+	fputs(", \"limit_Pa\": ", f);
+	json_num(f, limit);
+	fputs(", \"text\": ", f);
+	out_json_string(f, line);
+	fputc('}', f);
+}
+
 /* {"title", "figures": [{name, value, unit (SI), what}], "rows": [...],
- * "warnings": [{kind, text}], "cost_s"} */
+ * "warnings": [{kind, text}], "verdict": {"layer": {...}, "impactor": {...}},
+ * "cost_s"} */
 static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 {
 	fputs("{\n  \"title\": ", f);
@@ -256,7 +295,14 @@ static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 		out_json_string(f, anvil_plan_warn_text(pl->warn[i].kind));
 		fputc('}', f);
 	}
-	fprintf(f, "%s],\n  \"cost_s\": ", pl->nwarn ? "\n  " : "");
+	fprintf(f, "%s],\n  \"verdict\": {", pl->nwarn ? "\n  " : "");
+	json_verdict(f, "layer", pl->verdict.material, fate_name(pl->verdict.fate, pl->verdict.known),
+		     pl->verdict.stress, pl->verdict.limit, &pl->verdict);
+	fputc(',', f);
+	json_verdict(f, "impactor", pl->verdict.imp.material,
+		     fate_name(pl->verdict.imp.fate, pl->verdict.imp.known), pl->verdict.imp.stress,
+		     pl->verdict.imp.limit, &pl->verdict);
+	fputs("},\n  \"cost_s\": ", f);
 	json_num(f, pl->cost);
 	fputs("\n}\n", f);
 }
@@ -337,14 +383,7 @@ static int plan_scene(const struct plan_opts *o)
 		print_json(out.f, &pl, sc.title);
 	} else {
 		fprintf(out.f, "%s\n", sc.title[0] ? sc.title : "scene");
-		anvil_plan_print(out.f, &pl);
-		/* the one verdict (verdict.h), at the cost a plan may have: no run */
-		struct anvil_verdict v;
-		char line[320];
-		if (!anvil_verdict_make(&pl.pb, NULL, &v, NULL)) {
-			anvil_verdict_text(&v, line, sizeof line);
-			fprintf(out.f, "\nverdict\n  %s\n", line);
-		}
+		anvil_plan_print(out.f, &pl); /* the verdict at its end (plan.h) */
 	}
 	return cli_out_commit(&out) ? EXIT_FAIL : EXIT_OK;
 }

@@ -242,8 +242,8 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 }
 
 /* The plan the rows will run from, before the work, on stderr: with -v
- * the whole of it, else (not with -q) its warnings (super-seismic, yield,
- * out of range), one line each. */
+ * the whole of it, else (not with -q) its warnings (super-seismic, out of
+ * range), one line each; the verdict is run_verdict's. */
 static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
 {
 	if (o->quiet)
@@ -256,7 +256,8 @@ static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
 	}
 }
 
-/* The verdict on the layer (verdict.h), one line on stderr (not with -q):
+/* The verdict on the layer (verdict.h), one line on stderr (not with -q),
+ * and a second on the impactor when it yields or cracks:
  * from the layer or half-space row's field when the run has that row (the
  * solver's cache holds its responses), else quasi-static Hertz.  A failed
  * verdict is said, and does not fail the run. */
@@ -277,6 +278,10 @@ static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 		return;
 	}
 	anvil_verdict_text(&v, line, sizeof line);
+	cli_error("%s", line);
+	if (v.imp.fate == ANVIL_HERTZ_ELASTIC)
+		return; /* the impactor's line only when it fails: one line otherwise */
+	anvil_verdict_impactor_text(&v, line, sizeof line);
 	cli_error("%s", line);
 }
 
