@@ -99,6 +99,8 @@ ENVS="ANVIL_GNUPLOT=/nonexistent/gnuplot"
 start main -s solver.models=hertz,zener
 assert 'the results appear' wait_for main 'last run'
 assert 'the alternate screen is in use' [ "$(flag main alternate_on)" = 1 ]
+assert 'the verdict mark: the steel layer yields' wait_for main 'the steel layer yields: peak von Mises'
+assert 'the shape row' wait_for main 'shape +rod'
 before=$(ts_zener main)
 assert "Zener's t_s is a number ($before us)" awk -v v="$before" 'BEGIN { exit !(v + 0 > 0) }'
 assert 'the thickness shows in mm' wait_for main 'thickness +4 mm'

@@ -243,9 +243,24 @@ static void put_right(int y, int x, int w, attr_t a, const char *s)
 	put(y, x + (cols < w ? w - cols : 0), w, a, s);
 }
 
+/* The one verdict (verdict.h), first under the table: in the error colour
+ * when a body yields or cracks.  Returns the rows used. */
+static int draw_verdict(const struct tui_model *m, int y)
+{
+	char layer[320], imp[320];
+	int w = COLS - TABLE_X, fails = tui_model_verdict(m, layer, imp, sizeof layer);
+	if (fails < 0)
+		return 0;
+	putf(y, TABLE_X, w, attr(fails ? R_ERROR : R_INFO), "%s", layer);
+	if (!imp[0])
+		return 1;
+	putf(y + 1, TABLE_X, w, attr(R_ERROR), "%s", imp);
+	return 2;
+}
+
 static void draw_notes(const struct tui_model *m, int y)
 {
-	int w = COLS - TABLE_X, used = 0;
+	int w = COLS - TABLE_X, used = draw_verdict(m, y);
 	for (int i = 0; i < ANVIL_MODEL_COUNT && used < NOTES_ROWS; ++i) {
 		const struct tui_row *row = &m->rows[tui_model_order[i]];
 		const char *title = tui_model_title(tui_model_order[i]);

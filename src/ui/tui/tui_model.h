@@ -59,6 +59,7 @@ enum tui_field {
 	TUI_F_LAYER,      /* layer material */
 	TUI_F_MASS,
 	TUI_F_RADIUS,
+	TUI_F_SHAPE,      /* impactor.shape: rod or ball */
 	TUI_F_ACCURACY,
 	TUI_F_SHOW_LAYER, /* which models are computed and shown */
 	TUI_F_SHOW_HALFSPACE,
@@ -192,6 +193,13 @@ void tui_model_message(struct tui_model *m, int error, const char *fmt, ...)
 const char *tui_model_save_path(const struct tui_model *m);
 /* After a successful save to path. */
 void tui_model_saved(struct tui_model *m, const char *path);
+
+/* The one verdict (verdict.h) of the current generation's plan (the
+ * quasi-static Hertz contact, as `anvil plan` prints it): the layer's line
+ * into layer, the impactor's into imp when it yields or cracks ("" when it
+ * does not).  Returns -1 with no plan yet for this generation (both ""), 1
+ * when a body yields or cracks, 0 when not (or not judged). */
+int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n);
 
 /* The label and the value (with its unit) of a panel row. */
 const char *tui_field_label(enum tui_field f);
