@@ -339,6 +339,7 @@ static int fit_option(struct fit *f, int c, char **argv, const char **range)
 	case 's':
 		return cli_sets_add(&f->sets, optarg) ? EXIT_FAIL : -1;
 	case 'k':
+		f->k = NULL;
 		for (int i = 0; i < NKEYS; i++)
 			if (!strcmp(optarg, fit_keys[i].key))
 				f->k = &fit_keys[i];
