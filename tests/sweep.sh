@@ -191,4 +191,21 @@ assert "its R_f and t_s are anvil run's" [ "$(awk -F, 'NR == 3 { printf "%.9g %.
 	"$($ANVIL run $D -m zener -s impact.velocity=1m/s -f tsv 2>/dev/null | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%.9g %.9g", $c["Rf"], $c["ts_us"] }')" ]
 check_exit 2 "dem: bad velocities" $ANVIL dem --velocities 1..2m/s:0
 
+# ---- charts from sweeps ----
+check "plot restitution-velocity (script)" $ANVIL plot restitution-velocity $D -s layer.thickness=2r0 --script rv.gp
+assert "...R_f against a log V0 axis, the half-space band and Zener dashed" \
+	sh -c 'grep -q "set logscale x" rv.gp && grep -q "half-space" rv.gp && grep -q "Zener" rv.gp'
+check "a V0 x h sweep for the map" $ANVIL sweep $D -m layer impact.velocity=1..10m/s:3:log layer.thickness=1r0,2r0,4r0 -o map.tsv -q
+check "plot restitution-map FILE (script)" $ANVIL plot restitution-map map.tsv --script rm.gp
+assert "...a heat map with contours over the 3 x 3 grid" \
+	sh -c 'grep -q "set contour base" rm.gp && grep -q "with pm3d" rm.gp && [ $(grep -c "^[0-9.e+-]* [0-9.e+-]* [0-9.e+-]*$" rm.gp) -eq 9 ]'
+check_exit 2 "restitution-map: a file that is not a sweep's" $ANVIL plot restitution-map dem.csv --script x.gp
+if [ -n "${GNUPLOT:-}" ] && command -v "$GNUPLOT" >/dev/null 2>&1; then
+	check "restitution-map as PNG" $ANVIL plot restitution-map map.tsv -o rm.png
+	assert "...a PNG" sh -c 'head -c 4 rm.png | grep -q PNG'
+else
+	skip "restitution-map as PNG" "no gnuplot"
+	skip "...a PNG" "no gnuplot"
+fi
+
 done_testing
