@@ -3,6 +3,7 @@
 . "$top_srcdir/tests/setup.sh"
 
 D='-s solver.accuracy=draft'
+src=$(cd "$top_srcdir" && pwd)
 cd "$tmp"
 
 # ---- rows ----
@@ -70,15 +71,19 @@ assert "...and writes nothing" [ ! -e m2.tsv ]
 check_exit 2 "merge refuses a shard given twice" $ANVIL merge sh1.tsv sh2.tsv sh2.tsv sh3.tsv sh4.tsv
 check_exit 2 "merge refuses shards of another sweep" $ANVIL merge sh1.tsv s.tsv
 
-# GNU parallel, as examples/sweep-parallel.sh runs it
+# GNU parallel: examples/sweep-parallel.sh itself, on a small draft sweep
 if command -v parallel >/dev/null 2>&1; then
-	check "GNU parallel runs 3 shards" parallel --will-cite $ANVIL sweep $SW --shard {}/3 -o p{}.tsv -q -j 1 ::: 1 2 3
-	check "merge the parallel shards" $ANVIL merge p1.tsv p2.tsv p3.tsv -o pm.tsv
-	assert "GNU parallel + merge = unsharded, byte for byte" cmp -s pm.tsv j1.tsv
+	mkdir bin par
+	ln -s "$ANVIL" bin/anvil
+	ex=$src/examples/sweep-parallel.sh
+	check "examples/sweep-parallel.sh: 3 shards by GNU parallel, merged" \
+		sh -c "cd par && PATH=\"$tmp/bin:\$PATH\" AXES='layer.thickness=1r0,2r0,3r0 impact.velocity=2m/s,5m/s' \
+			SWEEP_ARGS='$D -m layer,halfspace' sh '$ex' 3"
+	$ANVIL sweep $SW -o j1.csv -q
+	assert "GNU parallel + merge = unsharded, byte for byte" cmp -s par/rf.csv j1.csv
 else
-	skip "GNU parallel shards" "no parallel (Debian package 'parallel')"
-	skip "merge the parallel shards" "no parallel"
-	skip "GNU parallel + merge = unsharded" "no parallel"
+	skip "examples/sweep-parallel.sh" "no GNU parallel (Debian package 'parallel')"
+	skip "GNU parallel + merge = unsharded" "no GNU parallel"
 fi
 
 # ---- interrupted, then resumed ----
