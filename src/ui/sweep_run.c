@@ -3,12 +3,15 @@
  *
  * Scenes that share a layer response (the same h/r0, layer nu and
  * accuracy: cache.h's key less the window) form one unit of work, run by
- * one thread in scene order, so that a velocity sweep makes its response
- * once and reuses it from that solver's memory; units go to threads as
- * they come free.  Results are handed back in scene order whatever thread
+ * one thread in scene order, so that a velocity sweep makes its responses
+ * once and reuses them from that solver's memory; units go to threads as
+ * they come free, and a thread left without a unit takes scenes from the
+ * back of the longest one left (a thin layer's unit can be most of a
+ * sweep's work).  Results are handed back in scene order whatever thread
  * made them, and each is the same bits whichever solver ran it (exact
  * cache lookups), so the output does not depend on the thread count. */
 #include <errno.h>
+#include <stdint.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
@@ -49,7 +52,9 @@ struct pool {
 	size_t s0, s1;
 	const unsigned char *skip;
 	struct unit_key *order; /* scenes by unit */
-	size_t *unit;           /* start of each unit in order, nunit + 1 */
+	size_t *front, *end;    /* each unit is order[front, end): its front
+				 * advances as its thread runs it, its end
+				 * comes back when others help (pool_take) */
 	size_t nunit, next;     /* next unit to hand out */
 	struct sweep_done **slot;
 	size_t done;
@@ -114,37 +119,58 @@ static void run_scene(struct anvil_solver *s, const struct sweep *sw, size_t idx
 	}
 }
 
+/* The next scene for a thread working on unit *u (under the lock): the
+ * front of its own unit, else the next unit not started, else the back of
+ * the unit with the most scenes left (a thread that runs out of units
+ * helps with the longest one instead of idling: balance at the end costs
+ * only the responses the two threads then make twice).  1 if any. */
+static int pool_take(struct pool *p, size_t *u, size_t *idx)
+{
+	if (*u < p->nunit && p->front[*u] < p->end[*u]) {
+		*idx = p->order[p->front[*u]++].s;
+		return 1;
+	}
+	if (p->next < p->nunit) {
+		*u = p->next++;
+		*idx = p->order[p->front[*u]++].s;
+		return 1;
+	}
+	size_t best = p->nunit, left = 0;
+	for (size_t v = 0; v < p->nunit; v++)
+		if (p->end[v] - p->front[v] > left)
+			left = p->end[v] - p->front[v], best = v;
+	if (!left)
+		return 0;
+	*idx = p->order[--p->end[best]].s;
+	return 1;
+}
+
 static void *worker(void *arg)
 {
 	struct pool *p = arg;
 	struct anvil_solver *s = anvil_solver_alloc();
+	size_t u = SIZE_MAX, idx;
 	if (s) {
 		anvil_solver_set_progress(s, pool_cancel, p);
 		anvil_solver_set_warn(s, pool_warn, NULL);
 	}
 	pthread_mutex_lock(&p->mu);
-	while (s && !halted(p) && p->next < p->nunit) {
-		size_t u = p->next++;
+	while (s && !halted(p) && pool_take(p, &u, &idx)) {
+		if (p->skip && p->skip[idx - p->s0])
+			continue;
 		pthread_mutex_unlock(&p->mu);
-		for (size_t i = p->unit[u]; i < p->unit[u + 1] && !halted(p); i++) {
-			size_t idx = p->order[i].s;
-			if (p->skip && p->skip[idx - p->s0])
-				continue;
-			struct sweep_done *d = calloc(1, sizeof *d);
-			if (d)
-				run_scene(s, p->sw, idx, d);
-			pthread_mutex_lock(&p->mu);
-			if (!d)
-				p->halt = 1;
-			/* a run cut short by a signal is not a result */
-			else if (halted(p) && d->n && d->r[d->n - 1].status == ANVIL_ECANCEL)
-				free(d), d = NULL;
-			p->slot[idx - p->s0] = d;
-			p->done += d != NULL;
-			pthread_cond_broadcast(&p->cv);
-			pthread_mutex_unlock(&p->mu);
-		}
+		struct sweep_done *d = calloc(1, sizeof *d);
+		if (d)
+			run_scene(s, p->sw, idx, d);
 		pthread_mutex_lock(&p->mu);
+		if (!d)
+			p->halt = 1;
+		/* a run cut short by a signal is not a result */
+		else if (halted(p) && d->n && d->r[d->n - 1].status == ANVIL_ECANCEL)
+			free(d), d = NULL;
+		p->slot[idx - p->s0] = d;
+		p->done += d != NULL;
+		pthread_cond_broadcast(&p->cv);
 	}
 	if (s) {
 		struct anvil_solver_stats st;
@@ -167,9 +193,10 @@ static int pool_units(struct pool *p)
 {
 	size_t n = p->s1 - p->s0;
 	p->order = malloc((n + 1) * sizeof *p->order);
-	p->unit = malloc((n + 1) * sizeof *p->unit);
+	p->front = malloc((n + 1) * sizeof *p->front);
+	p->end = malloc((n + 1) * sizeof *p->end);
 	p->slot = calloc(n + 1, sizeof *p->slot);
-	if (!p->order || !p->unit || !p->slot)
+	if (!p->order || !p->front || !p->end || !p->slot)
 		return ANVIL_ENOMEM;
 	for (size_t i = 0; i < n; i++) {
 		struct anvil_scene sc;
@@ -181,9 +208,13 @@ static int pool_units(struct pool *p)
 	p->nunit = 0;
 	for (size_t i = 0; i < n; i++)
 		if (i == 0 || p->order[i].hr0 != p->order[i - 1].hr0 || p->order[i].nu != p->order[i - 1].nu ||
-		    p->order[i].acc != p->order[i - 1].acc)
-			p->unit[p->nunit++] = i;
-	p->unit[p->nunit] = n;
+		    p->order[i].acc != p->order[i - 1].acc) {
+			if (p->nunit)
+				p->end[p->nunit - 1] = i;
+			p->front[p->nunit++] = i;
+		}
+	if (p->nunit)
+		p->end[p->nunit - 1] = n;
 	return ANVIL_OK;
 }
 
@@ -248,7 +279,8 @@ static void pool_free(struct pool *p)
 			}
 	free(p->slot);
 	free(p->order);
-	free(p->unit);
+	free(p->front);
+	free(p->end);
 	pthread_mutex_destroy(&p->mu);
 	pthread_cond_destroy(&p->cv);
 }
