@@ -15,6 +15,11 @@ _anvil_opts() {
 	map) echo "-s --set --time --quantity --rmax --depth --grid -o --output -f --format --png --script --size --no-yield -q --quiet -h --help" ;;
 	plot) echo "-s --set -o --output --size --font --title --script -h --help" ;;
 	tui) echo "-s -h --help" ;;
+	sweep) echo "-s --set -o --output -f --format --zip -j --jobs --shard --resume -m --models -q --quiet -v --verbose -h --help" ;;
+	merge) echo "-o --output -f --format -h --help" ;;
+	thickness) echo "-s --set --within --rtol --range --curve -f --format -o --output -h --help" ;;
+	fit) echo "-s --set --for --range -m --model -f --format -o --output -h --help" ;;
+	dem) echo "-s --set --velocities -m --model -o --output -f --format -j --jobs -h --help" ;;
 	esac
 }
 
@@ -23,7 +28,7 @@ _anvil() {
 	COMPREPLY=()
 	cur=${COMP_WORDS[COMP_CWORD]}
 	prev=${COMP_WORDS[COMP_CWORD - 1]}
-	local commands="run table materials accuracy plot tui plan field map"
+	local commands="run table materials accuracy plot tui plan field map sweep merge thickness fit dem"
 	if [ "$COMP_CWORD" -eq 1 ]; then
 		mapfile -t COMPREPLY < <(compgen -W "$commands --help --version" -- "$cur")
 		return
@@ -52,14 +57,18 @@ _anvil() {
 		[ "$cmd" = run ] && mapfile -t COMPREPLY < <(compgen -d -- "$cur") ||
 			mapfile -t COMPREPLY < <(compgen -f -- "$cur")
 		return ;;
-	-o | --output | --history | --script)
+	--for)
+		mapfile -t COMPREPLY < <(compgen -W "layer.thickness layer.E impact.velocity" -- "$cur")
+		return ;;
+	-o | --output | --history | --script | --curve)
 		mapfile -t COMPREPLY < <(compgen -f -- "$cur")
 		return ;;
-	--v0 | --at | --rmax | --depth | --grid | --size | --font | --title)
+	--v0 | --at | --rmax | --depth | --grid | --size | --font | --title | -j | --jobs | --shard | \
+		--within | --rtol | --range | --velocities)
 		return ;;
 	esac
 	if [ "$cmd" = plot ] && [ "$COMP_CWORD" -eq 2 ]; then
-		mapfile -t COMPREPLY < <(compgen -W "force velocity deflection restitution-thickness restitution-lambda accuracy" -- "$cur")
+		mapfile -t COMPREPLY < <(compgen -W "force velocity deflection restitution-thickness restitution-lambda accuracy restitution-velocity restitution-map" -- "$cur")
 		return
 	fi
 	case $cur in

@@ -25,6 +25,11 @@ static const struct command commands[] = {
 	{"plan", anvil_cmd_plan, "how 'run' will compute a scene, and why (nothing is run)"},
 	{"field", anvil_cmd_field, "displacements and stresses inside the layer over time"},
 	{"map", anvil_cmd_map, "a displacement or stress over the layer at one instant"},
+	{"sweep", anvil_cmd_sweep, "many scenes as rows: lists and ranges of keys, on all cores"},
+	{"merge", anvil_cmd_merge, "join the shards of a sweep into its table"},
+	{"thickness", anvil_cmd_thickness, "the thinnest layer that acts as a half-space"},
+	{"fit", anvil_cmd_fit, "the thickness, modulus or velocity that gives a measured value"},
+	{"dem", anvil_cmd_dem, "a restitution table against velocity for a DEM code"},
 };
 #define NCOMMANDS ((int)(sizeof commands / sizeof commands[0]))
 

@@ -31,6 +31,8 @@ assert 'options of run: "--hist" gives --history' [ "$(complete_words "$ANVIL" r
 assert 'formats: -f j gives json' [ "$(complete_words "$ANVIL" run -f j)" = json ]
 assert 'keys: -s layer.th gives layer.thickness=' \
 	[ "$(complete_words "$ANVIL" run -s layer.th)" = layer.thickness= ]
-assert 'plot kinds: restitution-' [ "$(complete_words "$ANVIL" plot restitution- | wc -l)" -eq 2 ]
+assert 'plot kinds: restitution-' [ "$(complete_words "$ANVIL" plot restitution- | wc -l)" -eq 4 ]
+assert 'commands: "swe" gives sweep' [ "$(complete_words "$ANVIL" swe)" = sweep ]
+assert 'options of sweep: "--sha" gives --shard' [ "$(complete_words "$ANVIL" sweep --sha)" = --shard ]
 
 done_testing

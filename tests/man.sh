@@ -22,7 +22,7 @@ else
 fi
 
 # ---- every command the manual documents ----
-for c in run table materials accuracy plot tui; do
+for c in run table materials accuracy plot tui sweep merge thickness fit dem; do
 	assert "COMMANDS documents $c" grep -Eq "^\.(B|BI) $c( |\$)" "$page"
 done
 

@@ -22,6 +22,7 @@
 #include "commands.h"
 #include "common.h"
 #include "plot.h"
+#include "plot_sweep.h"
 
 /* Samples kept per history: smooth at any PNG size anvil allows. */
 #define PLOT_NHIST 400
@@ -651,6 +652,8 @@ static int build_chart(struct plot_chart *c, struct batch *b,
 		return chart_rf_lambda(c, b, sc, a);
 	case PLOT_ACCURACY:
 		return chart_accuracy(c, b, sc);
+	case PLOT_RESTITUTION_VELOCITY: /* plot_sweep.c, on every core */
+		return plot_sweep_rf_velocity(c, sc, a->fixed_h) ? ANVIL_EINVAL : ANVIL_OK;
 	default:
 		st = runs_history(b, sc, a);
 		return st ? st : built(c, plot_chart_history(c, a->kind, b->runs, b->n));
@@ -692,6 +695,8 @@ static int plot_scene(struct plot_args *a)
 	struct plot_chart c;
 	struct anvil_err err = {0};
 	struct batch *b;
+	if (a->kind == PLOT_RESTITUTION_MAP) /* SCENE is a sweep's rows: plot_sweep.c */
+		return plot_sweep_rf_map(a->scene, &a->opts, a->out, a->script);
 	int st = cli_scene(&sc, a->scene, a->sets.v, a->sets.n), code = EXIT_FAIL;
 	if (st)
 		return cli_exit_code(st);
@@ -706,8 +711,9 @@ static int plot_scene(struct plot_args *a)
 	if (!st) {
 		int vary_h = a->kind == PLOT_RESTITUTION_THICKNESS ||
 			     (!a->fixed_h && a->kind != PLOT_ACCURACY);
-		int vary_v = !a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
-					     a->kind == PLOT_RESTITUTION_LAMBDA);
+		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY ||
+			     (!a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
+					      a->kind == PLOT_RESTITUTION_LAMBDA));
 		plot_chart_subtitle(&c, &sc, vary_h, vary_v);
 		code = render(&c, a);
 	}

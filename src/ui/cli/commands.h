@@ -15,6 +15,11 @@ int anvil_cmd_tui(int argc, char **argv);       /* src/ui/tui.c */
 int anvil_cmd_plan(int argc, char **argv);      /* src/ui/cmd_plan.c */
 int anvil_cmd_field(int argc, char **argv);     /* src/ui/cmd_field.c */
 int anvil_cmd_map(int argc, char **argv);       /* src/ui/cmd_field.c */
+int anvil_cmd_sweep(int argc, char **argv);     /* src/ui/cli/cmd_sweep.c */
+int anvil_cmd_merge(int argc, char **argv);     /* src/ui/cli/cmd_merge.c */
+int anvil_cmd_thickness(int argc, char **argv); /* src/ui/cli/cmd_answer.c */
+int anvil_cmd_fit(int argc, char **argv);       /* src/ui/cli/cmd_answer.c */
+int anvil_cmd_dem(int argc, char **argv);       /* src/ui/cli/cmd_answer.c */
 
 /* What `anvil map SCENE -o path` writes (von Mises at t_max, the default
  * grid; format from the extension, else TSV), for `anvil run` when the

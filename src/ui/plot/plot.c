@@ -46,6 +46,13 @@ static const struct plot_kind_info kinds[PLOT_KIND_COUNT] = {
 		"set logscale xy\nset format y '10^{%L}'\nset format x '%g'\n"},
 	[PLOT_HISTORY] = {"history", "P(t), v(t) and w(t) stacked on one time axis",
 		"t (µs)", "", ""},
+	[PLOT_RESTITUTION_VELOCITY] = {"restitution-velocity",
+		"restitution R_f against V0, one curve per thickness, Zener and half-space",
+		"impact velocity V_0 (m/s)", "coefficient of restitution R_f",
+		"set logscale x\nset yrange [0:1.05]\nset xtics (0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)\n"},
+	[PLOT_RESTITUTION_MAP] = {"restitution-map",
+		"R_f over V0 x h as a heat map with contours, from FILE (anvil sweep's rows)",
+		"impact velocity V_0 (m/s)", "layer thickness h / r_0", ""},
 };
 
 const struct plot_kind_info *plot_kind_info(enum plot_kind k)
@@ -564,5 +571,161 @@ int plot_paper_load(struct plot_paper *p, const char *path, struct anvil_err *er
 	fclose(f);
 	if (st)
 		p->n = 0;
+	return st;
+}
+
+/* ------------------------------------------- R_f against V0 (sweeps) */
+
+/* The distinct finite thicknesses of the layer runs, sorted. */
+static int rf_v_thicknesses(const struct plot_run *runs, int n, double *h, int max)
+{
+	int nh = 0;
+	for (int i = 0; i < n; i++) {
+		if (!ok_run(&runs[i]) || runs[i].model != ANVIL_MODEL_LAYER || !isfinite(runs[i].h_r0))
+			continue;
+		int j = 0;
+		while (j < nh && h[j] < runs[i].h_r0)
+			j++;
+		if ((j < nh && h[j] == runs[i].h_r0) || nh == max)
+			continue;
+		memmove(h + j + 1, h + j, (size_t)(nh - j) * sizeof *h);
+		h[j] = runs[i].h_r0;
+		nh++;
+	}
+	return nh;
+}
+
+/* The (V0, R_f) of model m at thickness h (any h for the half-space),
+ * sorted by V0, one point per V0. */
+static size_t rf_v_points(const struct plot_run *runs, int n, enum anvil_model m, double h,
+			  double *x, double *y)
+{
+	size_t k = 0;
+	for (int i = 0; i < n; i++) {
+		const struct plot_run *r = &runs[i];
+		if (!ok_run(r) || r->model != m || (m != ANVIL_MODEL_HALFSPACE && r->h_r0 != h) ||
+		    !isfinite(r->r->Rf.val))
+			continue;
+		size_t j = 0;
+		while (j < k && x[j] < r->V0)
+			j++;
+		if (j < k && x[j] == r->V0)
+			continue;
+		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
+		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
+		x[j] = r->V0;
+		y[j] = r->r->Rf.val;
+		k++;
+	}
+	return k;
+}
+
+int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	double h[PLOT_MAX_KEYS], *x = malloc((size_t)(n + 1) * sizeof *x), *y = malloc((size_t)(n + 1) * sizeof *y);
+	int st = ANVIL_OK, any = 0;
+	plot_chart_init(c, PLOT_RESTITUTION_VELOCITY);
+	snprintf(c->title, sizeof c->title, "Coefficient of restitution R_f against impact velocity V_0");
+	if (!x || !y) {
+		free(x);
+		free(y);
+		return ANVIL_ENOMEM;
+	}
+	int nh = rf_v_thicknesses(runs, n, h, PLOT_MAX_KEYS - 3);
+	/* the half-space first: a band under the layers that approach it */
+	size_t k = rf_v_points(runs, n, ANVIL_MODEL_HALFSPACE, 0, x, y);
+	if (k > 0) {
+		plot_chart_key(c, "half-space, h = ∞", PLOT_BAND, PLOT_BLACK, 0);
+		st = plot_chart_add(c, "", PLOT_BAND, PLOT_BLACK, x, y, k, 1, 1, 1);
+		any = 1;
+	}
+	for (int i = 0; i < nh; i++) {
+		char label[PLOT_LABEL_MAX];
+		snprintf(label, sizeof label, "h = %g r_0", h[i]);
+		plot_chart_key(c, label, PLOT_LINE, plot_h_colour(h[i]), 0);
+	}
+	for (int i = 0; i < nh && !st; i++) {
+		int col = plot_h_colour(h[i]);
+		if ((k = rf_v_points(runs, n, ANVIL_MODEL_ZENER, h[i], x, y)) > 0)
+			st = plot_chart_add(c, "", PLOT_DASH, col, x, y, k, 1, 1, 1);
+		if (!st && (k = rf_v_points(runs, n, ANVIL_MODEL_LAYER, h[i], x, y)) > 0) {
+			st = plot_chart_add(c, "", PLOT_LINE, col, x, y, k, 1, 1, 1);
+			if (!st)
+				st = plot_chart_add(c, "", PLOT_POINTS, col, x, y, k, 1, 1, 1);
+			any = 1;
+		}
+	}
+	plot_chart_key(c, "layer (transform), anvil's points", PLOT_LINESPOINTS, PLOT_BLACK, 0);
+	plot_chart_key(c, "Zener's plate", PLOT_DASH, PLOT_BLACK, 0);
+	free(x);
+	free(y);
+	return st ? st : any ? ANVIL_OK : ANVIL_EINVAL;
+}
+
+/* ------------------------------------------------ R_f over V0 x h */
+
+int plot_rf_map_write(FILE *f, const struct plot_rf_map *m, const struct plot_opts *o)
+{
+	int finite = 0;
+	for (size_t i = 0; i < m->nv * m->nh; i++)
+		finite += isfinite(m->rf[i]);
+	if (m->nv < 2 || m->nh < 2 || !finite)
+		return ANVIL_EINVAL;
+	fputs("# anvil restitution map: a gnuplot script with its data inline.\n"
+	      "# Render with: gnuplot THIS_FILE > map.png\n", f);
+	plot_write_terminal(f, o);
+	/* the title is anvil's (enhanced) unless the user gave one */
+	fputs("set tmargin 5\nset label 1 ", f);
+	plot_put_quoted(f, o->title && o->title[0] ? o->title : m->title);
+	fputs(" at screen 0.5, screen 0.96 center font ',12'", f);
+	fputs(o->title && o->title[0] ? " noenhanced\n" : "\n", f);
+	if (m->subtitle[0]) {
+		fputs("set label 2 ", f);
+		plot_put_quoted(f, m->subtitle);
+		fputs(" at screen 0.5, screen 0.91 center font ',9' noenhanced\n", f);
+	}
+	fputs("set xlabel 'impact velocity V_0 (m/s)'\nset ylabel 'layer thickness h / r_0'\n"
+	      "set cblabel 'coefficient of restitution R_f'\nset cbrange [0:1]\n"
+	      "set view map\nset logscale xy\nset tics out\nset key off\n"
+	      "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', "
+	      "0.75 '#5ec962', 1 '#fde725')\n"
+	      "set pm3d map corners2color mean\nset contour base\n"
+	      "set cntrparam levels incremental 0.1, 0.1, 0.9\n"
+	      "set cntrlabel onecolor format '%.1f' start 2 interval 30 font ',8'\n", f);
+	fprintf(f, "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n", m->v0[0], m->v0[m->nv - 1],
+		m->h_r0[0], m->h_r0[m->nh - 1]);
+	fputs("$map << EOD\n", f);
+	for (size_t ih = 0; ih < m->nh; ih++) {
+		for (size_t iv = 0; iv < m->nv; iv++) {
+			double v = m->rf[ih * m->nv + iv];
+			fprintf(f, "%.6g %.6g ", m->v0[iv], m->h_r0[ih]);
+			fprintf(f, isfinite(v) ? "%.6g\n" : "NaN\n", v);
+		}
+		fputc('\n', f);
+	}
+	fputs("EOD\n"
+	      "splot $map using 1:2:3 with pm3d notitle, \\\n"
+	      "      $map using 1:2:3 with lines nosurface lc rgb '#ffffff' lw 1 notitle, \\\n"
+	      "      $map using 1:2:3 with labels nosurface tc rgb '#ffffff' notitle\n", f);
+	return fflush(f) == 0 && !ferror(f) ? ANVIL_OK : ANVIL_EIO;
+}
+
+int plot_rf_map_save(const struct plot_rf_map *m, const struct plot_opts *o, const char *path,
+		     const char *script_path, struct anvil_err *err)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *mf = open_memstream(&buf, &len);
+	int st = mf ? plot_rf_map_write(mf, m, o) : ANVIL_ENOMEM;
+	if (mf && fclose(mf) != 0 && !st)
+		st = ANVIL_ENOMEM;
+	if (st == ANVIL_EINVAL)
+		anvil_err_set(err, st, "restitution-map: nothing to draw (a grid of at least 2 velocities x "
+			      "2 thicknesses with a finite R_f is needed)");
+	else if (st)
+		anvil_err_set(err, st, "restitution-map: %s", anvil_strerror(st));
+	else
+		st = plot_emit(buf, len, o, path, script_path, err);
+	free(buf);
 	return st;
 }

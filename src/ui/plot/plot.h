@@ -58,6 +58,8 @@ enum plot_kind {
 	PLOT_RESTITUTION_LAMBDA,    /* R_f against lambda*, Fig 9 */
 	PLOT_ACCURACY,              /* error against wall time per level */
 	PLOT_HISTORY,               /* P, v and w stacked, one time axis */
+	PLOT_RESTITUTION_VELOCITY,  /* R_f against V0 per thickness (sweeps) */
+	PLOT_RESTITUTION_MAP,       /* R_f over V0 x h from a sweep's file */
 	PLOT_KIND_COUNT
 };
 
@@ -270,6 +272,29 @@ int plot_chart_rf_lambda(struct plot_chart *c, const struct plot_run *runs,
  * line in the level's colour, its points in the same colour. */
 int plot_chart_accuracy(struct plot_chart *c,
 			const struct plot_run runs[ANVIL_ACC_COUNT]);
+
+/* R_f against V0, log V0 (PLOT_RESTITUTION_VELOCITY): per thickness (its
+ * colour) the layer solid through its runs (filled markers), Zener's plate
+ * dashed in the same colour; the half-space a band under them.  Runs of
+ * other models are ignored. */
+int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, int n);
+
+struct plot_opts;
+/* R_f over V0 x h/r0 (PLOT_RESTITUTION_MAP): a heat map on log axes with
+ * contours every 0.1, the colours those of the field maps (viridis).
+ * rf holds nh x nv values, row by row in h (NaN: a failed run, a hole). */
+struct plot_rf_map {
+	char title[PLOT_TITLE_MAX];    /* anvil's own text, enhanced */
+	char subtitle[PLOT_TITLE_MAX]; /* user text (noenhanced) */
+	size_t nv, nh;
+	const double *v0, *h_r0, *rf; /* borrowed, v0 and h_r0 increasing */
+};
+/* The script (data inline, image to standard output); ANVIL_EINVAL when
+ * the grid is under 2 x 2 or has no finite value, ANVIL_EIO. */
+int plot_rf_map_write(FILE *f, const struct plot_rf_map *m, const struct plot_opts *o);
+/* Script to script_path, image to path, as plot_save. */
+int plot_rf_map_save(const struct plot_rf_map *m, const struct plot_opts *o, const char *path,
+		     const char *script_path, struct anvil_err *err);
 
 /* How the image looks, and how its making can be stopped. */
 struct plot_opts {

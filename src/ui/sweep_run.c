@@ -1,0 +1,330 @@
+/* sweep_run.c: a sweep's scenes on several threads, one solver each
+ * (a solver is used from one thread at a time: solver.h).
+ *
+ * Scenes that share a layer response (the same h/r0, layer nu and
+ * accuracy: cache.h's key less the window) form one unit of work, run by
+ * one thread in scene order, so that a velocity sweep makes its responses
+ * once and reuses them from that solver's memory; units go to threads as
+ * they come free, and a thread left without a unit takes scenes from the
+ * back of the longest one left (a thin layer's unit can be most of a
+ * sweep's work).  Results are handed back in scene order whatever thread
+ * made them, and each is the same bits whichever solver ran it (exact
+ * cache lookups), so the output does not depend on the thread count. */
+#include <errno.h>
+#include <stdint.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "common.h"
+#include "solver.h"
+#include "sweep.h"
+
+int sweep_cores(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n < 1 ? 1 : n > 256 ? 256 : (int)n;
+}
+
+struct unit_key {
+	double hr0, nu;
+	int acc;
+	size_t s;
+};
+
+static int key_cmp(const void *a, const void *b)
+{
+	const struct unit_key *x = a, *y = b;
+	if (x->acc != y->acc)
+		return x->acc < y->acc ? -1 : 1;
+	if (x->nu != y->nu)
+		return x->nu < y->nu ? -1 : 1;
+	if (x->hr0 != y->hr0)
+		return x->hr0 < y->hr0 ? -1 : 1;
+	return x->s < y->s ? -1 : x->s > y->s;
+}
+
+struct pool {
+	const struct sweep *sw;
+	size_t s0, s1;
+	const unsigned char *skip;
+	struct unit_key *order; /* scenes by unit */
+	size_t *front, *end;    /* each unit is order[front, end): its front
+				 * advances as its thread runs it, its end
+				 * comes back when others help (pool_take) */
+	size_t nunit, next;     /* next unit to hand out */
+	struct sweep_done **slot;
+	size_t done;
+	int live;     /* workers running */
+	volatile sig_atomic_t halt; /* stop handing out work (emit failed) */
+	volatile sig_atomic_t *stop;
+	pthread_mutex_t mu;
+	pthread_cond_t cv;
+	struct sweep_stats stats;
+};
+
+static int halted(struct pool *p)
+{
+	return p->halt || (p->stop && *p->stop);
+}
+
+/* The solver's progress callback: cancels the run under way on a signal. */
+static int pool_cancel(void *ctx, double fraction, const char *what)
+{
+	(void)fraction;
+	(void)what;
+	return halted(ctx);
+}
+
+static void pool_warn(void *ctx, const char *msg)
+{
+	(void)ctx;
+	cli_error("warning: %s", msg);
+}
+
+/* R_f outside [0, 1] beyond its error: the impactor still moves in at the
+ * end of contact and will strike again (as anvil run says). */
+static void note_unphysical(struct anvil_result *r)
+{
+	double tol = (isfinite(r->Rf.err) ? fabs(r->Rf.err) : 0) + 1e-9;
+	if (r->status == ANVIL_OK && isfinite(r->Rf.val) && (r->Rf.val < -tol || r->Rf.val > 1 + tol))
+		snprintf(r->why, sizeof r->why, "R_f outside 0..1: the contact ends with the impactor "
+			 "still moving in: re-contact not modelled");
+}
+
+static void run_scene(struct anvil_solver *s, const struct sweep *sw, size_t idx, struct sweep_done *d)
+{
+	struct anvil_scene sc;
+	struct anvil_err err = {0};
+	struct anvil_plan pl;
+	d->scene = idx;
+	d->st = sweep_scene(sw, idx, &sc, &err);
+	if (!d->st)
+		d->st = cli_plan(&sc, anvil_solver_cache(s), &pl, &err);
+	if (!d->st && !anvil_scene_models(&sc))
+		d->st = anvil_err_set(&err, ANVIL_EINVAL, "no model to run");
+	if (d->st) {
+		snprintf(d->why, sizeof d->why, "%s", err.msg[0] ? err.msg : anvil_strerror(d->st));
+		return;
+	}
+	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
+		if (!(anvil_scene_models(&sc) & (1u << m)))
+			continue;
+		anvil_solver_run(s, &pl, (enum anvil_model)m, 0, &d->r[d->n], NULL);
+		note_unphysical(&d->r[d->n]);
+		d->n++;
+	}
+}
+
+/* The next scene for a thread working on unit *u (under the lock): the
+ * front of its own unit, else the next unit not started, else the back of
+ * the unit with the most scenes left (a thread that runs out of units
+ * helps with the longest one instead of idling: balance at the end costs
+ * only the responses the two threads then make twice).  1 if any. */
+static int pool_take(struct pool *p, size_t *u, size_t *idx)
+{
+	if (*u < p->nunit && p->front[*u] < p->end[*u]) {
+		*idx = p->order[p->front[*u]++].s;
+		return 1;
+	}
+	if (p->next < p->nunit) {
+		*u = p->next++;
+		*idx = p->order[p->front[*u]++].s;
+		return 1;
+	}
+	size_t best = p->nunit, left = 0;
+	for (size_t v = 0; v < p->nunit; v++)
+		if (p->end[v] - p->front[v] > left)
+			left = p->end[v] - p->front[v], best = v;
+	if (!left)
+		return 0;
+	*idx = p->order[--p->end[best]].s;
+	return 1;
+}
+
+static void *worker(void *arg)
+{
+	struct pool *p = arg;
+	struct anvil_solver *s = anvil_solver_alloc();
+	size_t u = SIZE_MAX, idx;
+	if (s) {
+		anvil_solver_set_progress(s, pool_cancel, p);
+		anvil_solver_set_warn(s, pool_warn, NULL);
+	}
+	pthread_mutex_lock(&p->mu);
+	while (s && !halted(p) && pool_take(p, &u, &idx)) {
+		if (p->skip && p->skip[idx - p->s0])
+			continue;
+		pthread_mutex_unlock(&p->mu);
+		struct sweep_done *d = calloc(1, sizeof *d);
+		if (d)
+			run_scene(s, p->sw, idx, d);
+		pthread_mutex_lock(&p->mu);
+		if (!d)
+			p->halt = 1;
+		/* a run cut short by a signal is not a result */
+		else if (halted(p) && d->n && d->r[d->n - 1].status == ANVIL_ECANCEL)
+			free(d), d = NULL;
+		p->slot[idx - p->s0] = d;
+		p->done += d != NULL;
+		pthread_cond_broadcast(&p->cv);
+	}
+	if (s) {
+		struct anvil_solver_stats st;
+		anvil_solver_stats(s, &st);
+		p->stats.responses += st.layer_computed;
+		p->stats.mem_hits += st.cache.mem_hits;
+		p->stats.disk_hits += st.cache.disk_hits;
+	} else {
+		p->halt = 1;
+	}
+	p->live--;
+	pthread_cond_broadcast(&p->cv);
+	pthread_mutex_unlock(&p->mu);
+	anvil_solver_free(s);
+	return NULL;
+}
+
+/* Units: the scenes sorted by response key, cut where the key changes. */
+static int pool_units(struct pool *p)
+{
+	size_t n = p->s1 - p->s0;
+	p->order = malloc((n + 1) * sizeof *p->order);
+	p->front = malloc((n + 1) * sizeof *p->front);
+	p->end = malloc((n + 1) * sizeof *p->end);
+	p->slot = calloc(n + 1, sizeof *p->slot);
+	if (!p->order || !p->front || !p->end || !p->slot)
+		return ANVIL_ENOMEM;
+	for (size_t i = 0; i < n; i++) {
+		struct anvil_scene sc;
+		sweep_scene(p->sw, p->s0 + i, &sc, NULL);
+		p->order[i] = (struct unit_key){anvil_scene_h(&sc) / sc.radius, sc.layer.mat.nu,
+						(int)sc.accuracy, p->s0 + i};
+	}
+	qsort(p->order, n, sizeof *p->order, key_cmp);
+	p->nunit = 0;
+	for (size_t i = 0; i < n; i++)
+		if (i == 0 || p->order[i].hr0 != p->order[i - 1].hr0 || p->order[i].nu != p->order[i - 1].nu ||
+		    p->order[i].acc != p->order[i - 1].acc) {
+			if (p->nunit)
+				p->end[p->nunit - 1] = i;
+			p->front[p->nunit++] = i;
+		}
+	if (p->nunit)
+		p->end[p->nunit - 1] = n;
+	return ANVIL_OK;
+}
+
+static void deadline(struct timespec *ts, double seconds)
+{
+	clock_gettime(CLOCK_REALTIME, ts);
+	long ns = ts->tv_nsec + (long)(seconds * 1e9);
+	ts->tv_sec += ns / 1000000000L;
+	ts->tv_nsec = ns % 1000000000L;
+}
+
+/* Hand results to emit in scene order as they arrive. */
+static int pool_drain(struct pool *p, sweep_emit_fn emit, sweep_tick_fn tick, void *ctx)
+{
+	size_t next = 0, n = p->s1 - p->s0;
+	int st = ANVIL_OK;
+	pthread_mutex_lock(&p->mu);
+	while (next < n) {
+		if (p->skip && p->skip[next]) {
+			next++;
+			continue;
+		}
+		struct sweep_done *d = p->slot[next];
+		if (!d) {
+			if (p->live == 0)
+				break; /* stopped: nothing more will come */
+			struct timespec ts;
+			deadline(&ts, 0.2);
+			pthread_cond_timedwait(&p->cv, &p->mu, &ts);
+			size_t done = p->done;
+			pthread_mutex_unlock(&p->mu);
+			if (tick)
+				tick(ctx, done);
+			pthread_mutex_lock(&p->mu);
+			continue;
+		}
+		p->slot[next++] = NULL;
+		pthread_mutex_unlock(&p->mu);
+		if (!st && emit)
+			st = emit(ctx, d);
+		for (int i = 0; i < d->n; i++)
+			anvil_result_free(&d->r[i]);
+		free(d);
+		pthread_mutex_lock(&p->mu);
+		if (st)
+			p->halt = 1;
+	}
+	pthread_mutex_unlock(&p->mu);
+	if (!st && next < n)
+		st = p->stop && *p->stop ? ANVIL_ECANCEL : ANVIL_ENOMEM;
+	return st;
+}
+
+static void pool_free(struct pool *p)
+{
+	if (p->slot)
+		for (size_t i = 0; i < p->s1 - p->s0; i++)
+			if (p->slot[i]) {
+				for (int j = 0; j < p->slot[i]->n; j++)
+					anvil_result_free(&p->slot[i]->r[j]);
+				free(p->slot[i]);
+			}
+	free(p->slot);
+	free(p->order);
+	free(p->front);
+	free(p->end);
+	pthread_mutex_destroy(&p->mu);
+	pthread_cond_destroy(&p->cv);
+}
+
+int sweep_run(const struct sweep *sw, size_t s0, size_t s1, const unsigned char *skip,
+	      int nthreads, sweep_emit_fn emit, sweep_tick_fn tick, void *ctx,
+	      volatile sig_atomic_t *stop, struct sweep_stats *stats)
+{
+	struct pool p = {.sw = sw, .s0 = s0, .s1 = s1, .skip = skip, .stop = stop};
+	pthread_t tid[256];
+	sigset_t all, old;
+	int st;
+	pthread_mutex_init(&p.mu, NULL);
+	pthread_cond_init(&p.cv, NULL);
+	if ((st = pool_units(&p))) {
+		pool_free(&p);
+		return st;
+	}
+	if (nthreads > (int)p.nunit)
+		nthreads = (int)p.nunit;
+	if (nthreads > 256)
+		nthreads = 256;
+	/* signals go to the calling thread, which sets *stop */
+	sigfillset(&all);
+	pthread_sigmask(SIG_BLOCK, &all, &old);
+	int started = 0;
+	for (; started < nthreads; started++) {
+		pthread_mutex_lock(&p.mu);
+		p.live++;
+		pthread_mutex_unlock(&p.mu);
+		if (pthread_create(&tid[started], NULL, worker, &p) != 0) {
+			p.live--;
+			break;
+		}
+	}
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	st = started || !nthreads ? pool_drain(&p, emit, tick, ctx) : ANVIL_ENOMEM;
+	pthread_mutex_lock(&p.mu);
+	p.halt = 1;
+	pthread_mutex_unlock(&p.mu);
+	for (int i = 0; i < started; i++)
+		pthread_join(tid[i], NULL);
+	if (stats)
+		*stats = p.stats;
+	pool_free(&p);
+	return st;
+}
