@@ -526,6 +526,14 @@ static double extrap(double coarse, double fine, double *err)
 	return fine + (fine - coarse) / 3.0;
 }
 
+/* E_a = m1 (V0^2 - V_s^2)/2 moves by at most m1 (|V_s| e + e^2/2) when
+ * V_s moves by e: the linear term alone vanishes at V_s = 0 (a dead
+ * rebound, R_f near 0), where the quadratic one is the whole error. */
+static double ea_err(const struct anvil_params *p, const struct anvil_result *r)
+{
+	return p->m1 * (fabs(r->Vs.val) + 0.5 * r->Vs.err) * r->Vs.err;
+}
+
 /* The contacts of the finer pass; when the passes disagree on how many
  * there are, extrapolation means nothing: the fine values stand, with the
  * whole difference (at least) as their error. */
@@ -545,7 +553,7 @@ static void fill_contacts(struct anvil_result *r, const struct anvil_params *p,
 	r->Vs.val = b->Vs, r->Vs.err = fmax(r->Vs.err, fabs(b->Vs - a->Vs));
 	r->Rf.val = r->Vs.val / p->V0, r->Rf.err = r->Vs.err / p->V0;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
-	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
+	r->Ea.err = ea_err(p, r);
 }
 
 static void fill(struct anvil_result *r, const struct anvil_params *p,
@@ -567,7 +575,7 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 	r->Rf.val = r->Vs.val / p->V0;
 	r->Rf.err = r->Vs.err / p->V0;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
-	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
+	r->Ea.err = ea_err(p, r);
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 	fill_contacts(r, p, a, b);
