@@ -101,6 +101,17 @@ static const void *held_add(struct held *h, const void *p)
 	return p;
 }
 
+/* Give back one hold on p (a response no longer used), if held. */
+static void held_drop(struct anvil_cache *c, struct held *h, const void *p)
+{
+	for (int i = h->n - 1; p && i >= 0; i--)
+		if (h->p[i] == p) {
+			anvil_cache_release(c, p);
+			h->p[i] = h->p[--h->n];
+			return;
+		}
+}
+
 static void held_release(struct anvil_cache *c, struct held *h)
 {
 	for (int i = 0; i < h->n; i++)
@@ -244,6 +255,9 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 	int st = ANVIL_ETOL;
 	for (int attempt = 0; attempt < wv->job->attempts && st == ANVIL_ETOL; attempt++) {
 		double tau_end = anvil_wave_window(wv->job, attempt);
+		/* the shorter window's response is done with: held, the responses
+		 * of every window and bandwidth would outnumber the cache's slots */
+		held_drop(s->cache, &wv->held, wv->rs.corr);
 		wv->rs.corr = NULL;
 		st = anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job, tau_end, omega, err);
 		if (st)

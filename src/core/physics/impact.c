@@ -24,6 +24,7 @@ struct pass {
 	size_t n, cap;
 	double *P, *W, *w, *v; /* one block, owned */
 	double ts, tmax, Pmax, Vs;
+	double tmax_ie;  /* the peak interpolation's own error (peak) */
 	/* repeated contacts: the count, each one's start and end (s) */
 	size_t ncont;
 	double on[ANVIL_MAX_CONTACTS], off[ANVIL_MAX_CONTACTS];
@@ -130,8 +131,40 @@ static double zero_crossing(double t0, double a0, double t1, double a1, double t
 	return 0.5 * (lo + hi);
 }
 
+/* The vertex of the cubic through P at nodes j0..j0+3, by Newton from the
+ * parabola's vertex (offset x from node k): *xv its offset from k; 0 when
+ * the cubic has no maximum within a step of x. */
+static int cubic_vertex(const double *P, size_t j0, size_t k, double x, double *xv)
+{
+	/* Newton's form in u = node - j0: c1 u + c2 u(u-1) + c3 u(u-1)(u-2) */
+	double c1 = P[j0 + 1] - P[j0], c2 = 0.5 * (P[j0 + 2] - 2.0 * P[j0 + 1] + P[j0]);
+	double c3 = (P[j0 + 3] - 3.0 * P[j0 + 2] + 3.0 * P[j0 + 1] - P[j0]) / 6.0;
+	double u0 = (double)(k - j0) + x, u = u0;
+	for (int i = 0; i < 30; i++) {
+		double f1 = c1 + c2 * (2.0 * u - 1.0) + c3 * (3.0 * u * u - 6.0 * u + 2.0);
+		double f2 = 2.0 * c2 + c3 * (6.0 * u - 6.0);
+		if (!(f2 < 0))
+			return 0;
+		double du = f1 / f2;
+		u -= du;
+		if (fabs(du) < 1e-12)
+			break;
+	}
+	if (!(fabs(u - u0) <= 1.0))
+		return 0;
+	*xv = u - (double)(k - j0);
+	return 1;
+}
+
 /* Peak of the force by a parabola through the largest sample and its
- * neighbours. */
+ * neighbours.  The parabola's vertex is off the true one by O(dt^2) times
+ * the ratio of the third derivative to the second, with a factor that
+ * swings with the peak's phase on the grid, so the dt and dt/2 passes can
+ * agree by chance and Richardson then misses it.  Its own error tmax_ie
+ * (s) is the shift to the vertex of the cubic through the four nodes
+ * nearest the peak (the next term of the same interpolation), or a whole
+ * step where the force is not smooth enough for that (a kink at a wave
+ * arrival, the peak at an end of the record). */
 static void peak(struct pass *s)
 {
 	size_t k = 0;
@@ -140,14 +173,21 @@ static void peak(struct pass *s)
 			k = i;
 	s->tmax = (double)k * s->dt;
 	s->Pmax = s->P[k];
+	s->tmax_ie = s->dt;
 	if (k == 0 || k + 1 >= s->n)
 		return;
 	double a = s->P[k - 1], b = s->P[k], c = s->P[k + 1];
 	double den = a - 2.0 * b + c;
 	if (den < 0) {
-		double x = 0.5 * (a - c) / den;
+		double x = 0.5 * (a - c) / den, xc;
 		s->tmax = ((double)k + x) * s->dt;
 		s->Pmax = b - 0.25 * (a - c) * x;
+		/* the fourth node on the vertex's side, else the other */
+		size_t j0 = x < 0 && k >= 2 ? k - 2 : k - 1;
+		if (j0 + 3 >= s->n && k >= 2)
+			j0 = k - 2;
+		if (j0 + 3 < s->n && cubic_vertex(s->P, j0, k, x, &xc))
+			s->tmax_ie = fabs(xc - x) * s->dt;
 	}
 }
 
@@ -486,6 +526,14 @@ static double extrap(double coarse, double fine, double *err)
 	return fine + (fine - coarse) / 3.0;
 }
 
+/* E_a = m1 (V0^2 - V_s^2)/2 moves by at most m1 (|V_s| e + e^2/2) when
+ * V_s moves by e: the linear term alone vanishes at V_s = 0 (a dead
+ * rebound, R_f near 0), where the quadratic one is the whole error. */
+static double ea_err(const struct anvil_params *p, const struct anvil_result *r)
+{
+	return p->m1 * (fabs(r->Vs.val) + 0.5 * r->Vs.err) * r->Vs.err;
+}
+
 /* The contacts of the finer pass; when the passes disagree on how many
  * there are, extrapolation means nothing: the fine values stand, with the
  * whole difference (at least) as their error. */
@@ -505,7 +553,7 @@ static void fill_contacts(struct anvil_result *r, const struct anvil_params *p,
 	r->Vs.val = b->Vs, r->Vs.err = fmax(r->Vs.err, fabs(b->Vs - a->Vs));
 	r->Rf.val = r->Vs.val / p->V0, r->Rf.err = r->Vs.err / p->V0;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
-	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
+	r->Ea.err = ea_err(p, r);
 }
 
 static void fill(struct anvil_result *r, const struct anvil_params *p,
@@ -513,19 +561,21 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 {
 	if (scheme == ANVIL_SCHEME_PAPER) { /* first order: report the step asked for */
 		r->ts.val = a->ts, r->ts.err = fabs(b->ts - a->ts);
-		r->tmax.val = a->tmax, r->tmax.err = fabs(b->tmax - a->tmax);
+		r->tmax.val = a->tmax, r->tmax.err = fabs(b->tmax - a->tmax) + a->tmax_ie;
 		r->Pmax.val = a->Pmax, r->Pmax.err = fabs(b->Pmax - a->Pmax);
 		r->Vs.val = a->Vs, r->Vs.err = fabs(b->Vs - a->Vs);
 	} else {
 		r->ts.val = extrap(a->ts, b->ts, &r->ts.err);
 		r->tmax.val = extrap(a->tmax, b->tmax, &r->tmax.err);
+		/* extrap is 4/3 fine - 1/3 coarse: so are its interpolation errors */
+		r->tmax.err += (4.0 * b->tmax_ie + a->tmax_ie) / 3.0;
 		r->Pmax.val = extrap(a->Pmax, b->Pmax, &r->Pmax.err);
 		r->Vs.val = extrap(a->Vs, b->Vs, &r->Vs.err);
 	}
 	r->Rf.val = r->Vs.val / p->V0;
 	r->Rf.err = r->Vs.err / p->V0;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
-	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
+	r->Ea.err = ea_err(p, r);
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 	fill_contacts(r, p, a, b);

@@ -1,0 +1,163 @@
+/* test_coverage: the error estimates cover the true error (issue 11).
+ * A seeded random sample of scenes spanning the grid (h/r0 log-uniform in
+ * 0.1-100 and the half-space, V0 0.1-100 m/s, impactor mass 1 g-1 kg, the
+ * built-in material pairs) is run with the layer model at draft and at
+ * normal; an output is covered when |draft - normal| is within the sum of
+ * the two estimates (normal is not exact).  Each of t_s, t_max, P_max,
+ * R_f and E_a must be covered in at least 95 % of the scenes both levels
+ * run (scripts/coverage does the same against reference on more scenes).
+ * Scenes the plan prices above COST_MAX at normal are left out (counted).
+ * And a row whose true error misses its level's target must not be
+ * ANVIL_OK: it carries ANVIL_WTOL or fails. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "scene_run.h"
+#include "tap.h"
+
+#define NSCENE 40
+#define SEED 20261123u
+#define NOUT 5
+#define COST_MAX 0.3 /* s, the plan's estimate at normal */
+
+static const char *const mats[] = { "steel", "copper", "aluminium", "titanium", "glass", "pmma",
+				    "tungsten-carbide" };
+#define NMAT (int)(sizeof mats / sizeof mats[0])
+
+/* The sample is fixed by SEED on every platform: a 64-bit LCG (Knuth's
+ * MMIX constants), not rand(). */
+static uint64_t lcg = SEED;
+static double uniform(void)
+{
+	lcg = lcg * 6364136223846793005u + 1442695040888963407u;
+	return (double)(lcg >> 11) * 0x1.0p-53;
+}
+
+static double loguni(double lo, double hi)
+{
+	return lo * exp(uniform() * log(hi / lo));
+}
+
+struct scene_draw {
+	double h_r0, V0, m;
+	int a, b;
+};
+
+static void draw(struct scene_draw *d)
+{
+	d->h_r0 = uniform() < 0.125 ? INFINITY : loguni(0.1, 100);
+	d->V0 = loguni(0.1, 100);
+	d->m = loguni(1e-3, 1);
+	d->a = (int)(uniform() * NMAT) % NMAT;
+	d->b = (int)(uniform() * NMAT) % NMAT;
+}
+
+static int set(struct anvil_scene *sc, const char *key, const char *fmt, double v)
+{
+	char buf[64];
+	struct anvil_err e;
+	snprintf(buf, sizeof buf, fmt, v);
+	int st = anvil_scene_set(sc, key, buf, "test", 0, &e);
+	if (st)
+		diag("%s = %s: %s", key, buf, e.msg);
+	return st;
+}
+
+static int make_scene(struct anvil_scene *sc, const struct scene_draw *d, enum anvil_accuracy acc)
+{
+	struct anvil_err e;
+	anvil_scene_default(sc);
+	sc->accuracy = acc;
+	int st = set(sc, "impact.velocity", "%.6g m/s", d->V0) || set(sc, "impactor.mass", "%.6g kg", d->m);
+	st = st || anvil_scene_set(sc, "impactor.material", mats[d->a], "test", 0, &e) ||
+	     anvil_scene_set(sc, "layer.material", mats[d->b], "test", 0, &e);
+	if (isinf(d->h_r0))
+		st = st || anvil_scene_set(sc, "layer.thickness", "inf", "test", 0, &e);
+	else
+		st = st || set(sc, "layer.thickness", "%.6g r0", d->h_r0);
+	return st;
+}
+
+static const char *const names[NOUT] = { "t_s", "t_max", "P_max", "R_f", "E_a" };
+
+static void vals(const struct anvil_result *r, const struct anvil_val *v[NOUT])
+{
+	v[0] = &r->ts, v[1] = &r->tmax, v[2] = &r->Pmax, v[3] = &r->Rf, v[4] = &r->Ea;
+}
+
+/* The true error of lo against hi past lo's target (the check the solver
+ * makes: P_max and t_s relative, R_f against max(R_f, 0.1)). */
+static int misses(const struct anvil_result *lo, const struct anvil_result *hi, double tgt)
+{
+	return fabs(lo->Pmax.val - hi->Pmax.val) > tgt * hi->Pmax.val ||
+	       fabs(lo->ts.val - hi->ts.val) > tgt * hi->ts.val ||
+	       fabs(lo->Rf.val - hi->Rf.val) > tgt * fmax(fabs(hi->Rf.val), 0.1);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	struct anvil_solver *s = anvil_solver_alloc();
+	anvil_solver_set_cache_dir(s, NULL, NULL); /* in memory: nothing on disk */
+	int covered[NOUT] = { 0 }, n = 0, silent = 0, slow = 0;
+	double worst[NOUT] = { 0 };
+	for (int i = 0; i < NSCENE; i++) {
+		struct scene_draw d;
+		struct anvil_scene sc;
+		struct anvil_result lo, hi;
+		struct anvil_err e;
+		draw(&d);
+		enum anvil_model m = isinf(d.h_r0) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
+		if (make_scene(&sc, &d, ANVIL_ACC_DRAFT))
+			continue;
+		/* long contacts (thin, slow, heavy) cost minutes today (issue 11,
+		 * reach): the plan's predicted cost keeps the test short, and the
+		 * scenes it leaves out are counted */
+		struct anvil_plan pl;
+		make_scene(&sc, &d, ANVIL_ACC_NORMAL);
+		if (!scene_plan(&sc, &pl, &e) && pl.row[m].cost > COST_MAX) {
+			slow++;
+			continue;
+		}
+		int sh = scene_run(s, &sc, m, 0, &hi, &e);
+		make_scene(&sc, &d, ANVIL_ACC_DRAFT);
+		int sl = scene_run(s, &sc, m, 0, &lo, &e);
+		if (sl < 0 || sh < 0) { /* refused or failed: not an estimate to check */
+			anvil_result_free(&lo);
+			anvil_result_free(&hi);
+			continue;
+		}
+		n++;
+		const struct anvil_val *a[NOUT], *b[NOUT];
+		vals(&lo, a);
+		vals(&hi, b);
+		for (int k = 0; k < NOUT; k++) {
+			double err = fabs(a[k]->val - b[k]->val), est = a[k]->err + b[k]->err;
+			double ratio = est > 0 ? err / est : (err > 0 ? INFINITY : 0);
+			covered[k] += err <= est;
+			if (ratio > 1)
+				diag("h %.4g r0, V0 %.4g m/s, m %.4g kg, %s on %s: %s error %.3e, estimate %.3e",
+				     d.h_r0, d.V0, d.m, mats[d.a], mats[d.b], names[k], err, est);
+			worst[k] = fmax(worst[k], ratio);
+		}
+		if (sl == ANVIL_OK && misses(&lo, &hi, anvil_accuracy_target(ANVIL_ACC_DRAFT))) {
+			silent++;
+			diag("h %.4g r0, V0 %.4g m/s: draft missed its target with ANVIL_OK", d.h_r0, d.V0);
+		}
+		anvil_result_free(&lo);
+		anvil_result_free(&hi);
+	}
+	diag("%d scenes left out by their planned cost", slow);
+	ok(n >= NSCENE / 2, "%d of %d scenes run at both levels", n, NSCENE);
+	for (int k = 0; k < NOUT; k++)
+		ok(n > 0 && covered[k] >= 0.95 * n,
+		   "%s: draft's estimate (plus normal's) covers |draft - normal| in %.1f %% of %d scenes (worst ratio %.2f)",
+		   names[k], n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
+	ok(silent == 0, "no draft row that misses its target is ANVIL_OK (%d did)", silent);
+	anvil_solver_free(s);
+	plan(tap_n);
+	return done_testing();
+}
