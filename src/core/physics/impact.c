@@ -12,6 +12,7 @@ struct pass {
 	double dt;
 	size_t n, cap;
 	double *P, *W, *w, *v; /* one block, owned */
+	double *wc;            /* physical contact: the layer correction's deflection */
 	double ts, tmax, Pmax, Vs;
 };
 
@@ -22,6 +23,8 @@ struct ctx {
 	double tau_avail;
 	double *g;      /* convolution weights g_j, j < ng */
 	size_t ng;
+	int physical;   /* the physical contact (opts), with beta */
+	double beta;
 };
 
 static void pass_free(struct pass *s)
@@ -33,12 +36,13 @@ static void pass_free(struct pass *s)
 static int pass_alloc(struct pass *s, size_t cap, double dt)
 {
 	memset(s, 0, sizeof *s);
-	s->P = calloc(4 * cap, sizeof *s->P);
+	s->P = calloc(5 * cap, sizeof *s->P);
 	if (!s->P)
 		return ANVIL_ENOMEM;
 	s->W = s->P + cap;
 	s->w = s->P + 2 * cap;
 	s->v = s->P + 3 * cap;
+	s->wc = s->P + 4 * cap;
 	s->cap = cap;
 	s->dt = dt;
 	return ANVIL_OK;
@@ -244,6 +248,81 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 	return ANVIL_ETOL; /* the contact outlasts the response window */
 }
 
+/* The one positive root of the physical step equation (see pass_physical)
+ *   G(x) = bD x^4 + B x^3 + k0 x^2 - bu x - A,  bD >= 0, B, k0 > 0, A > 0:
+ * G is convex on x > 0 with G(0) = -A < 0, so the root is unique, and
+ * Newton from a point where G >= 0 decreases to it monotonically.  At
+ * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0. */
+static double physical_root(double bD, double B, double k0, double bu, double A)
+{
+	double x = fabs(bu) / k0 + sqrt(A / k0);
+	for (int i = 0; i < 100; i++) {
+		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
+		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
+		double dx = f / df;
+		x -= dx;
+		if (fabs(dx) <= 1e-15 * x)
+			break;
+	}
+	return x * x * x;
+}
+
+/* The physical contact (issue 10; doc/contact-model.md):
+ *   W = alpha_H(P) + w_c - beta Q,
+ * w_c the layer correction of a point load (the ramp given here; zero for
+ * a half-space), -beta Q the half-space's radiation lag with dP/dt reduced
+ * in order to its beta = 0 value Q = (3/2) K alpha^(1/2) (v - dw_c/dt)
+ * (Landau and Lifshitz's treatment of radiation reaction: the unreduced
+ * -beta dP/dt runs away, see contact.h).  The static indentation is
+ * Hertz's alone.  Collocation at t_n as in pass_implicit, dw_c/dt by the
+ * second-order backward difference of w_c; with x = P_n^(1/3),
+ * (3/2) K alpha^(1/2) = 1.5 x / k0, and v_n, w_c(t_n) linear in P_n:
+ *   G(x) = b D x^4 + B x^3 + k0 x^2 - b u0 x - A = 0,  b = 1.5 beta / k0,
+ * u0 and D the parts of v_n - dw_c/dt(t_n) free of and linear in P_n.
+ * Every piece is second order in dt, so the scheme is (tests/test_physical.c
+ * measures it).  The contact ends where A = 0: alpha = 0 takes the lag
+ * with it, and finish_exact's alpha_end is W - w_c there. */
+static int pass_physical(const struct ctx *c, struct pass *s, double beta)
+{
+	const struct anvil_params *p = c->p;
+	double dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1), b = 1.5 * beta / p->k0;
+	double S0 = 0, S1 = 0, impulse = 0;
+	s->v[0] = p->V0;
+	s->n = 1;
+	for (size_t n = 1; n < s->cap; n++) {
+		double tn = (double)n * dt, conv = 0;
+		for (size_t m = 1; m < n; m++)
+			conv += s->P[m] * c->g[n - m];
+		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv;
+		if (A <= 0)
+			return n >= 3 ? finish_exact(c, s, impulse) : (finish(s, p, A, impulse), ANVIL_OK);
+		/* dw_c/dt(t_n) = wd0 + e0 P_n (BDF2; Euler at the first step) */
+		double wd0, e0;
+		if (n >= 2) {
+			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
+			e0 = 1.5 * c->g[0] / dt;
+		} else {
+			wd0 = (conv - s->wc[0]) / dt;
+			e0 = c->g[0] / dt;
+		}
+		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1;
+		double D = 0.5 * dt / p->m1 + e0;
+		double P = physical_root(b * D, B, p->k0, b * (v0 - wd0), A);
+		double x = cbrt(P);
+		s->P[n] = P;
+		s->wc[n] = conv + P * c->g[0];
+		impulse += 0.5 * dt * (s->P[n - 1] + P);
+		s->v[n] = p->V0 - impulse / p->m1;
+		double Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
+		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
+		s->w[n] = s->wc[n] - beta * Q;
+		S0 += P;
+		S1 += P * tn;
+		s->n = n + 1;
+	}
+	return ANVIL_ETOL;
+}
+
 /* The paper's explicit scheme, eqs (42)-(46): the deflection lags one step
  * (w_n from forces up to t_{n-1}) and uses the impulse response w_delta,
  * here the second difference of the ramp response (w_delta(0) from eq 34). */
@@ -289,7 +368,9 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct p
 	if (!st)
 		st = weights(c, dt, cap);
 	if (!st)
-		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s) : pass_implicit(c, s);
+		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
+		     : c->physical		  ? pass_physical(c, s, c->beta)
+						  : pass_implicit(c, s);
 	return st;
 }
 
@@ -367,7 +448,11 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 				     "the contact (over %.3g us) needs more than %zu steps of %.3g us",
 				     tau_avail * p->r0 / p->c2 * 1e6, o->max_steps, dt * 1e6);
 	int st;
-	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail };
+	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail,
+			 .physical = o->physical, .beta = o->beta };
+	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
 	struct pass a = {0}, b = {0};
 	st = run_pass(&c, o->scheme, dt, &a);
 	if (!st)

@@ -33,6 +33,17 @@ struct anvil_impact_opts {
 	size_t max_steps; /* refuse (ANVIL_ETOL) a run needing more steps */
 	size_t nhist;     /* history samples wanted (0: none) */
 	int single;       /* 1: one pass at dt, no extrapolation (to test the order) */
+	/* The physical contact (issue 10, doc/contact-model.md), implicit
+	 * scheme only: W = alpha_H(P) + w_c - beta Q.  The ramp given is then
+	 * the layer correction of a point load alone (w_c; a zero ramp for a
+	 * half-space), not the full response: the static indentation is
+	 * Hertz's, and the half-space's dynamic remainder is the radiation lag
+	 * -beta dP/dt (beta = xi(nu)/(rho c2^3), m s/N, transform/radiation.h),
+	 * with dP/dt reduced in order to Q = (3/2) K alpha^(1/2) (v - dw_c/dt),
+	 * which keeps the scheme stable and second order.  The history's w is
+	 * the remainder w_c - beta Q. */
+	int physical;
+	double beta;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
