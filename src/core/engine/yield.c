@@ -13,7 +13,9 @@ int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
 	enum anvil_model m = isinf(pb->p.h) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 	struct anvil_result r;
 	struct anvil_err e2 = {0};
-	int st = anvil_solver_run(s, pl, m, ANVIL_FIELD_NHIST, &r, err);
+	/* the field loads the layer over the paper's patch r0: the paper's
+	 * contact's P(t) (plan.h: the plan always holds that row) */
+	int st = anvil_solver_run_contact(s, pl, m, ANVIL_CONTACT_PAPER, ANVIL_FIELD_NHIST, &r, err);
 	if (st < 0) {
 		anvil_result_free(&r);
 		return st;

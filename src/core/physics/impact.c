@@ -13,6 +13,7 @@ struct pass {
 	size_t n, cap;
 	double *P, *W, *w, *v; /* one block, owned */
 	double *wc;            /* physical contact: the layer correction's deflection */
+	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
 	double ts, tmax, Pmax, Vs;
 };
 
@@ -25,6 +26,10 @@ struct ctx {
 	size_t ng;
 	int physical;   /* the physical contact (opts), with beta */
 	double beta;
+	anvil_ramp_fn ramp2; /* the correction of the patch of radius a_ref (opts) */
+	void *rctx2;
+	double alpha_ref;
+	double *dg;     /* its weights less g's, when ramp2 is given */
 };
 
 static void pass_free(struct pass *s)
@@ -36,20 +41,21 @@ static void pass_free(struct pass *s)
 static int pass_alloc(struct pass *s, size_t cap, double dt)
 {
 	memset(s, 0, sizeof *s);
-	s->P = calloc(5 * cap, sizeof *s->P);
+	s->P = calloc(6 * cap, sizeof *s->P);
 	if (!s->P)
 		return ANVIL_ENOMEM;
 	s->W = s->P + cap;
 	s->w = s->P + 2 * cap;
 	s->v = s->P + 3 * cap;
 	s->wc = s->P + 4 * cap;
+	s->Q = s->P + 5 * cap;
 	s->cap = cap;
 	s->dt = dt;
 	return ANVIL_OK;
 }
 
 /* Dimensional ramp response Rr(t) (m s/N): the anvil's response to P = t. */
-static int ramp_at(const struct ctx *c, double t, double *val)
+static int ramp_of(const struct ctx *c, anvil_ramp_fn fn, void *ctx, double t, double *val)
 {
 	const struct anvil_params *p = c->p;
 	if (t <= 0) {
@@ -57,9 +63,14 @@ static int ramp_at(const struct ctx *c, double t, double *val)
 		return ANVIL_OK;
 	}
 	double v;
-	int st = c->ramp(c->rctx, t * p->c2 / p->r0, &v);
+	int st = fn(ctx, t * p->c2 / p->r0, &v);
 	*val = v / (p->mu * p->c2);
 	return st;
+}
+
+static int ramp_at(const struct ctx *c, double t, double *val)
+{
+	return ramp_of(c, c->ramp, c->rctx, t, val);
 }
 
 /* Weights of the product integration: the deflection at t_n caused by the
@@ -79,6 +90,15 @@ static int weights(struct ctx *c, double dt, size_t cap)
 	for (size_t j = 0; j < cap && !st; j++)
 		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
 	c->ng = cap;
+	if (c->ramp2 && !st) { /* dg = g2 - g */
+		c->dg = malloc(cap * sizeof *c->dg);
+		if (!c->dg)
+			st = ANVIL_ENOMEM;
+		for (size_t j = 0; j < cap + 1 && !st; j++)
+			st = ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R[j]);
+		for (size_t j = 0; j < cap && !st; j++)
+			c->dg[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt - c->g[j];
+	}
 	free(R);
 	return st;
 }
@@ -166,23 +186,37 @@ struct end_ctx {
 	double *R; /* scratch: R(j dt + d), j = 0 .. n */
 };
 
+/* The deflection at t_k + d of the loads F (hats at t_m, the last one
+ * ending at t_k + d) through the ramp response R at j dt + d. */
+static double end_deflection(const double *F, const double *R, size_t k, double dt, double d)
+{
+	double w = 0;
+	for (size_t m = 1; m < k; m++)
+		w += F[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
+	return w + F[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
+}
+
 static double alpha_end(double d, void *vp)
 {
 	const struct end_ctx *e = vp;
 	const struct anvil_params *p = e->c->p;
 	const double *P = e->s->P, dt = e->s->dt;
 	size_t k = e->n - 1; /* the last node with P > 0 */
-	double t1 = (double)k * dt, tau = t1 + d, mom = 0, w = 0, *R = e->R;
+	double t1 = (double)k * dt, tau = t1 + d, mom = 0, w, *R = e->R;
 	/* every response needed is R at j dt + d: k + 2 evaluations, not 3k */
 	for (size_t j = 0; j <= k + 1; j++)
 		ramp_at(e->c, (double)j * dt + d, &R[j]);
-	for (size_t m = 1; m < k; m++) {
+	for (size_t m = 1; m < k; m++)
 		mom += P[m] * dt * (tau - (double)m * dt);
-		w += P[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
-	}
 	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	w += P[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
+	w = end_deflection(P, R, k, dt, d);
+	if (e->c->dg) { /* the true contact radius: + Q through (R2 - R) */
+		w -= end_deflection(e->s->Q, R, k, dt, d);
+		for (size_t j = 0; j <= k + 1; j++)
+			ramp_of(e->c, e->c->ramp2, e->c->rctx2, (double)j * dt + d, &R[j]);
+		w += end_deflection(e->s->Q, R, k, dt, d);
+	}
 	return p->V0 * tau - mom / p->m1 - w;
 }
 
@@ -290,9 +324,20 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 	s->v[0] = p->V0;
 	s->n = 1;
 	for (size_t n = 1; n < s->cap; n++) {
-		double tn = (double)n * dt, conv = 0;
+		double tn = (double)n * dt, conv = 0, g0 = c->g[0];
 		for (size_t m = 1; m < n; m++)
 			conv += s->P[m] * c->g[n - m];
+		if (c->dg) {
+			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load;
+			 * the current one's (in g0 only, zero before the bottom reflection)
+			 * extrapolated, second order */
+			for (size_t m = 1; m < n; m++)
+				conv += s->Q[m] * c->dg[n - m];
+			double q1 = n >= 2 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
+			double q2 = n >= 3 ? s->Q[n - 2] / s->P[n - 2] : q1;
+			g0 += (2.0 * q1 - q2) * c->dg[0];
+			B = g0 + dt * dt / (6.0 * p->m1);
+		}
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv;
 		if (A <= 0)
 			return n >= 3 ? finish_exact(c, s, impulse) : (finish(s, p, A, impulse), ANVIL_OK);
@@ -300,17 +345,18 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		double wd0, e0;
 		if (n >= 2) {
 			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
-			e0 = 1.5 * c->g[0] / dt;
+			e0 = 1.5 * g0 / dt;
 		} else {
 			wd0 = (conv - s->wc[0]) / dt;
-			e0 = c->g[0] / dt;
+			e0 = g0 / dt;
 		}
 		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1;
 		double D = 0.5 * dt / p->m1 + e0;
 		double P = physical_root(b * D, B, p->k0, b * (v0 - wd0), A);
 		double x = cbrt(P);
 		s->P[n] = P;
-		s->wc[n] = conv + P * c->g[0];
+		s->Q[n] = c->dg ? P * p->k0 * x * x / c->alpha_ref : 0.0;
+		s->wc[n] = conv + P * g0;
 		impulse += 0.5 * dt * (s->P[n - 1] + P);
 		s->v[n] = p->V0 - impulse / p->m1;
 		double Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
@@ -364,7 +410,8 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct p
 		return ANVIL_ETOL;
 	int st = pass_alloc(s, cap, dt);
 	free(c->g);
-	c->g = NULL;
+	free(c->dg);
+	c->g = c->dg = NULL;
 	if (!st)
 		st = weights(c, dt, cap);
 	if (!st)
@@ -449,7 +496,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 				     tau_avail * p->r0 / p->c2 * 1e6, o->max_steps, dt * 1e6);
 	int st;
 	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail,
-			 .physical = o->physical, .beta = o->beta };
+			 .physical = o->physical, .beta = o->beta,
+			 .ramp2 = o->physical && o->alpha_ref > 0 ? o->ramp2 : NULL,
+			 .rctx2 = o->ramp2_ctx, .alpha_ref = o->alpha_ref };
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
@@ -474,6 +523,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		anvil_err_set(err, st, "impact: %s", anvil_strerror(st));
 	}
 	free(c.g);
+	free(c.dg);
 	pass_free(&a);
 	pass_free(&b);
 	return st;

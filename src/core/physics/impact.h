@@ -44,6 +44,16 @@ struct anvil_impact_opts {
 	 * the remainder w_c - beta Q. */
 	int physical;
 	double beta;
+	/* The true contact radius (physical only; alpha_ref = 0: a point load).
+	 * ramp2 is the correction for a Hertz patch of radius a_ref, alpha_ref
+	 * = a_ref^2 / R its approach.  The correction is even in the patch
+	 * radius, w(a) = w(0) + a^2 w2 + O(a^4), and the load applied at t' has
+	 * the radius a(t'), a^2 = R alpha_H(t'): so each past load acts through
+	 * ramp + (alpha_H(t')/alpha_ref) (ramp2 - ramp), the true radius to
+	 * O(a^4).  The caller estimates that remainder (solver.c). */
+	anvil_ramp_fn ramp2;
+	void *ramp2_ctx;
+	double alpha_ref;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

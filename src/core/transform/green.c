@@ -26,6 +26,7 @@ typedef double complex cplx;
 struct anvil_green {
 	enum anvil_green_mode mode;
 	double hh, nu, kap2, tau_end;
+	double patch;         /* load radius / r0: 1 the paper's patch, 0 a point */
 	double dtau;          /* output grid step */
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
@@ -55,7 +56,7 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
  * rounding (tests/test_green.c). */
 struct quad {
 	enum anvil_green_mode mode;
-	double kap2, nu, hh;
+	double kap2, nu, hh, patch;
 	cplx s;
 	size_t evals;
 };
@@ -71,7 +72,9 @@ static cplx integrand(double k, void *vq)
 		       anvil_kernel_zhat(k);
 	}
 	anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
-	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k) * k;
+	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
+	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
+	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k * q->patch) * k;
 }
 
 /* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
@@ -281,7 +284,8 @@ static int green_compute(struct anvil_green *g, const struct anvil_green_setting
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
 	cplx *spec = malloc((M + 1) * sizeof *spec);
 	struct heap *heap = malloc(sizeof *heap);
-	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh };
+	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
+			  .patch = g->patch };
 	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	int st = (!g->tau || !spec || !heap) ? ANVIL_ENOMEM : ANVIL_OK;
 	double qerr = 0;
@@ -324,6 +328,21 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 				      anvil_progress_fn progress, void *ctx,
 				      struct anvil_err *err)
 {
+	return anvil_green_alloc_patch(mode, hh, nu, 1.0, tau_end, gs, progress, ctx, err);
+}
+
+struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
+					    double patch, double tau_end,
+					    const struct anvil_green_settings *gs,
+					    anvil_progress_fn progress, void *ctx,
+					    struct anvil_err *err)
+{
+	if (!(patch >= 0 && patch <= 1) || (mode == ANVIL_GREEN_HALFSPACE && patch != 1.0)) {
+		anvil_err_set(err, ANVIL_EINVAL,
+			      "layer response: patch %g r0 (0..1; the half-space mode takes r0 only)",
+			      patch);
+		return NULL;
+	}
 	if (!(nu > -1 && nu < 0.5) || !(tau_end > 0) || !isfinite(tau_end) ||
 	    (mode == ANVIL_GREEN_LAYER_CORRECTION && !(hh > 0 && isfinite(hh)))) {
 		anvil_err_set(err, ANVIL_EINVAL, "layer response: bad parameters (h/r0 = %g, nu = %g, window %g)",
@@ -337,6 +356,7 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 	}
 	g->mode = mode;
 	g->hh = hh;
+	g->patch = patch;
 	g->nu = nu;
 	g->kap2 = anvil_kappa2(nu);
 	g->tau_end = tau_end;
@@ -466,7 +486,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 		anvil_err_set(err, ANVIL_ENOMEM, "layer response: out of memory");
 		return NULL;
 	}
-	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu,
+	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu, .patch = 1.0,
 				   .kap2 = anvil_kappa2(s->nu), .tau_end = s->tau_end,
 				   .dtau = s->dtau, .n = s->n, .tau = block, .ramp = block + s->n,
 				   .abserr = s->abserr };
