@@ -6,16 +6,24 @@
  *  - the scheme is second order (single passes at dt, dt/2, dt/4);
  *  - Hunter's loss for a sphere of the block's material (nu = 0.3):
  *    the exponent 3/5 over V0 = 0.1..30 m/s and the coefficient C(nu);
- *  - energy balance: kinetic energy lost = work of P on the remainder. */
+ *  - energy balance: kinetic energy lost = work of P on the remainder
+ *    (half-space and layer);
+ *  - thin plate, long contact: the layer row converges to Zener's ODE;
+ *  - [effects] contact: the scene key, the plan's rows, the solver's. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "contact.h"
+#include "green.h"
 #include "hertz.h"
 #include "impact.h"
 #include "paper.h"
+#include "plan.h"
 #include "radiation.h"
+#include "solver.h"
 #include "tap.h"
+#include "zener.h"
 
 static int zero_ramp(void *ctx, double tau, double *val)
 {
@@ -190,13 +198,174 @@ static void test_energy(void)
 	anvil_result_free(&r);
 }
 
+static int gramp(void *ctx, double tau, double *v) { return anvil_green_ramp(ctx, tau, v); }
+
+/* The physical layer row of the default scene at thickness hh r0 with the
+ * mass times mf and V0 times vf, through anvil_impact_run: the point
+ * load's correction (and, with true_a, the a_max patch's), the plan's
+ * bandwidth.  Fills z with Zener's run of the same scene. */
+static int thin_run(double hh, double mf, double vf, int true_a, size_t nhist,
+		    struct anvil_params *p, struct anvil_result *r, struct anvil_result *z)
+{
+	struct anvil_scene sc;
+	struct anvil_problem pb;
+	struct anvil_plan pl;
+	struct anvil_err e = { 0 };
+	anvil_scene_default(&sc);
+	sc.thickness = hh;
+	sc.mass *= mf;
+	sc.velocity *= vf;
+	if (anvil_problem_init(&pb, &sc, &e) || anvil_plan_make(&pb, NULL, &pl, &e))
+		return diag("%s", e.msg), -1;
+	*p = pb.p;
+	anvil_result_init(z, ANVIL_MODEL_ZENER);
+	anvil_zener_run(p, 0, z, NULL);
+	double tau_end = 1.4 * z->ts.val * p->c2 / p->r0 + 2, a = pl.fig[ANVIL_FIG_A_HERTZ];
+	struct anvil_green_settings gs;
+	anvil_green_settings(ANVIL_ACC_NORMAL, &gs);
+	gs.omega_max = pl.row[ANVIL_MODEL_LAYER].job.omega;
+	struct anvil_green *g = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, p->nu, 0.0,
+							tau_end, &gs, NULL, NULL, &e);
+	struct anvil_green *g2 = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, p->nu,
+							 a / p->r0, tau_end, &gs, NULL, NULL, &e);
+	struct anvil_impact_opts o = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = z->ts.val / 800,
+				       .max_steps = 100000, .nhist = nhist, .physical = 1,
+				       .beta = beta_of(p) };
+	if (true_a) {
+		o.ramp2 = gramp;
+		o.ramp2_ctx = g2;
+		o.alpha_ref = a * a / p->r0;
+	}
+	anvil_result_init(r, ANVIL_MODEL_LAYER);
+	int st = g && g2 ? anvil_impact_run(p, gramp, g, tau_end, &o, r, &e) : -1;
+	if (st)
+		diag("thin_run: %s", e.msg);
+	anvil_green_free(g);
+	anvil_green_free(g2);
+	return st;
+}
+
+/* Zener's model is Hertz plus the Kirchhoff plate's point response.  Along
+ * h/r0 = 1, 1/2, 1/4, 1/8 with m ~ h^2 and V0 ~ h^4, lambda* (hence
+ * Zener's solution in units of T) stays 0.634 while the contact radius
+ * falls against h (a/h ~ h) and the contact lengthens against the
+ * transit time (c2 t_s / h ~ 1/h): the layer's gap to Zener must shrink.
+ * What remains at each h: shear and rotary inertia (Kirchhoff's error,
+ * relative (h / bending wavelength)^2 ~ h / (c2 t_s)), the contact's finite
+ * size (a/h)^2, the half-space's radiation lag (f ~ V0^(3/5)). */
+static void test_thin_plate(void)
+{
+	double gP[4], gT[4], gR[4];
+	int good = 1;
+	for (int i = 0; i < 4; i++) {
+		double hh = pow(0.5, i);
+		struct anvil_params p;
+		struct anvil_result r, z;
+		good &= thin_run(hh, hh * hh, pow(hh, 4), 1, 0, &p, &r, &z) == ANVIL_OK;
+		gP[i] = fabs(r.Pmax.val / z.Pmax.val - 1);
+		gT[i] = fabs(r.ts.val / z.ts.val - 1);
+		gR[i] = fabs(r.Rf.val - z.Rf.val);
+		diag("h/r0 = %-6g lambda* %.4f a/h %.4f c2 t_s/h %4.0f: gap to Zener P_max %.3f %%, "
+		     "t_s %.3f %%, R_f %.5f (Zener's R_f %.4f)", hh, p.lambda_star,
+		     sqrt(p.r0 * anvil_hertz_alpha_max() * p.T * p.V0) / p.h, z.ts.val * p.c2 / p.h,
+		     100 * gP[i], 100 * gT[i], gR[i], z.Rf.val);
+	}
+	ok(good, "thin plates, h/r0 = 1 .. 1/8 at lambda* = 0.634: run");
+	ok(gP[1] > gP[2] && gP[2] > gP[3] && gT[1] > gT[2] && gT[2] > gT[3] && gR[0] > gR[1] &&
+	   gR[1] > gR[2] && gR[2] > gR[3], "the gaps to Zener's ODE shrink as h falls");
+	ok(gP[3] < 3e-3 && gT[3] < 3e-3 && gR[3] < 2e-3,
+	   "h = r0/8: within 0.3 %% of Zener's P_max and t_s, R_f within 0.002");
+}
+
+/* Kinetic energy lost = the work of P on the layer's remainder, on a layer
+ * (the bending energy left in the plate and the waves). */
+static void test_energy_layer(void)
+{
+	struct anvil_params p;
+	struct anvil_result r, z;
+	thin_run(1.0, 1.0, 1.0, 1, 20001, &p, &r, &z);
+	double work = 0;
+	for (size_t i = 1; i < r.hist.n; i++)
+		work += 0.5 * (r.hist.P[i] + r.hist.P[i - 1]) * (r.hist.w[i] - r.hist.w[i - 1]);
+	diag("layer h = r0: lost %.8g J, work on the remainder %.8g J (%.2g relative)", r.Ea.val,
+	     work, fabs(work / r.Ea.val - 1));
+	is_rel(work, r.Ea.val, 2e-3, "layer: kinetic energy lost = energy into the layer");
+	anvil_result_free(&r);
+}
+
+/* [effects] contact through a scene, the plan and the solver. */
+static void test_contact_key(void)
+{
+	struct anvil_scene sc;
+	struct anvil_problem pb;
+	struct anvil_plan pl;
+	struct anvil_err e = { 0 };
+	anvil_scene_default(&sc);
+	anvil_problem_init(&pb, &sc, &e);
+	ok(sc.effects.contact == ANVIL_CONTACT_AUTO && pb.effects.contact == ANVIL_CONTACT_BOTH,
+	   "default scene: contact auto, resolved to both (the paper's case)");
+	ok(anvil_scene_set(&sc, "layer.thickness", "2 r0", "test", 0, &e) == ANVIL_OK &&
+	   anvil_problem_init(&pb, &sc, &e) == ANVIL_OK && pb.effects.contact == ANVIL_CONTACT_PHYSICAL,
+	   "another scene: auto is the physical contact");
+	ok(anvil_scene_set(&sc, "effects.contact", "sometimes", "test", 0, &e) < 0 &&
+	   strstr(e.msg, "effects.contact") && sc.effects.contact == ANVIL_CONTACT_AUTO,
+	   "a bad contact is refused, naming the key, the scene unchanged: %s", e.msg);
+	ok(anvil_scene_set(&sc, "effects.contact", "both", "test", 0, &e) == ANVIL_OK &&
+	   sc.effects.contact == ANVIL_CONTACT_BOTH, "contact = both is read");
+	anvil_problem_init(&pb, &sc, &e);
+	anvil_plan_make(&pb, NULL, &pl, &e);
+	ok(pl.row[ANVIL_MODEL_LAYER].contact == ANVIL_CONTACT_PHYSICAL &&
+	   pl.paper[ANVIL_MODEL_LAYER].contact == ANVIL_CONTACT_PAPER && pl.paper[ANVIL_MODEL_LAYER].run &&
+	   pl.paper[ANVIL_MODEL_HALFSPACE].run && !pl.paper[ANVIL_MODEL_ZENER].run &&
+	   anvil_plan_row_of(&pl, ANVIL_MODEL_LAYER, ANVIL_CONTACT_PAPER) == &pl.paper[ANVIL_MODEL_LAYER],
+	   "both: physical rows, and the paper's beside them");
+	pb.effects.contact = ANVIL_CONTACT_PAPER;
+	anvil_plan_make(&pb, NULL, &pl, &e);
+	ok(pl.row[ANVIL_MODEL_LAYER].contact == ANVIL_CONTACT_PAPER && !pl.paper[ANVIL_MODEL_LAYER].run &&
+	   anvil_plan_row_of(&pl, ANVIL_MODEL_LAYER, ANVIL_CONTACT_PHYSICAL) == NULL,
+	   "paper: the paper's rows alone");
+	pb.effects.contact = ANVIL_CONTACT_PHYSICAL;
+	pb.scheme = ANVIL_SCHEME_PAPER;
+	anvil_plan_make(&pb, NULL, &pl, &e);
+	ok(pl.contact == ANVIL_CONTACT_PAPER, "solver.scheme = paper: the paper's model, its contact");
+
+	/* the solver's half-space row against contact.c's ODE */
+	struct anvil_solver *s = anvil_solver_alloc();
+	struct anvil_result r, c;
+	struct anvil_contact_opts co = { 1e-11, 0 };
+	anvil_solver_set_cache_dir(s, NULL, NULL);
+	anvil_scene_default(&sc);
+	anvil_problem_init(&pb, &sc, &e);
+	anvil_plan_make(&pb, NULL, &pl, &e);
+	int st = anvil_solver_run(s, &pl, ANVIL_MODEL_HALFSPACE, 0, &r, &e);
+	anvil_result_init(&c, ANVIL_MODEL_HALFSPACE);
+	anvil_contact_run(&pb.p, beta_of(&pb.p), &co, &c, NULL, NULL);
+	ok(st == ANVIL_OK && r.contact == ANVIL_CONTACT_PHYSICAL &&
+	   fabs(r.Pmax.val - c.Pmax.val) <= r.Pmax.err + c.Pmax.err &&
+	   fabs(r.Rf.val - c.Rf.val) <= r.Rf.err + c.Rf.err && fabs(r.ts.val - c.ts.val) <= r.ts.err + c.ts.err,
+	   "solver: the physical half-space row agrees with contact.c's ODE within its estimates "
+	   "(P_max %.7g +- %.2g against %.7g)", r.Pmax.val, r.Pmax.err, c.Pmax.val);
+	st = anvil_solver_run_contact(s, &pl, ANVIL_MODEL_LAYER, ANVIL_CONTACT_PAPER, 0, &r, &e);
+	ok(st == ANVIL_OK && r.contact == ANVIL_CONTACT_PAPER && fabs(r.Pmax.val - 6739) < 1,
+	   "solver: the paper's layer row beside it (P_max %.1f N)", r.Pmax.val);
+	st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &r, &e);
+	diag("the default scene's physical layer: P_max %.2f +- %.2g N, t_s %.4f +- %.2g us, R_f %.5f +- %.2g",
+	     r.Pmax.val, r.Pmax.err, r.ts.val * 1e6, r.ts.err * 1e6, r.Rf.val, r.Rf.err);
+	ok(st == ANVIL_OK && r.contact == ANVIL_CONTACT_PHYSICAL && r.Pmax.err < 1e-3 * r.Pmax.val,
+	   "solver: the physical layer row meets 'normal' (%s)", e.msg);
+	anvil_solver_free(s);
+}
+
 int main(void)
 {
-	plan(18);
+	plan(32);
 	test_rigid();
 	test_against_ode();
 	test_order();
 	test_hunter();
 	test_energy();
+	test_thin_plate();
+	test_energy_layer();
+	test_contact_key();
 	return done_testing();
 }

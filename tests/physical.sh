@@ -1,0 +1,56 @@
+#!/bin/sh
+# physical.sh: [effects] contact from the command line (issue 10): the
+# default scene shows the paper's and the physical rows side by side, each
+# saying which it is, in every format; other scenes the physical ones; the
+# key refused when wrong.
+# shellcheck disable=SC2016
+. "$top_srcdir/tests/setup.sh"
+
+export ANVIL_NO_CACHE=1
+M='-mlayer,halfspace'
+
+check 'run: the default scene' "$ANVIL" run -q $M
+assert '  the paper'"'"'s layer row, named' grep -q '^layer (paper)  *1 ' "$tmp/out"
+assert '  the physical layer row' grep -q '^layer  *1 ' "$tmp/out"
+assert '  the paper'"'"'s half-space row, named' grep -q '^halfspace (paper)  *inf ' "$tmp/out"
+assert '  the notes name the rows' grep -q '^layer: physical contact' "$tmp/out"
+
+check 'run -f tsv' "$ANVIL" run -q $M -f tsv
+assert '  the contact column' awk -F '\t' 'NR == 1 { exit $NF != "contact" }' "$tmp/out"
+assert '  paper, physical, paper, physical' \
+	[ "$(awk -F '\t' 'NR > 1 { printf "%s:%s ", $1, $NF }' "$tmp/out")" = 'layer:paper layer:physical halfspace:paper halfspace:physical ' ]
+assert '  the physical half-space loses less than Hertz, more than the paper'"'"'s patch' \
+	awk -F '\t' '$1 == "halfspace" { r[$NF] = $8 } END { exit !(r["physical"] < r["paper"] && r["physical"] < 1) }' "$tmp/out"
+
+check 'run -f json' "$ANVIL" run -q $M -f json
+if command -v python3 >/dev/null 2>&1; then
+	assert '  each result has its contact' python3 -c 'import json, sys
+d = json.load(open(sys.argv[1]))
+c = [(r["model"], r["contact"]) for r in d["results"]]
+sys.exit(c != [("layer", "paper"), ("layer", "physical"), ("halfspace", "paper"), ("halfspace", "physical")])' "$tmp/out"
+else
+	skip '  each result has its contact' 'no python3'
+fi
+
+check 'run -f csv -m hertz' "$ANVIL" run -q -m hertz -f csv
+assert '  hertz has no contact model of its own: -' awk -F , 'NR == 2 { exit $NF != "-" }' "$tmp/out"
+
+check 'another scene: the physical rows only' "$ANVIL" run -q $M -s layer.thickness=2r0 -f tsv
+assert '  no paper row' [ "$(awk -F '\t' 'NR > 1 { printf "%s ", $NF }' "$tmp/out")" = 'physical physical ' ]
+check 'contact = paper: the paper'"'"'s rows only' "$ANVIL" run -q $M -s effects.contact=paper -f tsv
+assert '  no physical row' [ "$(awk -F '\t' 'NR > 1 { printf "%s ", $NF }' "$tmp/out")" = 'paper paper ' ]
+
+check 'plan prints the contact' "$ANVIL" plan
+assert '  the setting' grep -q '^  contact: both (effects.contact)$' "$tmp/out"
+assert '  the paper'"'"'s row' grep -q '^  layer (paper)  *layer ' "$tmp/out"
+check 'plan -f tsv' "$ANVIL" plan -f tsv
+assert '  the rows'"'"' contact' \
+	[ "$(awk -F '\t' '$1 == "row" { printf "%s:%s ", $2, $NF }' "$tmp/out")" = 'hertz:- zener:- layer:paper layer:physical halfspace:paper halfspace:physical ' ]
+
+check_exit 2 'a bad contact exits 2' "$ANVIL" run -s effects.contact=sometimes
+assert '  naming the key and the choices' grep -q 'effects.contact: expected auto, physical, paper or both' "$tmp/err"
+printf '[effects]\ncontact = fancy\n' >"$tmp/bad.scene"
+check_exit 2 'in a scene file' "$ANVIL" run "$tmp/bad.scene"
+assert '  naming file, line and key' grep -q 'bad.scene:2: effects.contact' "$tmp/err"
+
+done_testing
