@@ -53,4 +53,13 @@ printf '[effects]\ncontact = fancy\n' >"$tmp/bad.scene"
 check_exit 2 'in a scene file' "$ANVIL" run "$tmp/bad.scene"
 assert '  naming file, line and key' grep -q 'bad.scene:2: effects.contact' "$tmp/err"
 
+# ---- anvil plot models (the script: no gnuplot needed) ----
+check 'plot models --script' "$ANVIL" plot models --script "$tmp/m.gp"
+assert '  two panels side by side' grep -q '^# panel 2: R_f against h/r0$' "$tmp/m.gp"
+assert '  four force histories and two R_f curves' [ "$(grep -c '^\$d[0-9]* << EOD$' "$tmp/m.gp")" -eq 6 ]
+assert '  the physical solid, the paper'"'"'s dashed, in the key' \
+	sh -c "grep -q \"title 'physical contact'\" '$tmp/m.gp' && grep -q \"title 'paper''s contact'\" '$tmp/m.gp'"
+assert '  R_f of both at the six thicknesses' \
+	awk '/^\$d5 << EOD$/ { b = 1; next } /^\$d6 << EOD$/ { b = 2; next } /^EOD$/ { b = 0 } b { n[b]++ } END { exit !(n[1] == 6 && n[2] == 6) }' "$tmp/m.gp"
+
 done_testing
