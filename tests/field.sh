@@ -29,7 +29,7 @@ assert 'field: 201 samples per point' [ "$(rows "$tmp/two.tsv")" -eq 402 ]
 assert 'field: every row has 18 fields' \
 	awk -F '\t' '!/^#/ && NF != 18 { bad = 1 } END { exit bad }' "$tmp/two.tsv"
 assert 'field: the points are r, z in mm' \
-	awk -F '\t' '!/^#/ && NR > 4 && !(($1 == 0 && $2 == 2) || ($1 == 2 && $2 == 4)) { bad = 1 } END { exit bad }' "$tmp/two.tsv"
+	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ && !(($1 == 0 && $2 == 2) || ($1 == 2 && $2 == 4)) { bad = 1 } END { exit bad }' "$tmp/two.tsv"
 assert 'field: time from 0 to the contact time, P = 0 at both ends' \
 	awk -F '\t' '!/^#/ && $1 == 0 && $3 == 0 { a = ($4 == 0) } END { exit !a }' "$tmp/two.tsv"
 assert 'field: the yield check is reported' grep -q '^# yield check: peak von Mises .* MPa .* at r = .* t = .* us' "$tmp/two.tsv"
@@ -40,7 +40,7 @@ assert '--quantity selects the columns' \
 	[ "$(columns "$tmp/out")" = "$(printf 'r_mm\tz_mm\tt_us\tP_kN\tw_um\tw_err_um\tvm_MPa\tvm_err_MPa')" ]
 assert '--no-yield says so' grep -q '^# yield check: not done' "$tmp/out"
 assert 'w grows into the layer: positive at the peak force' \
-	awk -F '\t' '!/^#/ && NR > 5 && $5 > 0 { pos = 1 } END { exit !pos }' "$tmp/out"
+	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ && $5 > 0 { pos = 1 } END { exit !pos }' "$tmp/out"
 
 check 'field on a half-space' "$ANVIL" field $D -q -s layer.thickness=inf --at 0,10mm --quantity szz
 assert 'half-space: h = inf in the description' grep -q '^# halfspace, h = inf, r0 = 4 mm' "$tmp/out"
@@ -79,20 +79,20 @@ assert 'map: columns r_mm z_mm vm_MPa vm_err_MPa' \
 	[ "$(columns "$tmp/map.tsv")" = "$(printf 'r_mm\tz_mm\tvm_MPa\tvm_err_MPa')" ]
 assert 'map: 20 x 10 rows' [ "$(rows "$tmp/map.tsv")" -eq 200 ]
 assert 'map: r from 0 to 3 r0, z from 0 to h' \
-	awk -F '\t' '!/^#/ && NR > 5 { r = $1 > r ? $1 : r; z = $2 > z ? $2 : z } END { exit !(r == 12 && z == 4) }' "$tmp/map.tsv"
+	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ { r = $1 > r ? $1 : r; z = $2 > z ? $2 : z } END { exit !(r == 12 && z == 4) }' "$tmp/map.tsv"
 assert 'map: at the peak force by default' grep -q '^# anvil map: von Mises stress at t = 17.2' "$tmp/map.tsv"
 assert 'map: the yield check' grep -q '^# yield check: peak von Mises' "$tmp/map.tsv"
-assert 'map: von Mises >= 0 everywhere' awk -F '\t' '!/^#/ && NR > 5 && $3 < 0 { bad = 1 } END { exit bad }' "$tmp/map.tsv"
+assert 'map: von Mises >= 0 everywhere' awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ && $3 < 0 { bad = 1 } END { exit bad }' "$tmp/map.tsv"
 
 check 'map of sigma_zz at ts on a half-space' "$ANVIL" map $D -q -s layer.thickness=inf --time ts \
 	--quantity szz --rmax 2r0 --depth 8mm --grid 5x5
 assert 'half-space map: depth 8 mm, radius 8 mm' \
-	awk -F '\t' '!/^#/ && NR > 5 { r = $1 > r ? $1 : r; z = $2 > z ? $2 : z } END { exit !(r == 8 && z == 8) }' "$tmp/out"
+	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ { r = $1 > r ? $1 : r; z = $2 > z ? $2 : z } END { exit !(r == 8 && z == 8) }' "$tmp/out"
 
 printf '[layer]\nyield = 150 MPa\n' >"$tmp/soft.scene"
 check 'a soft layer' "$ANVIL" map $D -q --grid 4x4 "$tmp/soft.scene"
-assert 'yield exceeded: in the output' grep -q 'EXCEEDED' "$tmp/out"
-assert 'yield exceeded: a warning on stderr' grep -q '^anvil: warning: the von Mises stress reaches .* above the layer' "$tmp/err"
+assert 'yield exceeded: the verdict in the output' grep -q '^# verdict: the steel layer yields: .* Y = 150 MPa' "$tmp/out"
+assert 'yield exceeded: the verdict on stderr' grep -q '^anvil: the steel layer yields: peak von Mises .* Y = 150 MPa' "$tmp/err"
 
 check_exit 2 'map: bad --time' "$ANVIL" map $D --time soon
 check_exit 2 'map: --time past 4 contacts' "$ANVIL" map $D --time 1ms

@@ -29,15 +29,17 @@ assert '  naming file, line and key' grep -q 'bad.scene:2: effects.plate' "$tmp/
 
 # ---- the table ----
 check 'plan of the default scene' "$ANVIL" plan
-for s in '^estimates$' '^models (effects.waves = auto)$' '^warnings$' '^estimated cost: ~'; do
+for s in '^estimates$' '^models (effects.waves = auto)$' '^verdict$' '^estimated cost: ~'; do
 	assert "  has '$s'" grep -q "$s" "$tmp/out"
 done
 assert '  the layer row: the layer model, with its reason' \
 	grep -q '^  layer  *layer .*exact' "$tmp/out"
 assert '  reflections return during the contact' grep -q 'reflections return during the contact and change' "$tmp/out"
 assert '  its figures' grep -q '2h/c1 = 1.335 us, bending = ' "$tmp/out"
-assert '  the yield warning names copper' grep -q 'yields.*(copper)' "$tmp/out"
-assert '  p_m against 1.1 Y' grep -q 'p_m = 6735 MPa, 1.1 Y = 62.7 MPa' "$tmp/out"
+assert '  the verdict: the steel layer yields' grep -q '^  the steel layer yields: peak von Mises 6.26 GPa' "$tmp/out"
+assert '  and, on its own line, the copper impactor' \
+	grep -q '^  the copper impactor yields under the same contact: peak von Mises .* Y = 57 MPa' "$tmp/out"
+assert '  no other yield text (the old 1.1 Y warning)' sh -c "! grep -q '1.1 Y\|softer' '$tmp/out'"
 
 check 'plan of planner-thick.scene' "$ANVIL" plan "$ex/planner-thick.scene" -s effects.contact=paper
 assert '  layer row by the half-space, exact' grep -q '^  layer (paper)  *halfspace  exact' "$tmp/out"
@@ -73,6 +75,7 @@ check 'plan, h = 0.05 r0' "$ANVIL" plan -f tsv -s layer.thickness=0.05r0
 assert '  the layer solver will refuse' has_warning refuse
 check 'plan, strong bodies' "$ANVIL" plan -f tsv -s impactor.yield=100GPa -s layer.yield=100GPa
 assert '  no yield warning' sh -c "! grep -q '^warning	yield' '$tmp/out'"
+assert '  the verdict records: both elastic' sh -c "grep -q '^verdict	layer	steel	elastic' '$tmp/out' && grep -q '^verdict	impactor	copper	elastic' '$tmp/out'"
 
 # ---- run: the plan with -v, the note of a cheaper model ----
 check 'run -v' "$ANVIL" run -v -m hertz

@@ -5,7 +5,12 @@
  *    cuts the error about four times) and the paper's explicit lagged
  *    scheme (42)-(46) first order (about two times);
  *  - the Richardson error estimate covers the actual error;
- *  - the paper's scheme converges to the implicit result. */
+ *  - the paper's scheme converges to the implicit result;
+ *  - repeated contacts on an anvil that strikes back: a mass on a spring
+ *    (its ramp response in closed form), which the impactor sets moving and
+ *    which returns to catch it: R_f in [0, 1], P >= 0, the contacts ordered,
+ *    and the energy balance m1 (V0^2 - V_s^2)/2 = int P dw;
+ *  - the fast convolution against the direct sum (to rounding). */
 #include <math.h>
 #include <stdio.h>
 
@@ -111,12 +116,98 @@ static void test_order(struct anvil_halfspace *hs)
 	anvil_result_free(&f);
 }
 
+/* A surface that is a mass M on a spring k (the anvil as one oscillator):
+ * M w'' + k w = P, so the ramp response is (t - sin(om t)/om)/k, om^2 = k/M;
+ * dimensionless as anvil_ramp_fn wants: mu c2 times it at t = tau r0/c2. */
+struct sdof {
+	const struct anvil_params *p;
+	double k, om;
+};
+
+static int sdof_ramp(void *ctx, double tau, double *val)
+{
+	const struct sdof *o = ctx;
+	double t = tau * o->p->r0 / o->p->c2;
+	*val = o->p->mu * o->p->c2 * (t - sin(o->om * t) / o->om) / o->k;
+	return ANVIL_OK;
+}
+
+static void test_repeated(void)
+{
+	struct anvil_params p;
+	paper_params(&p, INFINITY, 10);
+	/* a light mass (m1/5) on a soft spring (period 20 T): the
+	 * impactor sets it moving away faster than itself; it comes back */
+	double M = p.m1 / 5, om = M_PI / (10 * p.T);
+	struct sdof o = { &p, M * om * om, om };
+	struct anvil_impact_opts io = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = p.T / 400,
+					.max_steps = 10000000, .nhist = 40001 };
+	struct anvil_result r;
+	struct anvil_err e;
+	anvil_result_init(&r, ANVIL_MODEL_LAYER);
+	double tau_avail = 200 * p.T * p.c2 / p.r0;
+	int st = anvil_impact_run(&p, sdof_ramp, &o, tau_avail, &io, &r, &e);
+	if (!ok(st == ANVIL_OK, "spring-mounted mass: runs (%s)", st ? e.msg : "ok"))
+		return;
+	int order = 1;
+	size_t nc = r.ncontacts < ANVIL_MAX_CONTACTS ? r.ncontacts : ANVIL_MAX_CONTACTS;
+	for (size_t i = 0; i < nc; i++)
+		order &= r.contact_on[i] < r.contact_off[i] &&
+			 (i + 1 == nc || r.contact_off[i] < r.contact_on[i + 1]);
+	ok(r.ncontacts >= 2 && order && r.contact_on[0] == 0 && r.contact_off[nc - 1] == r.ts.val,
+	   "%zu contacts, ordered, the last ending at t_s = %.4g T (first %.4g-%.4g T, second %.4g-%.4g T)",
+	   r.ncontacts, r.ts.val / p.T, r.contact_on[0] / p.T, r.contact_off[0] / p.T,
+	   r.contact_on[1] / p.T, r.contact_off[1] / p.T);
+	ok(r.Rf.val >= 0 && r.Rf.val <= 1 && r.Ea.val >= 0, "R_f = %.6f in [0, 1], E_a = %.4g J >= 0",
+	   r.Rf.val, r.Ea.val);
+	const struct anvil_history *h = &r.hist;
+	double pmin = 0, work = 0;
+	int zero_between = 0;
+	for (size_t i = 0; i < h->n; i++) {
+		pmin = fmin(pmin, h->P[i]);
+		if (i + 1 < h->n)
+			work += 0.5 * (h->P[i] + h->P[i + 1]) * (h->w[i + 1] - h->w[i]);
+		if (nc >= 2 && h->t[i] > r.contact_off[0] + 0.01 * p.T &&
+		    h->t[i] < r.contact_on[1] - 0.01 * p.T)
+			zero_between |= h->P[i] != 0;
+	}
+	ok(pmin >= 0 && !zero_between, "P >= 0 everywhere, P = 0 between the contacts");
+	/* second order at dt = T/400 plus the trapezoid on 40001 samples: 1e-4 */
+	double lost = 0.5 * p.m1 * (p.V0 * p.V0 - r.Vs.val * r.Vs.val), ke = 0.5 * p.m1 * p.V0 * p.V0;
+	ok(fabs(lost - work) < 1e-4 * ke,
+	   "energy balance: kinetic energy lost %.6g J = int P dw %.6g J (to %.1e of m1 V0^2/2)",
+	   lost, work, fabs(lost - work) / ke);
+	anvil_result_free(&r);
+}
+
+/* The fast convolution changes the implicit scheme's sums only by
+ * rounding: the same run with the squares summed directly. */
+static void test_fast_vs_direct(struct anvil_halfspace *hs)
+{
+	struct anvil_params p;
+	paper_params(&p, INFINITY, 10);
+	double dt = anvil_hertz_tau_s() * p.T / 3000, tau_avail = 2.0 * anvil_hertz_tau_s() * p.T * p.c2 / p.r0;
+	struct anvil_impact_opts o = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = dt, .max_steps = 1000000 };
+	struct anvil_result a, b;
+	anvil_result_init(&a, ANVIL_MODEL_HALFSPACE);
+	anvil_result_init(&b, ANVIL_MODEL_HALFSPACE);
+	int st = anvil_impact_run(&p, halfspace, hs, tau_avail, &o, &a, NULL);
+	o.direct_max = (size_t)-1;
+	st = st ? st : anvil_impact_run(&p, halfspace, hs, tau_avail, &o, &b, NULL);
+	double d = fmax(fabs(a.Pmax.val / b.Pmax.val - 1), fmax(fabs(a.ts.val / b.ts.val - 1), fabs(a.Rf.val - b.Rf.val)));
+	ok(!st && d < 1e-11, "fast and direct convolution agree to %.1e (P_max, t_s relative; R_f)", d);
+	anvil_result_free(&a);
+	anvil_result_free(&b);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
 	struct anvil_halfspace *hs = anvil_halfspace_alloc(0.3, 1e-12, NULL);
 	test_rigid();
 	test_order(hs);
+	test_repeated();
+	test_fast_vs_direct(hs);
 	anvil_halfspace_free(hs);
 	plan(tap_n);
 	return done_testing();

@@ -34,7 +34,7 @@ static double rayleigh_residual(const struct anvil_material *m)
 static struct anvil_material make(const char *name, double E, double nu, double rho,
 				  double yield)
 {
-	struct anvil_material m = {"", E, nu, rho, yield, NULL};
+	struct anvil_material m = {"", E, nu, rho, yield, NULL, 0, 0};
 	snprintf(m.name, sizeof m.name, "%s", name);
 	return m;
 }

@@ -203,8 +203,9 @@ static int gramp(void *ctx, double tau, double *v) { return anvil_green_ramp(ctx
 /* The physical layer row of the default scene at thickness hh r0 with the
  * mass times mf and V0 times vf, through anvil_impact_run: the point
  * load's correction (and, with true_a, the a_max patch's), the plan's
- * bandwidth.  Fills z with Zener's run of the same scene. */
-static int thin_run(double hh, double mf, double vf, int true_a, size_t nhist,
+ * bandwidth; direct_max as impact.h's.  Fills z with Zener's run of the
+ * same scene. */
+static int thin_run(double hh, double mf, double vf, int true_a, size_t nhist, size_t direct_max,
 		    struct anvil_params *p, struct anvil_result *r, struct anvil_result *z)
 {
 	struct anvil_scene sc;
@@ -230,7 +231,7 @@ static int thin_run(double hh, double mf, double vf, int true_a, size_t nhist,
 							 a / p->r0, tau_end, &gs, NULL, NULL, &e);
 	struct anvil_impact_opts o = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = z->ts.val / 800,
 				       .max_steps = 100000, .nhist = nhist, .physical = 1,
-				       .beta = beta_of(p) };
+				       .beta = beta_of(p), .direct_max = direct_max };
 	if (true_a) {
 		o.ramp2 = gramp;
 		o.ramp2_ctx = g2;
@@ -261,7 +262,7 @@ static void test_thin_plate(void)
 		double hh = pow(0.5, i);
 		struct anvil_params p;
 		struct anvil_result r, z;
-		good &= thin_run(hh, hh * hh, pow(hh, 4), 1, 0, &p, &r, &z) == ANVIL_OK;
+		good &= thin_run(hh, hh * hh, pow(hh, 4), 1, 0, 0, &p, &r, &z) == ANVIL_OK;
 		gP[i] = fabs(r.Pmax.val / z.Pmax.val - 1);
 		gT[i] = fabs(r.ts.val / z.ts.val - 1);
 		gR[i] = fabs(r.Rf.val - z.Rf.val);
@@ -283,7 +284,7 @@ static void test_energy_layer(void)
 {
 	struct anvil_params p;
 	struct anvil_result r, z;
-	thin_run(1.0, 1.0, 1.0, 1, 20001, &p, &r, &z);
+	thin_run(1.0, 1.0, 1.0, 1, 20001, 0, &p, &r, &z);
 	double work = 0;
 	for (size_t i = 1; i < r.hist.n; i++)
 		work += 0.5 * (r.hist.P[i] + r.hist.P[i - 1]) * (r.hist.w[i] - r.hist.w[i - 1]);
@@ -291,6 +292,31 @@ static void test_energy_layer(void)
 	     work, fabs(work / r.Ea.val - 1));
 	is_rel(work, r.Ea.val, 2e-3, "layer: kinetic energy lost = energy into the layer");
 	anvil_result_free(&r);
+}
+
+/* The physical pass on the online fast convolutions (of P against g and of
+ * Q against dg, the true radius) against the whole direct O(N^2) sum, in
+ * a thin layer whose impactor the layer catches again (h = r0/4, as
+ * tests/physical.sh): the same contacts, values to rounding (the FFT
+ * squares' eps log2(2B) sum |x g|: 1e-12 relative is room for it), but
+ * t_s, the end of a grazing second contact: alpha leaves zero there at a
+ * relative speed ~ R_f V0 ~ 1e-5 V0, so a rounding of alpha moves the end
+ * by ~ 1e5 times its relative size: 1e-10 (measured 5e-12). */
+static void test_fast_vs_direct(void)
+{
+	struct anvil_params p;
+	struct anvil_result f, d, z;
+	int sf = thin_run(0.25, 1.0, 1.0, 1, 0, 0, &p, &f, &z);
+	int sd = thin_run(0.25, 1.0, 1.0, 1, 0, (size_t)-1, &p, &d, &z);
+	diag("h = r0/4: %zu contacts, fast - direct: t_s %.2g, P_max %.2g relative, R_f %.2g",
+	     f.ncontacts, f.ts.val / d.ts.val - 1, f.Pmax.val / d.Pmax.val - 1, f.Rf.val - d.Rf.val);
+	ok(sf == ANVIL_OK && sd == ANVIL_OK && f.ncontacts == d.ncontacts,
+	   "physical, fast vs direct convolution: both run, the same contacts (%zu)", f.ncontacts);
+	ok(fabs(f.ts.val / d.ts.val - 1) < 1e-10 && fabs(f.Pmax.val / d.Pmax.val - 1) < 1e-12 &&
+	   fabs(f.Rf.val - d.Rf.val) < 1e-12,
+	   "  P_max and R_f agree to 1e-12, t_s (a grazing end) to 1e-10");
+	anvil_result_free(&f);
+	anvil_result_free(&d);
 }
 
 /* [effects] contact through a scene, the plan and the solver. */
@@ -358,7 +384,7 @@ static void test_contact_key(void)
 
 int main(void)
 {
-	plan(32);
+	plan(34);
 	test_rigid();
 	test_against_ode();
 	test_order();
@@ -366,6 +392,7 @@ int main(void)
 	test_energy();
 	test_thin_plate();
 	test_energy_layer();
+	test_fast_vs_direct();
 	test_contact_key();
 	return done_testing();
 }

@@ -72,7 +72,7 @@ static const char *const examples[] = {
 	"table2-h5r0.scene",     "table2-h10r0.scene",    "table2-halfspace.scene",
 	"table3-h1r0.scene",     "table3-h2r0.scene",     "table3-h5r0.scene",
 	"table3-h10r0.scene",    "table3-halfspace.scene", "custom-material.scene",
-	"ball-on-glass.scene",
+	"ball-on-glass.scene",   "ball-drop.scene",       "drop-weight.scene",
 };
 
 static void test_examples(void)
@@ -329,7 +329,7 @@ static const struct {
 	 "t.scene:2: impactor.velocity: unknown key; did you mean 'impact.velocity'?"},
 	{"[layer]\nradius = 1 mm\n", "t.scene:2: layer.radius: unknown key; did you mean 'impactor.radius'?"},
 	{"[impactor]\nzzzz = 1\n",
-	 "t.scene:2: impactor.zzzz: unknown key (keys of [impactor]: material, mass, radius, E, nu, rho, yield)"},
+	 "t.scene:2: impactor.zzzz: unknown key (keys of [impactor]: material, shape, mass, radius, diameter, length, E, nu, rho, yield, tensile, brittle)"},
 	{"[impactor]\nx = 1\n", "t.scene:2: impactor.x: unknown key (keys of"},
 	{"[layer]\nmaterial = stel\n",
 	 "t.scene:2: layer.material: unknown material 'stel'; did you mean 'steel'?"},
@@ -497,7 +497,7 @@ static void test_set(void)
 		{"scene.title", "caf\xe9", NULL, 0, "command line: scene.title: is not valid UTF-8 text"},
 		{"impactor.material", "bronze", NULL, 0, "'bronze' is not a built-in material"},
 		{"material.brass.foo", "1", NULL, 0,
-		 "command line: material.brass.foo: unknown key (keys of [material]: E, nu, rho, yield)"},
+		 "command line: material.brass.foo: unknown key (keys of [material]: E, nu, rho, yield, tensile, brittle)"},
 		{"material.a.b.c.E", "1 GPa", NULL, 0, "expected a material name"},
 		{"impactor.nu", "0.5", NULL, 0, "command line: impactor.nu: must be within -0.99 .. 0.49999, got '0.5'"},
 		{"solver.dt", "soon", NULL, 0, "command line: solver.dt: expected a time"},

@@ -1,11 +1,14 @@
 /* test_tui_model.c: the TUI's model and canvas, driven without curses. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
 
 #include "material.h"
+#include "plan.h"
+#include "problem.h"
 #include "tap.h"
 #include "scene_run.h"
 #include "tui_model.h"
@@ -323,6 +326,95 @@ static void test_keys(void)
 	ok(has_q, "the help lists the keys");
 }
 
+/* ---- geometry keys and the verdict (issue 10) ---- */
+
+static void test_geometry(void)
+{
+	struct tui_model *m = fresh();
+	ok(!strcmp(text(m, TUI_F_SHAPE), "rod"), "the shape row: rod by default (%s)",
+	   text(m, TUI_F_SHAPE));
+	int act = tui_model_key(m, 'b');
+	ok(act == TUI_ACT_RECOMPUTE && m->sc.shape == ANVIL_SHAPE_BALL &&
+		   !strcmp(text(m, TUI_F_SHAPE), "ball"),
+	   "b: a ball (%s)", text(m, TUI_F_SHAPE));
+	double rho = anvil_material_find("copper")->rho, D = 2 * m->sc.radius;
+	is_rel(m->sc.mass, rho * M_PI * D * D * D / 6, 1e-12,
+	       "  its mass from the density: rho pi D^3 / 6 = %.4g g", m->sc.mass * 1e3);
+	m->sel = TUI_F_SHAPE;
+	ok(tui_model_key(m, 'l') == TUI_ACT_RECOMPUTE && m->sc.shape == ANVIL_SHAPE_ROD,
+	   "Right on the shape row cycles back to rod");
+	tui_model_key(m, 'h');
+	ok(m->sc.shape == ANVIL_SHAPE_BALL, "Left too");
+
+	ok(tui_model_key(m, 'D') == TUI_ACT_REDRAW && m->editing &&
+		   !strcmp(m->edit_key, "impactor.diameter") && !strcmp(m->edit, "8 mm"),
+	   "D opens the diameter with its unit: %s = '%s'", m->edit_key, m->edit);
+	tui_model_key(m, TUI_CTRL('u'));
+	ok(type(m, "10 mm\n") == TUI_ACT_RECOMPUTE && !m->editing, "10 mm is taken");
+	is_rel(m->sc.radius, 5e-3, 1e-15, "  r0 = D/2 = 5 mm");
+	ok(!strcmp(text(m, TUI_F_RADIUS), "5 mm"), "  the radius row follows (%s)",
+	   text(m, TUI_F_RADIUS));
+
+	ok(tui_model_key(m, 'd') == TUI_ACT_REDRAW && m->editing &&
+		   !strcmp(m->edit_key, "impact.drop_height"),
+	   "d opens the drop height ('%s', the velocity's)", m->edit);
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "50");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW && m->editing && m->msg_error,
+	   "  a bare number is refused: %s", m->msg);
+	type(m, " mm");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "  50 mm is taken");
+	is_rel(m->sc.velocity, sqrt(2 * ANVIL_G_STANDARD * 0.05), 1e-12,
+	       "  V0 = sqrt(2 g H) = %.4g m/s", m->sc.velocity);
+	char vtext[64];
+	snprintf(vtext, sizeof vtext, "%.6g m/s", sqrt(2 * ANVIL_G_STANDARD * 0.05));
+	ok(!strcmp(text(m, TUI_F_VELOCITY), vtext), "  the velocity row follows (%s)",
+	   text(m, TUI_F_VELOCITY));
+	m->sel = TUI_F_VELOCITY;
+	tui_model_key(m, 'l');
+	is_rel(m->sc.velocity, 1.0, 1e-15, "a velocity step replaces the drop height (%.4g m/s)",
+	       m->sc.velocity);
+}
+
+/* The plan of m's scene handed to the current generation, as the worker does. */
+static void give_plan(struct tui_model *m)
+{
+	static struct anvil_plan pl;
+	struct anvil_problem pb;
+	struct anvil_err e = {0};
+	tui_model_request(m);
+	int st = anvil_problem_init(&pb, tui_model_scene(m), &e);
+	st = st ? st : anvil_plan_make(&pb, NULL, &pl, &e);
+	if (st)
+		diag("plan: %s", e.msg);
+	tui_model_deliver_plan(m, m->gen, &pl);
+}
+
+static void test_verdict_mark(void)
+{
+	char lay[320], imp[320];
+	struct tui_model *m = fresh();
+	tui_model_request(m);
+	ok(tui_model_verdict(m, lay, imp, sizeof lay) == -1 && !lay[0] && !imp[0],
+	   "no plan yet: no verdict");
+	give_plan(m);
+	ok(tui_model_verdict(m, lay, imp, sizeof lay) == 1 &&
+		   !strncmp(lay, "the steel layer yields: peak von Mises", 38),
+	   "the paper's scene: %s", lay);
+	ok(!strncmp(imp, "the copper impactor yields under the same contact", 49),
+	   "  and the impactor's line: %s", imp);
+	m->sel = TUI_F_VELOCITY;
+	tui_model_key(m, 'l');
+	tui_model_request(m);
+	ok(tui_model_verdict(m, lay, imp, sizeof lay) == -1, "a new run: the old verdict is gone");
+	type(m, ":layer.yield=100 GPa\n");
+	type(m, ":impactor.yield=100 GPa\n");
+	give_plan(m);
+	ok(tui_model_verdict(m, lay, imp, sizeof lay) == 0 &&
+		   !strncmp(lay, "the steel layer stays elastic", 29) && !imp[0],
+	   "strong bodies, updated with the run: %s; no impactor line", lay);
+}
+
 static void test_models_toggle(void)
 {
 	struct tui_model *m = fresh();
@@ -460,7 +552,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(111);
+	plan(131);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
@@ -472,6 +564,8 @@ int main(void)
 	test_accuracy();
 	test_edit();
 	test_keys();
+	test_geometry();
+	test_verdict_mark();
 	test_models_toggle();
 	test_generations();
 	test_effects_key();

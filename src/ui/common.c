@@ -278,7 +278,7 @@ static int out_open_tmp(struct cli_out *o, const struct stat *old)
 	return 0;
 }
 
-int cli_out_open(struct cli_out *o, const char *path)
+int cli_out_open_err(struct cli_out *o, const char *path, struct anvil_err *err)
 {
 	struct stat st;
 	memset(o, 0, sizeof *o);
@@ -288,26 +288,35 @@ int cli_out_open(struct cli_out *o, const char *path)
 	}
 	if (!(o->path = strdup(path)) || !(o->dest = resolve_links(path))) {
 		int nomem = errno == ENOMEM || !o->path;
-		cli_error("%s: %s", path, nomem ? "out of memory" : strerror(errno));
+		int st = anvil_err_set(err, nomem ? ANVIL_ENOMEM : ANVIL_EIO, "%s: %s", path,
+				       nomem ? "out of memory" : strerror(errno));
 		cli_out_abort(o);
-		return nomem ? ANVIL_ENOMEM : ANVIL_EIO;
+		return st;
 	}
 	int exists = stat(o->dest, &st) == 0, bad;
 	if (exists && S_ISDIR(st.st_mode)) {
-		cli_error("%s: is a directory: give a file name", path);
 		cli_out_abort(o);
-		return ANVIL_EIO;
+		return anvil_err_set(err, ANVIL_EIO, "%s: is a directory: give a file name", path);
 	}
 	if (exists && !S_ISREG(st.st_mode))
 		bad = out_open_direct(o);
 	else
 		bad = out_open_tmp(o, exists ? &st : NULL);
 	if (bad) {
-		cli_error("%s: cannot write: %s", path, strerror(errno));
+		int e = errno;
 		cli_out_abort(o);
-		return ANVIL_EIO;
+		return anvil_err_set(err, ANVIL_EIO, "%s: cannot write: %s", path, strerror(e));
 	}
 	return ANVIL_OK;
+}
+
+int cli_out_open(struct cli_out *o, const char *path)
+{
+	struct anvil_err err = {0};
+	int st = cli_out_open_err(o, path, &err);
+	if (st)
+		cli_error("%s", err.msg);
+	return st;
 }
 
 /* Free the names, forget the slot. */
@@ -320,21 +329,25 @@ static void out_clear(struct cli_out *o)
 	memset(o, 0, sizeof *o);
 }
 
-int cli_out_commit(struct cli_out *o)
+int cli_out_commit_err(struct cli_out *o, struct anvil_err *err)
 {
 	if (o->f == stdout) {
 		o->f = NULL;
-		return fflush(stdout) == 0 && !ferror(stdout) ? ANVIL_OK : ANVIL_EIO;
+		if (fflush(stdout) == 0 && !ferror(stdout))
+			return ANVIL_OK;
+		return anvil_err_set(err, ANVIL_EIO, "standard output: write failed: %s",
+				     strerror(errno));
 	}
 	if (!o->f)
-		return ANVIL_EIO;
+		return anvil_err_set(err, ANVIL_EIO, "output not open");
 	int bad = ferror(o->f);
 	bad |= fclose(o->f) != 0;
 	o->f = NULL;
 	if (!bad && o->tmp && rename(o->tmp, o->dest) != 0)
 		bad = 1;
 	if (bad) {
-		cli_error("%s: write failed: %s", o->path, strerror(errno));
+		int e = errno;
+		anvil_err_set(err, ANVIL_EIO, "%s: write failed: %s", o->path, strerror(e));
 		cli_out_abort(o);
 		return ANVIL_EIO;
 	}
@@ -342,6 +355,17 @@ int cli_out_commit(struct cli_out *o)
 	o->tmp = NULL;
 	out_clear(o);
 	return ANVIL_OK;
+}
+
+int cli_out_commit(struct cli_out *o)
+{
+	struct anvil_err err = {0};
+	int to_stdout = o->f == stdout;
+	int st = cli_out_commit_err(o, &err);
+	/* standard output's failure (a closed pipe) stays quiet, as before */
+	if (st && !to_stdout)
+		cli_error("%s", err.msg);
+	return st;
 }
 
 void cli_out_abort(struct cli_out *o)

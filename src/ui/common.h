@@ -82,9 +82,13 @@ struct cli_out {
 /* Open; on failure prints "anvil: PATH: reason" and returns ANVIL_EIO (or
  * ANVIL_ENOMEM). */
 int cli_out_open(struct cli_out *o, const char *path);
+/* The same, never printing: the message goes to err (the TUI's way). */
+int cli_out_open_err(struct cli_out *o, const char *path, struct anvil_err *err);
 /* Flush, close and rename into place; ANVIL_EIO (message printed) on a
  * write error, in which case the temporary file is removed. */
 int cli_out_commit(struct cli_out *o);
+/* The same, never printing: the message goes to err. */
+int cli_out_commit_err(struct cli_out *o, struct anvil_err *err);
 /* Close and remove the temporary file (no-op after commit). */
 void cli_out_abort(struct cli_out *o);
 

@@ -29,7 +29,7 @@
  *           quietly and replaced.
  *
  * The file: a 112-byte header (struct in cache.c: magic "ANVILRSP", format
- * version, byte-order mark, anvil version, the key h/r0, nu, level, omega
+ * version, byte-order mark, anvil version, the mode and twin flag, the key h/r0, nu, level, omega
  * and its grid index, the window's grid index, the window tau_end, the sample step, the error
  * estimate, the sample count and an FNV-1a 64-bit checksum of header and
  * samples), then the ramp samples as native doubles.  A file is only read
@@ -49,7 +49,8 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 2 /* disk format version (2: the window index in the key) */
+#define ANVIL_CACHE_FORMAT 3 /* disk format version (2: the window index in the key;
+				 3: the twin flag) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -62,6 +63,10 @@ struct anvil_cache_key {
 	enum anvil_accuracy acc; /* the inversion settings' level */
 	int omega_idx;           /* bandwidth omega = anvil_cache_grid(omega_idx) */
 	int tau_idx;             /* window tau_end = anvil_cache_grid(tau_idx) */
+	int twin;                /* 1: the coarse twin of the main response at
+				    omega_idx + ANVIL_CACHE_STEPS (green.h's
+				    anvil_green_alloc_twin: the first terms of
+				    that one's spectrum), 0: a response made alone */
 };
 
 /* Where a response came from. */
@@ -136,7 +141,8 @@ struct anvil_cache_header {
 	char magic[8];
 	uint32_t format, bom;
 	char version[16]; /* the anvil version, NUL-padded */
-	uint32_t mode, acc;
+	uint16_t mode, twin; /* twin: 1 for a coarse twin taken from its main's spectrum */
+	uint32_t acc;
 	int32_t omega_idx;
 	int32_t tau_idx;
 	double hh, nu, omega, tau_end, dtau, abserr;

@@ -32,8 +32,9 @@
  * executes a row and never plans; `anvil plan`, `anvil run -v` and the TUI
  * print the same object.
  *
- * It warns when the scene needs what anvil does not model: yielding (the
- * Hertz mean pressure against 1.1 Y of the softer body), a super-seismic
+ * It carries the one yield verdict (verdict.h, quasi-static Hertz: the
+ * layer, and the impactor under the same contact), and warns when the
+ * scene needs what anvil does not model: a super-seismic
  * phase (alpha_A > 0.1), thin-plate theory out of its range (plate on,
  * h/r0 > 1), a scene the layer solver will refuse, a forced half-space
  * that is not exact.
@@ -52,10 +53,13 @@
 #include "params.h"
 #include "problem.h"
 #include "status.h"
+#include "verdict.h"
 
 /* The wave solver refuses a run needing more (it would grind for minutes):
- * very thin layers have contacts thousands of Hertz times long. */
-#define ANVIL_MAX_STEPS 40000
+ * very thin layers have contacts thousands of Hertz times long.  The
+ * convolution is O(N log^2 N) (physics/fastconv.h): 1.7 s at 10^6 steps
+ * (scripts/bench), so the limit is on memory and time, not the sum. */
+#define ANVIL_MAX_STEPS 1000000
 #define ANVIL_MAX_TERMS 20000
 #define ANVIL_MAX_REFINE 2   /* bandwidth doublings when the target is missed */
 #define ANVIL_MAX_ATTEMPTS 6 /* window doublings when the contact outlasts it */
@@ -146,7 +150,6 @@ enum anvil_fig {
 	ANVIL_FIG_P_MAX,     /* Hertz peak force, N */
 	ANVIL_FIG_A_HERTZ,   /* Hertz contact radius sqrt(r0 alpha_max), m */
 	ANVIL_FIG_P_MEAN,    /* mean contact pressure P_max / (pi a^2), Pa */
-	ANVIL_FIG_YIELD,     /* 1.1 Y of the softer body, Pa; 0 when unknown */
 	ANVIL_FIG_STEPS,     /* time steps of a wave run (first window) */
 	ANVIL_FIG_TERMS,     /* Fourier terms of the layer correction */
 	ANVIL_FIG_COUNT
@@ -196,8 +199,6 @@ struct anvil_plan_row {
 };
 
 enum anvil_plan_warn {
-	ANVIL_WARN_YIELD,        /* the Hertz pressure exceeds the yield onset */
-	ANVIL_WARN_YIELD_UNKNOWN,/* no yield stress known: plasticity not checked */
 	ANVIL_WARN_SUPERSEISMIC, /* alpha_A > 0.1 */
 	ANVIL_WARN_PLATE_RANGE,  /* Zener with h/r0 > 1 (or a half-space) */
 	ANVIL_WARN_REFUSE,       /* the layer solver will refuse the scene */
@@ -208,7 +209,6 @@ enum anvil_plan_warn {
 const char *anvil_plan_warn_text(enum anvil_plan_warn w);
 
 #define ANVIL_PLAN_MAXWARN ANVIL_WARN_COUNT
-#define ANVIL_PLAN_YIELD_ONSET 1.1 /* p_m = 1.1 Y at first yield (Johnson 1985, sec. 6.2) */
 #define ANVIL_PLAN_ALPHA_A_MAX 0.1 /* alpha_A above this is not small (paper, sec. 4) */
 
 struct anvil_plan_warning {
@@ -230,7 +230,7 @@ struct anvil_plan {
 	struct anvil_plan_row paper[ANVIL_MODEL_COUNT];
 	int nwarn;
 	struct anvil_plan_warning warn[ANVIL_PLAN_MAXWARN];
-	char softer[ANVIL_NAME_MAX]; /* the body that yields first ("" if unknown) */
+	struct anvil_verdict verdict; /* layer and impactor, quasi-static Hertz (verdict.h) */
 	enum anvil_waves waves;      /* the scene's setting */
 	enum anvil_fieldmode field;  /* the scene's setting */
 	double cost;                 /* estimated seconds for the rows run */
@@ -266,6 +266,17 @@ void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t n
 int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b);
 
 /* The pieces, for the solver and for tests. */
+/* The window the layer correction's inversion covers for a response over
+ * [0, tau_end] (a wave run's window, rounded up to the cache grid as the
+ * solver does): tau_end itself, or for a long window the plate's T1
+ * (transform/plate.h), the plate's closed form beyond. */
+double anvil_plan_inversion_window(double hh, double tau_end);
+/* The layer-kernel evaluations the planner predicts for one layer
+ * correction (green.h, with its twin) of thickness hh, Poisson ratio nu,
+ * bandwidth omega and window tau_end at level acc: the count the cost
+ * model prices (tests/test_work.c holds it to the real count within 2x). */
+double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
+			     enum anvil_accuracy acc);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);

@@ -85,15 +85,19 @@ static double wall_seconds(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The responses a run holds (cache.h: never evicted until given back). */
+/* The responses a run holds (cache.h: never evicted until given back):
+ * the half-space and, per window tried (ANVIL_MAX_ATTEMPTS) and bandwidth
+ * (refine_max + 1), a response and its twin. */
+#define HELD_MAX (1 + 2 * ANVIL_MAX_ATTEMPTS * (ANVIL_MAX_REFINE + 1))
+
 struct held {
-	const void *p[4];
+	const void *p[HELD_MAX];
 	int n;
 };
 
 static const void *held_add(struct held *h, const void *p)
 {
-	if (p && h->n < 4)
+	if (p && h->n < HELD_MAX)
 		h->p[h->n++] = p;
 	return p;
 }
@@ -106,27 +110,47 @@ static void held_release(struct anvil_cache *c, struct held *h)
 }
 
 /* The layer correction of key, made with exactly the key's window and
- * bandwidth when the cache does not have it, held for this run. */
+ * bandwidth when the cache does not have it, held for this run.  A
+ * response is made with its twin (the same spectrum's first terms, half
+ * the bandwidth) and both are kept: the twin of key (idx, twin 1) is that
+ * of the main response at idx + ANVIL_CACHE_STEPS, made again when it is
+ * missing (the main one then kept too, when the cache lacks it). */
 static const struct anvil_green *get_corr(struct anvil_solver *s, const struct anvil_cache_key *key,
 					  struct held *held, struct anvil_err *err)
 {
 	const struct anvil_green *g = anvil_cache_find(s->cache, key, NULL);
 	if (g)
 		return held_add(held, g);
+	struct anvil_cache_key mk = *key, tk = *key;
+	if (key->twin)
+		mk.omega_idx += ANVIL_CACHE_STEPS;
+	mk.twin = 0;
+	tk.omega_idx = mk.omega_idx - ANVIL_CACHE_STEPS;
+	tk.twin = 1;
 	struct anvil_green_settings gs;
 	anvil_green_settings(key->acc, &gs);
-	gs.omega_max = anvil_cache_grid(key->omega_idx);
-	struct anvil_green *ng = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, key->hh, key->nu,
-						   anvil_cache_grid(key->tau_idx), &gs, s->progress,
-						   s->progress_ctx, err);
+	gs.omega_max = anvil_cache_grid(mk.omega_idx);
+	struct anvil_green *tw = NULL;
+	struct anvil_green *ng = anvil_green_alloc_twin(ANVIL_GREEN_LAYER_CORRECTION, key->hh, key->nu,
+							anvil_cache_grid(key->tau_idx), &gs, s->progress,
+							s->progress_ctx, &tw, err);
 	if (!ng)
 		return NULL;
 	s->layer_computed++;
 	s->layer_evals += anvil_green_evals(ng);
-	g = anvil_cache_add(s->cache, key, ng);
+	const struct anvil_green *gm = NULL, *gt = NULL;
+	if (key->twin && anvil_cache_probe(s->cache, &mk) == ANVIL_CACHE_MEMORY)
+		anvil_green_free(ng); /* there already (the same bits) */
+	else
+		gm = held_add(held, anvil_cache_add(s->cache, &mk, ng));
+	if (anvil_cache_probe(s->cache, &tk) == ANVIL_CACHE_MEMORY)
+		anvil_green_free(tw);
+	else
+		gt = held_add(held, anvil_cache_add(s->cache, &tk, tw));
+	g = key->twin ? gt : gm;
 	if (!g)
 		anvil_err_set(err, ANVIL_ENOMEM, "cache: every slot is held");
-	return held_add(held, g);
+	return g;
 }
 
 /* The anvil's ramp response: exact half-space plus the layer correction,
@@ -215,7 +239,7 @@ struct waves {
  * omega (grid index omega_idx).  Every window is checked against the
  * plan's one refusal rule. */
 static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, int omega_idx,
-			struct anvil_result *r, struct anvil_err *err)
+			int twin, struct anvil_result *r, struct anvil_err *err)
 {
 	const struct anvil_params *p = &wv->pb->p;
 	int st = ANVIL_ETOL;
@@ -227,7 +251,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 			return st;
 		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
 			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
-						       anvil_cache_grid_up(tau_end) };
+						       anvil_cache_grid_up(tau_end), twin };
 			wv->rs.corr = get_corr(s, &key, &wv->held, err);
 			if (!wv->rs.corr)
 				return err ? err->status : ANVIL_ENUM;
@@ -259,7 +283,8 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	else if (!(wv.rs.hs = held_add(&wv.held, anvil_cache_halfspace(s->cache, pb->p.nu,
 									 j->hs_tol, err))))
 		return err ? err->status : ANVIL_ENUM;
-	/* The layer correction's error is measured by halving its bandwidth;
+	/* The layer correction's error is measured by halving its bandwidth
+	 * (the twin: the same spectrum's first half, made with the response);
 	 * when that estimate misses the target, the bandwidth doubles (up to
 	 * refine_max times): convergence in it is fast, the estimate
 	 * conservative. */
@@ -267,14 +292,14 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = nhist;
-		st = waves_impact(s, &wv, omega, idx, r, err);
+		st = waves_impact(s, &wv, omega, idx, 0, r, err);
 		*used_corr = wv.rs.corr != NULL;
 		if (st || !wv.rs.corr)
 			break;
 		struct anvil_result coarse;
 		anvil_result_init(&coarse, r->model);
 		wv.io.nhist = 0;
-		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, &coarse, err);
+		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
 		if (!st)
 			add_green_error(r, &coarse);
 		anvil_result_free(&coarse);
@@ -312,6 +337,22 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 		snprintf(r->note, sizeof r->note,
 			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
 			 t_refl, r->ts.val * 1e6);
+}
+
+/* Repeated contacts (impact.h) in the note: how many, and the first few's
+ * times. */
+static void contacts_note(struct anvil_result *r)
+{
+	size_t len = strlen(r->note), nc = r->ncontacts;
+	if (nc < 2)
+		return;
+	len += (size_t)snprintf(r->note + len, len < sizeof r->note ? sizeof r->note - len : 0,
+			       "%s%zu contacts (us):", len ? "; " : "", nc);
+	for (size_t i = 0; i < nc && i < 4 && len < sizeof r->note; i++)
+		len += (size_t)snprintf(r->note + len, sizeof r->note - len, " %.4g-%.4g",
+				       r->contact_on[i] * 1e6, r->contact_off[i] * 1e6);
+	if (nc > 4 && len < sizeof r->note)
+		snprintf(r->note + len, sizeof r->note - len, " ... -%.4g", r->ts.val * 1e6);
 }
 
 /* --- contactB: the physical contact (issue 10; impact.h, doc/contact-model.md) --- */
@@ -482,6 +523,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	else
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");
+	contacts_note(r);
 	return check_target(r, pl->pb.accuracy, err);
 }
 /* --- end contactB --- */
@@ -518,6 +560,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		r->Rf_star = 1.0;
 	}
 	waves_note(r, p, &row, row.method, corr);
+	contacts_note(r);
 	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, pl->pb.accuracy, err);
 }
 

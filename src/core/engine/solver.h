@@ -75,7 +75,9 @@ int anvil_solver_run_contact(struct anvil_solver *s, const struct anvil_plan *pl
 			     enum anvil_model m, enum anvil_contact c, size_t nhist,
 			     struct anvil_result *r, struct anvil_err *err);
 
-/* The yield check as one call (engine/yield.c): run plan pl's layer row
+/* The paper's yield check, over the r0 patch (engine/yield.c; the verdict
+ * on the layer, over the true contact, is anvil_solver_verdict in
+ * verdict.h): run plan pl's layer row
  * (the halfspace row when h = inf) with the histories the field needs,
  * make its field and find where and when the von Mises stress peaks
  * (field.h; pk->yield from the layer's material, the plan's accuracy).

@@ -1,29 +1,72 @@
 /* yield.c: the yield check as one call: the solver's impact, then the
- * field module's peak von Mises stress (field.h).  In the engine because
- * it runs the solver: the field module depends on no engine. */
+ * field module's peak von Mises stress (field.h) or the verdict
+ * (verdict.h).  In the engine because it runs the solver: the field module
+ * depends on no engine. */
 #include <math.h>
 
 #include "field.h"
 #include "solver.h"
+#include "verdict.h"
 
-int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
-		       struct anvil_field_peak *pk, struct anvil_err *err)
+/* The field of plan pl's layer (or half-space) row, the true contact on
+ * or off (the paper's r0 patch). */
+static struct anvil_field *row_field(struct anvil_solver *s, const struct anvil_plan *pl,
+				     int true_contact, int *run_status, struct anvil_err *err)
 {
 	const struct anvil_problem *pb = &pl->pb;
 	enum anvil_model m = isinf(pb->p.h) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 	struct anvil_result r;
-	struct anvil_err e2 = {0};
 	/* the field loads the layer over the paper's patch r0: the paper's
 	 * contact's P(t) (plan.h: the plan always holds that row) */
 	int st = anvil_solver_run_contact(s, pl, m, ANVIL_CONTACT_PAPER, ANVIL_FIELD_NHIST, &r, err);
+	*run_status = st;
 	if (st < 0) {
 		anvil_result_free(&r);
-		return st;
+		return NULL;
 	}
+	struct anvil_err e2 = {0};
 	struct anvil_field *f = anvil_field_from_result(&pb->p, pb->accuracy, &r, &e2);
-	int fs = f ? anvil_field_peak(f, pb->layer.yield, pk, &e2) : e2.status;
-	anvil_field_free(f);
 	anvil_result_free(&r);
+	if (!f) {
+		*run_status = e2.status;
+		if (err)
+			*err = e2;
+		return NULL;
+	}
+	anvil_field_set_contact(f, true_contact);
+	return f;
+}
+
+int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
+		       struct anvil_field_peak *pk, struct anvil_err *err)
+{
+	int st;
+	struct anvil_err e2 = {0};
+	/* the paper's patch: what the field's own tests check (test_field.c);
+	 * the verdict on the layer is anvil_solver_verdict's */
+	struct anvil_field *f = row_field(s, pl, 0, &st, err);
+	if (!f)
+		return st;
+	int fs = anvil_field_peak(f, pl->pb.layer.yield, pk, &e2);
+	anvil_field_free(f);
+	if (fs) {
+		if (err)
+			*err = e2;
+		return fs;
+	}
+	return st;
+}
+
+int anvil_solver_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
+			 struct anvil_verdict *v, struct anvil_err *err)
+{
+	int st;
+	struct anvil_err e2 = {0};
+	struct anvil_field *f = row_field(s, pl, 1, &st, err);
+	if (!f)
+		return st;
+	int fs = anvil_verdict_make(&pl->pb, f, v, &e2);
+	anvil_field_free(f);
 	if (fs) {
 		if (err)
 			*err = e2;

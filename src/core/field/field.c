@@ -45,6 +45,7 @@
 #include "field.h"
 #include "field_kernel.h"
 #include "gk21.h"
+#include "hertz_field.h"
 #include "kernel.h"
 #include "material.h"
 
@@ -154,6 +155,8 @@ struct anvil_field {
 	double dtau, tau_load, load_rel;
 	anvil_progress_fn progress;
 	void *pctx;
+	int true_contact;   /* the static part over a(t), not r0 (field.h) */
+	double R, Estar;    /* tip radius and contact modulus, for a(t) */
 };
 
 static int check_load(const double *P, size_t n, double dt)
@@ -189,6 +192,7 @@ struct anvil_field *anvil_field_alloc(const struct anvil_params *p, const double
 		.kap2 = anvil_kappa2(p->nu), .hh = p->h / p->r0,
 		.cr = p->cR / p->c2, .acc = acc, .P = copy, .nP = n,
 		.dtau = dt * p->c2 / p->r0, .load_rel = isfinite(load_rel) ? fabs(load_rel) : 0.0,
+		.R = p->r0, .Estar = p->Estar,
 	};
 	/* where the load is back to 0 */
 	f->tau_load = (double)(P[n - 1] > 0 ? n : n - 1) * f->dtau;
@@ -224,6 +228,28 @@ void anvil_field_set_progress(struct anvil_field *f, anvil_progress_fn fn, void 
 {
 	f->progress = fn;
 	f->pctx = ctx;
+}
+
+void anvil_field_set_contact(struct anvil_field *f, int true_contact)
+{
+	f->true_contact = true_contact && f->Estar > 0 && isfinite(f->Estar);
+}
+
+double anvil_field_contact_radius(const struct anvil_field *f, double P)
+{
+	if (!f->true_contact)
+		return f->r0;
+	return P > 0 ? cbrt(3.0 * P * f->R / (4.0 * f->Estar)) : 0.0;
+}
+
+double anvil_field_load(const struct anvil_field *f, double t)
+{
+	double x = t * f->c2 / f->r0 / f->dtau;
+	if (!(x >= 0) || x >= (double)f->nP)
+		return 0.0;
+	size_t i = (size_t)x;
+	double a = x - (double)i, next = i + 1 < f->nP ? f->P[i + 1] : 0.0;
+	return (1 - a) * f->P[i] + a * next;
 }
 
 double anvil_field_t_load(const struct anvil_field *f)
@@ -437,6 +463,14 @@ static double combine(const double *c, const double *x)
 	return s;
 }
 
+static void von_mises(struct anvil_fval *o)
+{
+	double zz = o->v[ANVIL_FQ_SZZ], rr = o->v[ANVIL_FQ_SRR], tt = o->v[ANVIL_FQ_STT],
+	       rz = o->v[ANVIL_FQ_SRZ];
+	o->v[ANVIL_FQ_VM] = sqrt(0.5 * ((rr - tt) * (rr - tt) + (tt - zz) * (tt - zz) +
+					(zz - rr) * (zz - rr)) + 3.0 * rz * rz);
+}
+
 static void assemble(const struct anvil_field *f, const struct hsv *x, struct anvil_fval *o)
 {
 	double sd = 1.0 / (f->mu * f->r0), ss = 1.0 / (f->r0 * f->r0);
@@ -449,10 +483,32 @@ static void assemble(const struct anvil_field *f, const struct hsv *x, struct an
 		o->v[q] = sc * v;
 		o->err[q] = sc * e;
 	}
-	double zz = o->v[ANVIL_FQ_SZZ], rr = o->v[ANVIL_FQ_SRR], tt = o->v[ANVIL_FQ_STT],
-	       rz = o->v[ANVIL_FQ_SRZ];
-	o->v[ANVIL_FQ_VM] = sqrt(0.5 * ((rr - tt) * (rr - tt) + (tt - zz) * (tt - zz) +
-					(zz - rr) * (zz - rr)) + 3.0 * rz * rz);
+	von_mises(o);
+}
+
+/* The true contact (field.h): the static stresses of the Hertz contact of
+ * radius a(t) in place of those of the r0 patch, both Huber's closed form
+ * (hertz_field.c; the r0 patch's is what the Hankel sums hold, see
+ * add_static), at (x, y) in units of r0.  The dynamic remainder is the r0
+ * patch's.  Error: the load's, relative (the stresses grow like P^(1/3)). */
+static void true_contact(const struct anvil_field *f, double x, double y, double tau,
+			 struct anvil_fval *o)
+{
+	double P = load_at(f, tau);
+	if (!f->true_contact || !(P > 0))
+		return;
+	double a = anvil_field_contact_radius(f, P), r = x * f->r0, z = y * f->r0;
+	struct anvil_hertz_stress sa, sr;
+	if (anvil_hertz_stress(a, 1.5 * P / (M_PI * a * a), f->nu, r, z, &sa) ||
+	    anvil_hertz_stress(f->r0, 1.5 * P / (M_PI * f->r0 * f->r0), f->nu, r, z, &sr))
+		return;
+	const double d[4] = {sa.zz - sr.zz, sa.rr - sr.rr, sa.tt - sr.tt, sa.rz - sr.rz};
+	const int q[4] = {ANVIL_FQ_SZZ, ANVIL_FQ_SRR, ANVIL_FQ_STT, ANVIL_FQ_SRZ};
+	for (int i = 0; i < 4; i++) {
+		o->v[q[i]] += d[i];
+		o->err[q[i]] += f->load_rel * fabs(d[i]);
+	}
+	von_mises(o);
 }
 
 /* The von Mises error from the stresses': von Mises is sqrt(3/2) |dev sigma|
@@ -744,6 +800,8 @@ static void map_values(const struct mapjob *m, struct anvil_fval *out)
 				}
 				add_static(m->f, m->tau[it], fst, &x);
 				assemble(m->f, &x, &out[(it * nz + iz) * nr + ir]);
+				true_contact(m->f, m->r_lo + m->dr * (double)ir, z, m->tau[it],
+					     &out[(it * nz + iz) * nr + ir]);
 			}
 		}
 	}
@@ -1009,6 +1067,7 @@ static int points_output(const struct ptjob *j, size_t nt, const double *tau,
 			}
 			add_static(j->f, tau[it], fst, &x);
 			assemble(j->f, &x, &out[i * nt + it]);
+			true_contact(j->f, j->r[i], j->z[i], tau[it], &out[i * nt + it]);
 		}
 		error_floor(out + i * nt, nt, 1);
 	}
@@ -1123,6 +1182,31 @@ static int peak_coarse(struct anvil_field *f, struct anvil_field_peak *pk,
 	return peak_pass(f, lv, PEAK_NT, t, &g, pk, cell, err);
 }
 
+/* The true contact's peak lies at 0.48 a (nu = 0.3) below it, a << r0 for
+ * a ball: under the coarse grid.  A pass over the top 2 a_max, a_max/8
+ * apart, at instants around the peak force a quarter of the coarse step
+ * apart (the Hertz field scales with a(t) and p0(t), both flat there). */
+#define CONTACT_NR 17
+#define CONTACT_NZ 17
+#define CONTACT_NT 5
+static int peak_contact(struct anvil_field *f, struct anvil_field_peak *pk,
+			struct peak_cell *cell, struct anvil_err *err)
+{
+	size_t im = 0;
+	for (size_t i = 1; i < f->nP; i++)
+		if (f->P[i] > f->P[im])
+			im = i;
+	double tl = anvil_field_t_load(f), dt = tl / PEAK_NT / 4, t[CONTACT_NT];
+	double tm = (double)im * f->dtau * f->r0 / f->c2, h = anvil_field_h(f);
+	double a = anvil_field_contact_radius(f, f->P[im]);
+	if (!(a > 0))
+		return ANVIL_OK;
+	for (int i = 0; i < CONTACT_NT; i++)
+		t[i] = fmin(tl, fmax(0.5 * dt, tm + (i - CONTACT_NT / 2) * dt));
+	struct anvil_field_grid g = {0, 2 * a, 0, fmin(2 * a, h), CONTACT_NR, CONTACT_NZ};
+	return peak_pass(f, FLEVEL(ANVIL_ACC_DRAFT), CONTACT_NT, t, &g, pk, cell, err);
+}
+
 int anvil_field_peak(struct anvil_field *f, double yield, struct anvil_field_peak *pk,
 		     struct anvil_err *err)
 {
@@ -1133,6 +1217,8 @@ int anvil_field_peak(struct anvil_field *f, double yield, struct anvil_field_pea
 	memset(pk, 0, sizeof *pk);
 	pk->vm = -1;
 	int st = peak_coarse(f, pk, &cell, err);
+	if (!st && f->true_contact)
+		st = peak_contact(f, pk, &cell, err);
 	if (st)
 		return st;
 	around(pk->r, cell.dr, 0, rmax, &g.r_lo, &g.r_hi);

@@ -101,6 +101,24 @@ void anvil_field_free(struct anvil_field *f); /* NULL is a no-op */
 /* Progress and cancel, as anvil_solver_set_progress (fn may be NULL). */
 void anvil_field_set_progress(struct anvil_field *f, anvil_progress_fn fn, void *ctx);
 
+/* The true contact (issue 10): with true_contact on, the stresses near the
+ * contact are those of the Hertz contact of radius
+ *   a(t) = sqrt(R alpha_H(t)) = (3 P(t) R / (4 E*))^(1/3)
+ * (R = r0, the tip's radius, E* the contact modulus of p), in closed form
+ * (hertz_field.h), plus the dynamic remainder: the response to the r0
+ * patch less that patch's static field, which is what the k-integrals
+ * compute anyway.  The static part is exact; what this leaves out is the
+ * patch size's effect on the remainder, which is O((omega r0/c2)^2)
+ * relative to the remainder itself near the contact and nothing at
+ * distances beyond a few r0 (where any patch is a point force); the
+ * displacements keep the r0 patch's static part.  Off (the paper's patch
+ * of radius r0) after anvil_field_alloc. */
+void anvil_field_set_contact(struct anvil_field *f, int true_contact);
+/* The contact radius under load P (N): a as above, r0 when off. */
+double anvil_field_contact_radius(const struct anvil_field *f, double P);
+/* The load (N) at t (s), as the field sees it. */
+double anvil_field_load(const struct anvil_field *f, double t);
+
 /* The end of the load (s): where it is back to 0. */
 double anvil_field_t_load(const struct anvil_field *f);
 /* The layer thickness (m), INFINITY for a half-space. */
@@ -143,7 +161,8 @@ struct anvil_field_peak {
 };
 
 /* Search r in [0, 3 r0], z in [0, h] (half-space: [0, 3 r0]), t in
- * (0, end of the load]: a coarse space-time grid, then a finer one around
+ * (0, end of the load]: a coarse space-time grid (with the true contact,
+ * and one over the top 2 a around the peak force), then a finer one around
  * its maximum.  yield (Pa, 0 = unknown) is copied into pk for the verdict.
  * Statuses as anvil_field_map. */
 int anvil_field_peak(struct anvil_field *f, double yield,

@@ -15,20 +15,29 @@
  * table, c1, c2, lambda and mu, follow from these and are tested).  The rest
  * are typical room-temperature values; yield 0 means none or unknown. */
 static const struct anvil_material table[] = {
-	{"copper", 123e9, 0.34, 8960, 57e6, PAPER},
-	{"steel", 209e9, 0.3, 7830, 1000e6, PAPER},
+	{"copper", 123e9, 0.34, 8960, 57e6, PAPER, 0, 0},
+	{"steel", 209e9, 0.3, 7830, 1000e6, PAPER, 0, 0},
 	{"aluminium", 68.9e9, 0.33, 2700, 276e6,
-	 "ASM Handbook Vol. 2 (1990) / MatWeb: aluminium alloy 6061-T6"},
+	 "ASM Handbook Vol. 2 (1990) / MatWeb: aluminium alloy 6061-T6", 0, 0},
 	{"titanium", 113.8e9, 0.342, 4430, 880e6,
-	 "ASM Aerospace Specification Metals / MatWeb: Ti-6Al-4V (grade 5), annealed"},
+	 "ASM Aerospace Specification Metals / MatWeb: Ti-6Al-4V (grade 5), annealed", 0, 0},
+	/* Brittle: a Hertz contact cracks them at the contact edge, where the
+	 * surface tension (1 - 2 nu) p0 / 3 meets the tensile strength.  Both
+	 * strengths are flaw-controlled bulk values: small contacts crack at
+	 * higher nominal stress (Auerbach's law, Johnson 1985 sec. 4.2), so the
+	 * verdict is on the safe side. */
 	{"tungsten-carbide", 600e9, 0.22, 14950, 0,
 	 "cemented carbide WC-6Co, typical grade datasheet values (ASM Handbook "
-	 "Vol. 2); brittle: yield 0, compressive strength about 5 GPa"},
+	 "Vol. 2); brittle: yield 0, compressive strength about 5 GPa, tensile "
+	 "strength about 1.4 GPa (typical; transverse rupture strength 2-3 GPa)",
+	 1.4e9, 1},
 	{"glass", 72e9, 0.22, 2500, 0,
 	 "soda-lime float glass, typical (MatWeb; Shelby, Introduction to Glass "
-	 "Science and Technology); brittle: yield 0"},
+	 "Science and Technology); brittle: yield 0, tensile strength 45 MPa "
+	 "(characteristic bending strength of annealed float glass, EN 572-1)",
+	 45e6, 1},
 	{"pmma", 3.0e9, 0.37, 1180, 70e6,
-	 "MatWeb: PMMA (acrylic, Plexiglas/Perspex), typical; yield = tensile strength"},
+	 "MatWeb: PMMA (acrylic, Plexiglas/Perspex), typical; yield = tensile strength", 0, 0},
 };
 #define NTABLE ((int)(sizeof table / sizeof table[0]))
 
@@ -182,6 +191,9 @@ int anvil_material_check(const struct anvil_material *m, struct anvil_err *err)
 	if (!(isfinite(m->yield) && m->yield >= 0))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "material '%s': yield = %g Pa is not >= 0", name, m->yield);
+	if (!(isfinite(m->tensile) && m->tensile >= 0))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "material '%s': tensile = %g Pa is not >= 0", name, m->tensile);
 	return ANVIL_OK;
 }
 

@@ -1,6 +1,9 @@
 /* material.h: isotropic elastic materials, built in and derived constants.
  *
- * A material is E, nu, rho (SI) plus an optional yield stress.  The
+ * A material is E, nu, rho (SI) plus an optional yield stress, and for a
+ * brittle one (glass, cemented carbide) a tensile strength: what fails
+ * first under a contact is then a ring crack at the contact's edge, not
+ * yield below it (hertz_field.h, anvil_hertz_judge).  The
  * built-in table holds copper and steel exactly as Table 1 of the paper, and
  * further engineering materials, each with its source. */
 #ifndef ANVIL_MATERIAL_H
@@ -17,6 +20,10 @@ struct anvil_material {
 	double rho;    /* density, kg/m^3 */
 	double yield;  /* yield stress, Pa; 0 when unknown */
 	const char *source; /* where the numbers come from (static string) or NULL */
+	/* After source, so that {name, E, nu, rho, yield, source} initialisers
+	 * still read: a ductile material of unknown tensile strength. */
+	double tensile; /* tensile strength, Pa; 0 when unknown */
+	int brittle;    /* 1: fails in tension (cracks), not by yield */
 };
 
 /* The built-in table: index 0 .. count-1.  at() returns NULL out of range. */
@@ -51,7 +58,7 @@ int anvil_rayleigh_x(double k2, double *x, struct anvil_err *err);
 int anvil_material_from_speeds(struct anvil_material *m, double c1, double c2,
 			       double rho, struct anvil_err *err);
 
-/* E > 0, rho > 0, -1 < nu < 0.5, yield >= 0; else ANVIL_EINVAL naming the
+/* E > 0, rho > 0, -1 < nu < 0.5, yield >= 0, tensile >= 0; else ANVIL_EINVAL naming the
  * material and the field. */
 int anvil_material_check(const struct anvil_material *m, struct anvil_err *err);
 

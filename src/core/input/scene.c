@@ -252,8 +252,55 @@ static int parse_line(struct parser *p, char *s, struct anvil_err *err)
 	return parse_assignment(p, s, err);
 }
 
+/* The line label was set on in this text, 0 if it was not. */
+static int seen_line(const struct parser *p, const char *label)
+{
+	for (int i = 0; i < p->nseen; ++i)
+		if (strcasecmp(p->seen[i].label, label) == 0)
+			return p->seen[i].line;
+	return 0;
+}
+
+/* Keys of one text that say the same thing twice (scene.h), named at the
+ * later one. */
+static int parse_conflicts(struct parser *p, struct anvil_err *err)
+{
+	static const struct {
+		const char *a, *b, *why;
+	} pairs[] = {
+		{"impact.velocity", "impact.drop_height", "give one of velocity and drop_height"},
+		{"impactor.mass", "impactor.length",
+		 "give the mass or the length (the mass then follows from rho), not both"},
+	};
+	const struct anvil_scene *sc = p->sc;
+	for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; ++i) {
+		int la = seen_line(p, pairs[i].a), lb = seen_line(p, pairs[i].b);
+		if (la && lb) {
+			p->line = la > lb ? la : lb;
+			return perr(p, err, la > lb ? pairs[i].a : pairs[i].b,
+				    "%s is set too (line %d): %s", la > lb ? pairs[i].b : pairs[i].a,
+				    la > lb ? lb : la, pairs[i].why);
+		}
+	}
+	int lr = seen_line(p, "impactor.radius"), ld = seen_line(p, "impactor.diameter");
+	if (lr && ld && !(fabs(sc->diameter - 2.0 * sc->radius) <= 1e-12 * sc->diameter)) {
+		p->line = ld;
+		return perr(p, err, "impactor.diameter",
+			    "%g m is not twice radius = %g m (line %d): give one of them",
+			    sc->diameter, sc->radius, lr);
+	}
+	int ll = seen_line(p, "impactor.length");
+	if (ll && sc->shape == ANVIL_SHAPE_BALL) {
+		p->line = ll;
+		return perr(p, err, "impactor.length",
+			    "a ball has no length (shape = ball): give its diameter");
+	}
+	return ANVIL_OK;
+}
+
 /* What could not be checked line by line: materials used before their
- * [material NAME] section, and whether each defined material is complete. */
+ * [material NAME] section, whether each defined material is complete, the
+ * geometry keys together. */
 static int parse_finish(struct parser *p, struct anvil_err *err)
 {
 	struct anvil_scene *sc = p->sc;
@@ -274,7 +321,13 @@ static int parse_finish(struct parser *p, struct anvil_err *err)
 			return located(err, ANVIL_EPARSE, p->origin, line, labels[b][line > 0],
 				       in.msg);
 	}
-	return ANVIL_OK;
+	if (seen_line(p, "impactor.mass"))
+		sc->mass_given = 1; /* whatever came after it in the text */
+	int st = parse_conflicts(p, err);
+	if (!st && anvil_scene_geometry(sc, &in))
+		st = located(err, ANVIL_EPARSE, p->origin, seen_line(p, "impactor.length"), NULL,
+			     in.msg);
+	return st;
 }
 
 /* Lines end in LF, CRLF or a lone CR (old Mac files: otherwise the whole
@@ -421,7 +474,8 @@ int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 		const char *last = strrchr(field, '.');
 		if (!last)
 			return located(err, ANVIL_EPARSE, origin, line, key,
-				       "expected material.NAME.KEY (KEY: E, nu, rho or yield)");
+				       "expected material.NAME.KEY (KEY: E, nu, rho, yield, tensile "
+				       "or brittle)");
 		snprintf(name, sizeof name, "%.*s", (int)(last - field), field);
 		field = last + 1;
 	}
@@ -431,6 +485,8 @@ int anvil_scene_set(struct anvil_scene *sc, const char *key, const char *value,
 		st = anvil_scene_resolve(&work, &work.impactor, &in);
 	if (!st)
 		st = anvil_scene_resolve(&work, &work.layer, &in);
+	if (!st)
+		st = anvil_scene_geometry(&work, &in);
 	if (st)
 		return located(err, ANVIL_EPARSE, origin, line, key, in.msg);
 	title_update(&work);
@@ -448,7 +504,10 @@ int anvil_scene_default(struct anvil_scene *sc)
 	struct anvil_body *bodies[2] = {&sc->impactor, &sc->layer};
 	memset(sc, 0, sizeof *sc);
 	for (int b = 0; b < 2; ++b)
-		bodies[b]->E = bodies[b]->nu = bodies[b]->rho = bodies[b]->yield = NAN;
+		bodies[b]->E = bodies[b]->nu = bodies[b]->rho = bodies[b]->yield =
+			bodies[b]->tensile = bodies[b]->brittle = NAN;
+	sc->shape = ANVIL_SHAPE_ROD;
+	sc->diameter = sc->length = sc->drop_height = NAN;
 	/* Not in default_text, so that scenes written before [effects] and
 	 * [output] existed read as they did: every effect on, waves chosen by
 	 * the planner (which only drops what the accuracy allows), the table. */
@@ -461,6 +520,7 @@ int anvil_scene_default(struct anvil_scene *sc)
 	int st = anvil_scene_parse(sc, default_text, "default scene", NULL);
 	/* The default's title is the default's only while it is the default. */
 	sc->title_set = 0;
+	sc->mass_given = 0; /* the default's mass, not the user's */
 	memset(sc->key_line, 0, sizeof sc->key_line);
 	return st;
 }
@@ -629,7 +689,8 @@ int anvil_scene_warnings(const struct anvil_scene *sc, struct anvil_scene_warnin
 	if (!isinf(h))
 		warn_add(&l, ANVIL_SEC_LAYER, "thickness", h, ANVIL_DIM_LENGTH, PLAUS_THICKNESS,
 			 "no layer of 1 um .. 100 m");
-	warn_add(&l, ANVIL_SEC_IMPACT, "velocity", sc->velocity, ANVIL_DIM_VELOCITY, 0,
+	warn_add(&l, ANVIL_SEC_IMPACT, isnan(sc->drop_height) ? "velocity" : "drop_height",
+		 sc->velocity, ANVIL_DIM_VELOCITY, 0,
 		 PLAUS_VELOCITY_MAX, "hypervelocity: the elastic model does not hold");
 	return l.n;
 }
@@ -645,7 +706,8 @@ static int same_body(const struct anvil_body *a, const struct anvil_body *b)
 {
 	return strcmp(a->material, b->material) == 0 && same_double(a->E, b->E) &&
 	       same_double(a->nu, b->nu) && same_double(a->rho, b->rho) &&
-	       same_double(a->yield, b->yield);
+	       same_double(a->yield, b->yield) && same_double(a->tensile, b->tensile) &&
+	       same_double(a->brittle, b->brittle);
 }
 
 /* The default scene's physics (what the title describes; solver settings
@@ -654,7 +716,8 @@ static int default_physics(const struct anvil_scene *sc)
 {
 	struct anvil_scene d;
 	anvil_scene_default(&d);
-	return same_body(&sc->impactor, &d.impactor) && same_body(&sc->layer, &d.layer) &&
+	return sc->shape == d.shape && same_body(&sc->impactor, &d.impactor) &&
+	       same_body(&sc->layer, &d.layer) &&
 	       same_double(sc->mass, d.mass) && same_double(sc->radius, d.radius) &&
 	       same_double(sc->thickness, d.thickness) &&
 	       sc->thickness_per_r0 == d.thickness_per_r0 && same_double(sc->velocity, d.velocity);
@@ -678,15 +741,18 @@ void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n)
 		snprintf(buf, n, "%s", d.title);
 		return;
 	}
+	int ball = sc->shape == ANVIL_SHAPE_BALL;
 	anvil_units_format(sc->mass, ANVIL_DIM_MASS, mass, sizeof mass);
-	anvil_units_format(sc->radius, ANVIL_DIM_LENGTH, radius, sizeof radius);
+	anvil_units_format(ball ? 2 * sc->radius : sc->radius, ANVIL_DIM_LENGTH, radius,
+			   sizeof radius);
 	anvil_units_format(sc->velocity, ANVIL_DIM_VELOCITY, v, sizeof v);
+	const char *what = ball ? "ball" : "impactor", *size = ball ? "D" : "r0";
 	if (isinf(anvil_scene_h(sc))) {
-		snprintf(buf, n, "%s %s impactor, r0 = %s, at %s on a %s half-space", mass,
-			 sc->impactor.material, radius, v, sc->layer.material);
+		snprintf(buf, n, "%s %s %s, %s = %s, at %s on a %s half-space", mass,
+			 sc->impactor.material, what, size, radius, v, sc->layer.material);
 		return;
 	}
 	anvil_units_format(anvil_scene_h(sc), ANVIL_DIM_LENGTH, h, sizeof h);
-	snprintf(buf, n, "%s %s impactor, r0 = %s, at %s on a %s %s layer", mass,
-		 sc->impactor.material, radius, v, h, sc->layer.material);
+	snprintf(buf, n, "%s %s %s, %s = %s, at %s on a %s %s layer", mass,
+		 sc->impactor.material, what, size, radius, v, h, sc->layer.material);
 }

@@ -4,10 +4,12 @@
  *
  *   [scene]     title = free text (shown on charts; never executed)
  *   [impactor]  material = copper   mass = 12.2 g   radius = 4 mm
- *               E = ..  nu = ..  rho = ..  yield = ..  (overrides)
+ *               shape = rod|ball   diameter = 8 mm   length = 30 mm
+ *               E = ..  nu = ..  rho = ..  yield = ..  tensile = ..
+ *               brittle = on|off  (overrides)
  *   [layer]     material = steel    thickness = 2 r0 | 8 mm | inf
- *               E, nu, rho, yield (overrides)
- *   [impact]    velocity = 10 m/s
+ *               E, nu, rho, yield, tensile, brittle (overrides)
+ *   [impact]    velocity = 10 m/s | drop_height = 50 mm
  *   [solver]    accuracy = draft|normal|fine|reference
  *               scheme = implicit|paper   dt = 0.16 us | auto
  *               models = hertz,zener,layer,halfspace (any subset)
@@ -15,7 +17,21 @@
  *               quasistatic = on|off   field = off|points|map
  *   [output]    table = on|off   histories = FILE|off   charts = DIR|off
  *               field = FILE|off
- *   [material NAME]  E = ..  nu = ..  rho = ..  yield = ..  (a new material)
+ *   [material NAME]  E = ..  nu = ..  rho = ..  yield = ..  tensile = ..
+ *               brittle = on|off  (a new material)
+ *
+ * The impactor's geometry (anvil_scene_geometry): a rod with a
+ * hemispherical tip of radius r0 = D/2 (shape = rod, the paper's), or a
+ * ball of diameter D = 2 r0; radius and diameter are two spellings of one
+ * length.  The mass is the mass key when given; else a ball's
+ * rho pi D^3 / 6, a rod's rho pi r0^2 (L - r0/3) for its overall length L
+ * (tip included: a cylinder of length L - r0 and a hemisphere); else the
+ * default's.  drop_height H gives V0 = sqrt(2 g H) (standard gravity, no
+ * air drag).  In one scene text, keys that say the same thing twice are
+ * refused: velocity and drop_height, mass and length, a radius and a
+ * diameter that disagree, a ball's length.  A key set later (-s, the TUI,
+ * a text parsed on top) replaces the keys it conflicts with; a shape key
+ * replaces a mass given before, unless its own text gives one.
  *
  * '#' and ';' start comments (at the start of a line or after white space).
  * A value may be written in double quotes, "like # this", to keep '#', ';'
@@ -65,21 +81,39 @@ struct anvil_output {
 
 struct anvil_body {
 	char material[ANVIL_NAME_MAX]; /* the named material */
-	/* Per-body overrides of the named material; NaN when not set. */
-	double E, nu, rho, yield;
+	/* Per-body overrides of the named material; NaN when not set
+	 * (brittle: 0 or 1). */
+	double E, nu, rho, yield, tensile, brittle;
 	/* The named material with the overrides applied.  Kept up to date by
 	 * every function in this module that changes the scene. */
 	struct anvil_material mat;
 };
 
+enum anvil_shape {
+	ANVIL_SHAPE_ROD,  /* a rod with a hemispherical tip (the paper's) */
+	ANVIL_SHAPE_BALL,
+	ANVIL_SHAPE_COUNT
+};
+
+/* Standard gravity, m/s^2 (3rd CGPM, 1901). */
+#define ANVIL_G_STANDARD 9.80665
+
 struct anvil_scene {
 	char title[ANVIL_TITLE_MAX];
 	struct anvil_body impactor, layer;
+	/* mass, radius and velocity are the values in use, kept up to date
+	 * from the geometry (anvil_scene_geometry) by every function here. */
 	double mass;            /* impactor mass, kg */
 	double radius;          /* impactor (contact patch) radius r0, m */
 	double thickness;       /* layer thickness: m, or multiples of r0 */
 	int thickness_per_r0;   /* 1 when thickness is in multiples of r0 */
 	double velocity;        /* impact velocity V0, m/s */
+	/* What the user gave (NaN: not given): see the geometry above. */
+	enum anvil_shape shape;
+	double diameter;        /* m; sets radius = diameter / 2 */
+	double length;          /* m, a rod's overall length, tip included */
+	double drop_height;     /* m; sets velocity = sqrt(2 g H) */
+	int mass_given;         /* 1: the mass key was set (not the default's) */
 	enum anvil_accuracy accuracy;
 	enum anvil_scheme scheme;
 	double dt;              /* time step, s; 0 = chosen from accuracy */
@@ -161,6 +195,24 @@ void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n);
 /* Whether sc has the default scene's physics (bodies, mass, r0, h, V0): the paper's
  * own case, for which [effects] contact = auto shows both contact models. */
 int anvil_scene_is_paper_case(const struct anvil_scene *sc);
+
+/* "rod", "ball"; anvil_shape_parse gives -1 for anything else. */
+const char *anvil_shape_name(enum anvil_shape s);
+int anvil_shape_parse(const char *name);
+
+/* The impactor's mass for its geometry: rho pi D^3 / 6 for a ball of
+ * diameter D; rho pi R^2 (L - R/3) for a rod of radius R and overall
+ * length L >= R with a hemispherical tip (NaN for L < R). */
+double anvil_ball_mass(double rho, double D);
+double anvil_rod_mass(double rho, double R, double L);
+/* The speed after a free fall from height H: sqrt(2 g H). */
+double anvil_drop_velocity(double H);
+
+/* Update sc->radius, sc->mass and sc->velocity from the geometry keys (as
+ * above).  ANVIL_EPARSE naming the key for a rod shorter than its tip
+ * radius.  Parse and set call it; code that edits the struct directly
+ * calls it after. */
+int anvil_scene_geometry(struct anvil_scene *sc, struct anvil_err *err);
 
 /* Layer thickness in metres (INFINITY for a half-space). */
 double anvil_scene_h(const struct anvil_scene *sc);

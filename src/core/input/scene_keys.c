@@ -163,7 +163,8 @@ static int material_unknown(const struct anvil_scene *sc, const char *name,
 		if (strcasecmp(name, lacking[i]) == 0)
 			return anvil_err_set(err, ANVIL_EPARSE,
 					     "'%s' is not a built-in material: define it with "
-					     "[material %s] (E, nu, rho and optionally yield)",
+					     "[material %s] (E, nu, rho and optionally yield, "
+					     "tensile, brittle)",
 					     name, name);
 	anvil_suggest_init(&s, name);
 	for (int i = 0; i < anvil_material_count() + sc->ncustom; ++i) {
@@ -229,13 +230,17 @@ int anvil_scene_resolve(struct anvil_scene *sc, struct anvil_body *b,
 		return material_unknown(sc, b->material, err);
 	}
 	struct anvil_material m = *base;
-	const double over[] = {b->E, b->nu, b->rho, b->yield};
-	double *field[] = {&m.E, &m.nu, &m.rho, &m.yield};
+	const double over[] = {b->E, b->nu, b->rho, b->yield, b->tensile};
+	double *field[] = {&m.E, &m.nu, &m.rho, &m.yield, &m.tensile};
 	for (size_t i = 0; i < sizeof over / sizeof over[0]; ++i) {
 		if (!isnan(over[i])) {
 			*field[i] = over[i];
 			m.source = OVERRIDE_SOURCE;
 		}
+	}
+	if (!isnan(b->brittle)) {
+		m.brittle = b->brittle != 0;
+		m.source = OVERRIDE_SOURCE;
 	}
 	if ((st = anvil_material_check(&m, err)))
 		return st;
@@ -334,65 +339,6 @@ static int text_check(const char *value, struct anvil_err *err)
 	return ANVIL_OK;
 }
 
-/* Text as the parser will read it back: bare when it would survive, else
- * in double quotes with '"' and '\\' escaped (a '#' or ';' starting a
- * comment, white space at an end, a leading quote). */
-static void put_text(char *buf, size_t n, const char *text)
-{
-	size_t len = strlen(text), j = 0;
-	int quote = len > 0 && (isspace((unsigned char)text[0]) ||
-				isspace((unsigned char)text[len - 1]) || text[0] == '"');
-	for (size_t i = 0; i < len && !quote; ++i)
-		quote = (text[i] == '#' || text[i] == ';') &&
-			(i == 0 || isspace((unsigned char)text[i - 1]));
-	if (!quote) {
-		snprintf(buf, n, "%s", text);
-		return;
-	}
-	if (n < 3) {
-		buf[0] = '\0';
-		return;
-	}
-	buf[j++] = '"';
-	for (size_t i = 0; i < len && j + 3 < n; ++i) {
-		if (text[i] == '"' || text[i] == '\\')
-			buf[j++] = '\\';
-		buf[j++] = text[i];
-	}
-	buf[j++] = '"';
-	buf[j] = '\0';
-}
-
-int anvil_utf8_valid(const char *s, size_t n)
-{
-	const unsigned char *p = (const unsigned char *)s, *end = p + n;
-	while (p < end) {
-		unsigned c = *p++, more, cp;
-		if (c < 0x80)
-			continue;
-		if (c >= 0xc2 && c <= 0xdf)
-			more = 1, cp = c & 0x1f;
-		else if (c >= 0xe0 && c <= 0xef)
-			more = 2, cp = c & 0x0f;
-		else if (c >= 0xf0 && c <= 0xf4)
-			more = 3, cp = c & 0x07;
-		else
-			return 0;
-		if ((size_t)(end - p) < more)
-			return 0;
-		for (unsigned i = 0; i < more; ++i, ++p) {
-			if ((*p & 0xc0) != 0x80)
-				return 0;
-			cp = cp << 6 | (*p & 0x3f);
-		}
-		/* overlong 3- and 4-byte forms, surrogates, beyond U+10FFFF */
-		if ((more == 2 && cp < 0x800) || (more == 3 && cp < 0x10000) ||
-		    (cp >= 0xd800 && cp <= 0xdfff) || cp > 0x10ffff)
-			return 0;
-	}
-	return 1;
-}
-
 static int set_title(struct anvil_scene *sc, void *base, const struct key *k,
 		     const char *value, int deferred, struct anvil_err *err)
 {
@@ -413,7 +359,7 @@ static int set_title(struct anvil_scene *sc, void *base, const struct key *k,
 static int put_title(const void *base, const struct key *k, char *buf, size_t n)
 {
 	(void)k;
-	put_text(buf, n, ((const struct anvil_scene *)base)->title);
+	anvil_scene_text_put(buf, n, ((const struct anvil_scene *)base)->title);
 	return 1;
 }
 
@@ -792,7 +738,87 @@ static int put_path(const void *base, const struct key *k, char *buf, size_t n)
 	/* a file really called "off" is written so that it reads back as one */
 	snprintf(text, sizeof text, "%s%s", strcasecmp(path, "off") == 0 ? "./" : "",
 		 *path ? path : "off");
-	put_text(buf, n, text);
+	anvil_scene_text_put(buf, n, text);
+	return 1;
+}
+
+/* ---- the impactor's geometry (impactor.c derives from it) ---- */
+
+static int set_shape(struct anvil_scene *sc, void *base, const struct key *k,
+		     const char *value, int deferred, struct anvil_err *err)
+{
+	const char *names[ANVIL_SHAPE_COUNT];
+	int s = anvil_shape_parse(value);
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (s < 0) {
+		for (int i = 0; i < ANVIL_SHAPE_COUNT; ++i)
+			names[i] = anvil_shape_name((enum anvil_shape)i);
+		return choice_error(value, names, ANVIL_SHAPE_COUNT, NULL, err);
+	}
+	sc->shape = (enum anvil_shape)s;
+	return ANVIL_OK;
+}
+
+static int put_shape(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", anvil_shape_name(((const struct anvil_scene *)base)->shape));
+	return 1;
+}
+
+static int set_mass(struct anvil_scene *sc, void *base, const struct key *k,
+		    const char *value, int deferred, struct anvil_err *err)
+{
+	int st = set_quantity(sc, base, k, value, deferred, err);
+	if (!st)
+		sc->mass_given = 1;
+	return st;
+}
+
+/* Mass, radius and velocity are written only where they are not derived
+ * from another key, so that the text reads back without a conflict. */
+static int put_mass(const void *base, const struct key *k, char *buf, size_t n)
+{
+	const struct anvil_scene *sc = base;
+	if (!sc->mass_given && (sc->shape == ANVIL_SHAPE_BALL || !isnan(sc->length)))
+		return 0;
+	return put_quantity(base, k, buf, n);
+}
+
+static int put_radius(const void *base, const struct key *k, char *buf, size_t n)
+{
+	return isnan(((const struct anvil_scene *)base)->diameter) && put_quantity(base, k, buf, n);
+}
+
+static int put_velocity(const void *base, const struct key *k, char *buf, size_t n)
+{
+	return isnan(((const struct anvil_scene *)base)->drop_height) &&
+	       put_quantity(base, k, buf, n);
+}
+
+/* A body's brittle override: a double, NaN when not set. */
+static int set_brittle(struct anvil_scene *sc, void *base, const struct key *k,
+		       const char *value, int deferred, struct anvil_err *err)
+{
+	(void)sc;
+	(void)deferred;
+	for (int i = 0; i < 2; ++i) {
+		if (strcasecmp(value, switch_names[i]) == 0) {
+			*FIELD(base, k) = i;
+			return ANVIL_OK;
+		}
+	}
+	return choice_error(value, switch_names, 2, NULL, err);
+}
+
+static int put_brittle(const void *base, const struct key *k, char *buf, size_t n)
+{
+	double v = *CFIELD(base, k);
+	if (isnan(v))
+		return 0;
+	snprintf(buf, n, "%s", switch_names[v != 0]);
 	return 1;
 }
 
@@ -809,24 +835,39 @@ static int put_path(const void *base, const struct key *k, char *buf, size_t n)
 #define AT(sec, key, field, fn) \
 	{S(sec), key, set_##fn, put_##fn, BASE_SCENE, offsetof(struct anvil_scene, field), \
 	 ANVIL_DIM_NONE, 0, 0}
-/* E, nu, rho, yield: of a body (an override) or of a [material NAME]. */
+/* A double of the scene with its own set_ or put_ function. */
+#define SCENE_QF(sec, key, field, dim, range, setfn, putfn)                          \
+	{S(sec), key, setfn, putfn, BASE_SCENE, offsetof(struct anvil_scene, field), D(dim), \
+	 ANVIL_RANGE_##range}
+/* E, nu, rho, yield, tensile: of a body (an override) or of a [material
+ * NAME]; brittle: the body's override (a double) or the material's int. */
 #define ELASTIC(sec, base, type)                                    \
 	Q(sec, "E", base, type, E, PRESSURE, E),                    \
 	Q(sec, "nu", base, type, nu, NONE, NU),                     \
 	Q(sec, "rho", base, type, rho, DENSITY, RHO),               \
-	Q(sec, "yield", base, type, yield, PRESSURE, YIELD)
+	Q(sec, "yield", base, type, yield, PRESSURE, YIELD),        \
+	Q(sec, "tensile", base, type, tensile, PRESSURE, YIELD)
+#define BODY_BRITTLE(sec)                                                         \
+	{S(sec), "brittle", set_brittle, put_brittle, BASE_BODY,                 \
+	 offsetof(struct anvil_body, brittle), ANVIL_DIM_NONE, 0, 0}
 
 /* In the order anvil_scene_write prints them. */
 static const struct key keys[] = {
 	FN(SCENE, "title", BASE_SCENE, title),
 	FN(IMPACTOR, "material", BASE_BODY, material),
-	SCENE_Q(IMPACTOR, "mass", mass, MASS, MASS),
-	SCENE_Q(IMPACTOR, "radius", radius, LENGTH, LENGTH),
+	FN(IMPACTOR, "shape", BASE_SCENE, shape),
+	SCENE_QF(IMPACTOR, "mass", mass, MASS, MASS, set_mass, put_mass),
+	SCENE_QF(IMPACTOR, "radius", radius, LENGTH, LENGTH, set_quantity, put_radius),
+	SCENE_Q(IMPACTOR, "diameter", diameter, LENGTH, LENGTH),
+	SCENE_Q(IMPACTOR, "length", length, LENGTH, LENGTH),
 	ELASTIC(IMPACTOR, BASE_BODY, struct anvil_body),
+	BODY_BRITTLE(IMPACTOR),
 	FN(LAYER, "material", BASE_BODY, material),
 	FN(LAYER, "thickness", BASE_SCENE, thickness),
 	ELASTIC(LAYER, BASE_BODY, struct anvil_body),
-	SCENE_Q(IMPACT, "velocity", velocity, VELOCITY, VELOCITY),
+	BODY_BRITTLE(LAYER),
+	SCENE_QF(IMPACT, "velocity", velocity, VELOCITY, VELOCITY, set_quantity, put_velocity),
+	SCENE_Q(IMPACT, "drop_height", drop_height, LENGTH, LENGTH),
 	FN(SOLVER, "accuracy", BASE_SCENE, accuracy),
 	FN(SOLVER, "scheme", BASE_SCENE, scheme),
 	FN(SOLVER, "dt", BASE_SCENE, dt),
@@ -841,6 +882,8 @@ static const struct key keys[] = {
 	AT(OUTPUT, "charts", output.charts, path),
 	AT(OUTPUT, "field", output.field, path),
 	ELASTIC(MATERIAL, BASE_MATERIAL, struct anvil_material),
+	{S(MATERIAL), "brittle", set_switch, put_switch, BASE_MATERIAL,
+	 offsetof(struct anvil_material, brittle), ANVIL_DIM_NONE, 0, 0},
 };
 #define NKEYS ((int)(sizeof keys / sizeof keys[0]))
 _Static_assert(NKEYS <= ANVIL_SCENE_KEYS_MAX, "sc->key_line is too short");
@@ -908,25 +951,6 @@ int anvil_scene_key_index(int sec, const char *key)
 	return k ? (int)(k - keys) : -1;
 }
 
-/* value[0..n) without its double quotes and escapes into v (size VALUE_MAX);
- * ANVIL_EPARSE when the closing quote is missing or not last. */
-static int unquote(const char *value, size_t n, char *v, struct anvil_err *err)
-{
-	size_t j = 0, i = 1;
-	for (; i < n && value[i] != '"'; ++i) {
-		if (value[i] == '\\' && i + 1 < n && (value[i + 1] == '"' || value[i + 1] == '\\'))
-			++i;
-		v[j++] = value[i];
-	}
-	v[j] = '\0';
-	if (i >= n)
-		return anvil_err_set(err, ANVIL_EPARSE, "missing the closing '\"'");
-	if (i + 1 < n)
-		return anvil_err_set(err, ANVIL_EPARSE, "unexpected text after the closing '\"': '%.*s'",
-				     (int)(n - i - 1), value + i + 1);
-	return ANVIL_OK;
-}
-
 int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 			const char *key, const char *value, int deferred, int line,
 			struct anvil_err *err)
@@ -946,7 +970,7 @@ int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 		return anvil_err_set(err, ANVIL_EPARSE, "value longer than %d characters",
 				     (int)sizeof v - 1);
 	if (n > 0 && value[0] == '"') {
-		if ((st = unquote(value, n, v, err)))
+		if ((st = anvil_scene_text_unquote(value, n, v, err)))
 			return st;
 	} else {
 		snprintf(v, sizeof v, "%.*s", (int)n, value);
@@ -955,6 +979,7 @@ int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 		return st;
 	if ((st = k->set(sc, key_base(sc, k, m), k, v, deferred, err)))
 		return st;
+	anvil_scene_geometry_replace(sc, sec, k->name);
 	sc->key_line[k - keys] = line;
 	return ANVIL_OK;
 }

@@ -37,6 +37,11 @@ int anvil_scene_section_find(const char *name, struct anvil_err *err);
 int anvil_scene_key_set(struct anvil_scene *sc, int sec, const char *name,
 			const char *key, const char *value, int deferred, int line,
 			struct anvil_err *err);
+/* The geometry keys a key of section sec replaces when it is set
+ * (scene.h): velocity <-> drop_height, radius <-> diameter, mass <->
+ * length, shape = ball drops length.  impactor.c. */
+void anvil_scene_geometry_replace(struct anvil_scene *sc, int sec, const char *key);
+
 /* The key number of SECTION's key (an index of sc->key_line), -1 if none. */
 int anvil_scene_key_index(int sec, const char *key);
 
@@ -55,6 +60,14 @@ int anvil_scene_key_index(int sec, const char *key);
 int anvil_scene_range_check(double v, double lo, double hi, const char *unit,
 			    const char *text, struct anvil_err *err);
 
+/* scene_text.c.  text written so that the parser reads it back: bare when
+ * it would survive, else in double quotes with '"' and '\\' escaped; buf of
+ * at least 2 strlen(text) + 3 bytes holds it all. */
+void anvil_scene_text_put(char *buf, size_t n, const char *text);
+/* value[0..n), which starts with '"', without its quotes and escapes into v
+ * (at least n bytes); ANVIL_EPARSE when the closing quote is missing or
+ * not last. */
+int anvil_scene_text_unquote(const char *value, size_t n, char *v, struct anvil_err *err);
 /* Whether s[0..n) is valid UTF-8 (no overlong forms, surrogates or code
  * points above U+10FFFF). */
 int anvil_utf8_valid(const char *s, size_t n);

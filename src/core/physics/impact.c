@@ -5,7 +5,18 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include "fastconv.h"
 #include "impact.h"
+
+/* Parted for good (see impact.h): the impactor, moving away, is outward of
+ * both the surface and the surface's late position by this fraction of the
+ * largest Hertz compression of the impact. */
+#define IMPACT_PART_MARGIN 0.1
+/* The end of a contact is located by Brent on the exact asymmetric last
+ * hat; the past older than this many steps enters through a cubic in the
+ * end offset d (error O(dt^4) of a smooth sum), so that each Brent
+ * iteration costs O(IMPACT_END_NEAR), not O(n). */
+#define IMPACT_END_NEAR 256
 
 /* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
 struct pass {
@@ -15,6 +26,10 @@ struct pass {
 	double *wc;            /* physical contact: the layer correction's deflection */
 	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
 	double ts, tmax, Pmax, Vs;
+	/* repeated contacts: the count, each one's start and end (s) */
+	size_t ncont;
+	double on[ANVIL_MAX_CONTACTS], off[ANVIL_MAX_CONTACTS];
+	int parted;      /* 1: parted for good by the rule; 2: at the window's end */
 };
 
 struct ctx {
@@ -30,6 +45,8 @@ struct ctx {
 	void *rctx2;
 	double alpha_ref;
 	double *dg;     /* its weights less g's, when ramp2 is given */
+	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
+	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
 };
 
 static void pass_free(struct pass *s)
@@ -176,22 +193,82 @@ static void finish(struct pass *s, const struct anvil_params *p, double a_n, dou
 }
 
 /* The end of contact, consistent with the scheme: P falls linearly from
- * P_{n-1} to 0 at t_s = t_{n-1} + d, so the last hat is asymmetric (left
- * half-width dt, right d).  alpha_H(t_s) = W(t_s) - w(t_s) = 0 is solved for
- * d by Brent's method (GSL), with W and w evaluated exactly for that P. */
+ * P_k (the last node in contact) to 0 at t_k + d, so the last hat is
+ * asymmetric (left half-width dt, right d).  alpha_H(t_k + d) = W - w = 0
+ * is solved for d by Brent's method (GSL), with W and w evaluated for that
+ * P: exactly for the last IMPACT_END_NEAR steps, the older past (a sum
+ * smooth in d away from wavefront arrivals) through the cubic in d through
+ * d = 0, dt/3, 2dt/3, dt (error O(dt^4) where the response is smooth,
+ * O(dt^2) across an arrival: second order either way). */
 struct end_ctx {
 	const struct ctx *c;
 	const struct pass *s;
-	size_t n;  /* steps taken: nodes 0 .. n-1 */
-	double *R; /* scratch: R(j dt + d), j = 0 .. n */
+	size_t k;       /* the last node with P > 0 */
+	size_t m0;      /* nodes m < m0 are the far past */
+	double S0, S1;  /* sum P_m, sum P_m t_m over m < k */
+	double far[4];  /* the far past's deflection at d = i dt/3 */
+	double *R;      /* scratch: R(j dt + d), j = 0 .. k - m0 + 1 */
 };
 
-/* The deflection at t_k + d of the loads F (hats at t_m, the last one
- * ending at t_k + d) through the ramp response R at j dt + d. */
-static double end_deflection(const double *F, const double *R, size_t k, double dt, double d)
+/* sum_{m < m0} F_m times the hat response through fn at t_k + d, off the
+ * grid (0 < d < dt): R at (k - m) dt + d and its neighbours. */
+static double far_of(const struct end_ctx *e, const double *F, anvil_ramp_fn fn, void *fctx,
+		     double d)
 {
+	const double dt = e->s->dt;
+	size_t k = e->k;
+	double w = 0, Rm = 0, R0, Rp;
+	ramp_of(e->c, fn, fctx, (double)(k - e->m0) * dt + d, &R0);
+	ramp_of(e->c, fn, fctx, (double)(k - e->m0 + 1) * dt + d, &Rp);
+	for (size_t m = e->m0 - 1; m >= 1; m--) { /* lag k - m rising */
+		Rm = R0;
+		R0 = Rp;
+		ramp_of(e->c, fn, fctx, (double)(k - m + 1) * dt + d, &Rp);
+		w += F[m] * (Rp - 2.0 * R0 + Rm) / dt;
+	}
+	return w;
+}
+
+/* The far past's deflection at t_k + d (m < m0), exactly; with the true
+ * contact radius (dg), the loads' Q through ramp2 - ramp as well. */
+static double far_exact(const struct end_ctx *e, double d)
+{
+	const struct ctx *c = e->c;
+	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt;
+	size_t k = e->k;
 	double w = 0;
-	for (size_t m = 1; m < k; m++)
+	if (d == 0.0 || d == dt) { /* on the grid: the weights */
+		size_t sh = d == 0.0 ? 0 : 1;
+		for (size_t m = 1; m < e->m0; m++)
+			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
+		return w;
+	}
+	w = far_of(e, P, c->ramp, c->rctx, d);
+	if (c->dg)
+		w += far_of(e, Q, c->ramp2, c->rctx2, d) - far_of(e, Q, c->ramp, c->rctx, d);
+	return w;
+}
+
+static double far_cubic(const struct end_ctx *e, double d)
+{
+	double x = 3.0 * d / e->s->dt, f = 0;
+	for (int i = 0; i < 4; i++) {
+		double l = 1;
+		for (int j = 0; j < 4; j++)
+			if (j != i)
+				l *= (x - j) / (double)(i - j);
+		f += l * e->far[i];
+	}
+	return f;
+}
+
+/* The near past's deflection at t_k + d (loads F, hats at t_m, m0 <= m <= k,
+ * the last one ending at t_k + d) through the ramp response R at j dt + d,
+ * added to w in the order the paper contact's end has always summed it (same bits). */
+static double near_deflection(double w, const double *F, const double *R, size_t k, size_t m0,
+			      double dt, double d)
+{
+	for (size_t m = m0; m < k; m++)
 		w += F[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
 	return w + F[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
 }
@@ -199,39 +276,58 @@ static double end_deflection(const double *F, const double *R, size_t k, double 
 static double alpha_end(double d, void *vp)
 {
 	const struct end_ctx *e = vp;
-	const struct anvil_params *p = e->c->p;
+	const struct ctx *c = e->c;
+	const struct anvil_params *p = c->p;
 	const double *P = e->s->P, dt = e->s->dt;
-	size_t k = e->n - 1; /* the last node with P > 0 */
-	double t1 = (double)k * dt, tau = t1 + d, mom = 0, w, *R = e->R;
-	/* every response needed is R at j dt + d: k + 2 evaluations, not 3k */
-	for (size_t j = 0; j <= k + 1; j++)
-		ramp_at(e->c, (double)j * dt + d, &R[j]);
-	for (size_t m = 1; m < k; m++)
-		mom += P[m] * dt * (tau - (double)m * dt);
+	size_t k = e->k, nr = k - e->m0 + 1;
+	double t1 = (double)k * dt, tau = t1 + d, w = far_cubic(e, d), *R = e->R;
+	double mom = dt * (tau * e->S0 - e->S1);
+	for (size_t j = 0; j <= nr; j++)
+		ramp_at(c, (double)j * dt + d, &R[j]);
+	w = near_deflection(w, P, R, k, e->m0, dt, d);
+	if (c->dg) { /* the true contact radius: + Q through (R2 - R) */
+		w -= near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
+		for (size_t j = 0; j <= nr; j++)
+			ramp_of(c, c->ramp2, c->rctx2, (double)j * dt + d, &R[j]);
+		w += near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
+	}
 	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	w = end_deflection(P, R, k, dt, d);
-	if (e->c->dg) { /* the true contact radius: + Q through (R2 - R) */
-		w -= end_deflection(e->s->Q, R, k, dt, d);
-		for (size_t j = 0; j <= k + 1; j++)
-			ramp_of(e->c, e->c->ramp2, e->c->rctx2, (double)j * dt + d, &R[j]);
-		w += end_deflection(e->s->Q, R, k, dt, d);
-	}
 	return p->V0 * tau - mom / p->m1 - w;
 }
 
-static int finish_exact(const struct ctx *c, struct pass *s, double impulse)
+static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pass *s, size_t k)
 {
-	struct end_ctx e = { c, s, s->n, malloc((s->n + 2) * sizeof(double)) };
+	*e = (struct end_ctx){ .c = c, .s = s, .k = k, .m0 = 1 };
+	if (k > IMPACT_END_NEAR + 1)
+		e->m0 = k - IMPACT_END_NEAR;
+	for (size_t m = 1; m < k; m++) {
+		e->S0 += s->P[m];
+		e->S1 += s->P[m] * (double)m * s->dt;
+	}
+	for (int i = 0; i < 4 && e->m0 > 1; i++)
+		e->far[i] = far_exact(e, s->dt * i / 3.0);
+	e->R = malloc((k - e->m0 + 3) * sizeof *e->R);
+	return e->R ? ANVIL_OK : ANVIL_ENOMEM;
+}
+
+/* The end of the contact whose last node in contact is k = s->n - 1:
+ * *toff its time, *ioff the impulse up to it (impulse: up to t_k). */
+static int finish_exact(const struct ctx *c, const struct pass *s, double impulse,
+			double *toff, double *ioff)
+{
+	struct end_ctx e;
+	size_t k = s->n - 1;
+	int st = end_ctx_init(&e, c, s, k);
 	gsl_function f = { alpha_end, &e };
 	gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
 	double lo = 1e-9 * s->dt, hi = s->dt, d = hi;
-	if (!rs || !e.R) {
+	if (!rs || st) {
 		gsl_root_fsolver_free(rs);
 		free(e.R);
 		return ANVIL_ENOMEM;
 	}
-	int st = gsl_root_fsolver_set(rs, &f, lo, hi);
+	st = gsl_root_fsolver_set(rs, &f, lo, hi);
 	for (int i = 0; !st && i < 100; i++) {
 		st = gsl_root_fsolver_iterate(rs);
 		d = gsl_root_fsolver_root(rs);
@@ -244,32 +340,89 @@ static int finish_exact(const struct ctx *c, struct pass *s, double impulse)
 	free(e.R);
 	if (st)
 		return ANVIL_ENUM;
-	size_t k = s->n - 1;
-	s->ts = (double)k * s->dt + d;
-	s->Vs = -(c->p->V0 - (impulse + 0.5 * s->P[k] * d) / c->p->m1);
-	peak(s);
+	*toff = (double)k * s->dt + d;
+	*ioff = impulse + 0.5 * s->P[k] * d;
 	return ANVIL_OK;
+}
+
+/* The end of a contact between nodes n-1 and n (a_n = A_n <= 0): its time
+ * and the impulse up to it, exactly for the scheme when there are nodes
+ * enough, else from the parabola through alpha_H (finish). */
+static int contact_end(const struct ctx *c, struct pass *s, double a_n, double impulse,
+		       double *ioff)
+{
+	double toff = NAN;
+	int st = ANVIL_OK;
+	if (s->n >= 3) {
+		st = finish_exact(c, s, impulse, &toff, ioff);
+	} else {
+		finish(s, c->p, a_n, impulse);
+		toff = s->ts;
+		*ioff = c->p->m1 * (c->p->V0 + s->Vs);
+	}
+	if (!st && s->ncont <= ANVIL_MAX_CONTACTS)
+		s->off[s->ncont - 1] = toff;
+	s->ts = toff;
+	return st;
+}
+
+/* A new contact between nodes n-1 and n: A rose through 0 (linear). */
+static void contact_start(struct pass *s, size_t n, double a_prev, double a_n)
+{
+	s->ncont++;
+	if (s->ncont <= ANVIL_MAX_CONTACTS)
+		s->on[s->ncont - 1] = s->dt * ((double)n - a_n / (a_n - a_prev));
+}
+
+/* Parted for good (impact.h) at node n, out of contact: the impactor moves
+ * away, the gap opens, and the impactor is outward of both the surface and
+ * the surface's late position (impulse times the displacement impulse
+ * response at the window's end, g_{cap-1}/dt: alpha* I for a plate, 0 for
+ * a half-space) by IMPACT_PART_MARGIN of the largest compression. */
+static int parted(const struct ctx *c, const struct pass *s, size_t n, double impulse,
+		  double amax)
+{
+	double dt = s->dt, late = impulse * c->g[c->ng - 1] / dt;
+	double u = (s->w[n] - s->w[n - 1]) / dt;
+	return s->v[n] < 0 && u > s->v[n] &&
+	       s->W[n] < fmin(s->w[n], late) - IMPACT_PART_MARGIN * amax;
 }
 
 /* The implicit, second-order pass (see impact.h).  With P piecewise linear
  * through the P_m, the impactor's displacement at t_n is exactly
  *   W_n = V0 t_n - (dt/m1) sum_{m<n} P_m (t_n - t_m) - P_n dt^2/(6 m1)
- * and the anvil's w_n = sum_{m<=n} P_m g_{n-m}. */
+ * and the anvil's w_n = sum_{m<=n} P_m g_{n-m} (the past by the online fast
+ * convolution).  Where A_n (alpha_H if P_n were 0) <= 0 there is no
+ * contact: P_n = 0, and the march goes on (free flight, the layer's free
+ * response) through any new contact until the two have parted for good. */
 static int pass_implicit(const struct ctx *c, struct pass *s)
 {
 	const struct anvil_params *p = c->p;
 	double dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1);
 	double S0 = 0, S1 = 0, impulse = 0; /* sum P_m, sum P_m t_m, int P dt */
+	double ioff = 0, a_prev = 0, amax = 0;
+	int in = 1;
 	s->v[0] = p->V0;
 	s->n = 1;
+	s->ncont = 1;
+	s->on[0] = 0;
+	anvil_fastconv_reset(c->fc);
+	anvil_fastconv_push(c->fc, 0.0);
 	for (size_t n = 1; n < s->cap; n++) {
-		double tn = (double)n * dt, conv = 0;
-		for (size_t m = 1; m < n; m++)
-			conv += s->P[m] * c->g[n - m];
-		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv;
-		if (A <= 0)
-			return n >= 3 ? finish_exact(c, s, impulse) : (finish(s, p, A, impulse), ANVIL_OK);
-		double P = hertz_root(p->k0, B, A);
+		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
+		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
+		int st = ANVIL_OK;
+		if (A <= 0 && in)
+			st = contact_end(c, s, A, impulse, &ioff);
+		else if (A > 0 && !in)
+			contact_start(s, n, a_prev, A);
+		if (st)
+			return st;
+		in = A > 0;
+		if (in)
+			P = hertz_root(p->k0, B, A);
+		a_prev = A - B * P;
+		amax = fmax(amax, a_prev);
 		s->P[n] = P;
 		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
 		s->w[n] = conv + P * c->g[0];
@@ -278,8 +431,19 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
+		anvil_fastconv_push(c->fc, P);
+		if (!in && parted(c, s, n, impulse, amax)) {
+			s->parted = 1;
+			break;
+		}
 	}
-	return ANVIL_ETOL; /* the contact outlasts the response window */
+	if (in || s->v[s->n - 1] >= 0)
+		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
+	if (!s->parted)
+		s->parted = 2;
+	s->Vs = -(p->V0 - ioff / p->m1);
+	peak(s);
+	return ANVIL_OK;
 }
 
 /* The one positive root of the physical step equation (see pass_physical)
@@ -315,32 +479,52 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * u0 and D the parts of v_n - dw_c/dt(t_n) free of and linear in P_n.
  * Every piece is second order in dt, so the scheme is (tests/test_physical.c
  * measures it).  The contact ends where A = 0: alpha = 0 takes the lag
- * with it, and finish_exact's alpha_end is W - w_c there. */
+ * with it, and finish_exact's alpha_end is W - w_c there (its far past,
+ * Q's through ramp2 - ramp included, by far_exact/far_cubic as for the
+ * paper's contact).  The march goes on through repeated contacts as in
+ * pass_implicit: out of contact P = Q = 0, w = w_c (the layer's free
+ * response), until the two have parted for good.  The past's sums come
+ * from the online fast convolutions: P against g (fc) and, with the true
+ * radius, Q against dg = g2 - g (fc2). */
 static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
-	double dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1), b = 1.5 * beta / p->k0;
+	double dt = s->dt, b = 1.5 * beta / p->k0;
 	double S0 = 0, S1 = 0, impulse = 0;
+	double ioff = 0, a_prev = 0, amax = 0;
+	int in = 1;
 	s->v[0] = p->V0;
 	s->n = 1;
+	s->ncont = 1;
+	s->on[0] = 0;
+	anvil_fastconv_reset(c->fc);
+	anvil_fastconv_push(c->fc, 0.0);
+	if (c->fc2) {
+		anvil_fastconv_reset(c->fc2);
+		anvil_fastconv_push(c->fc2, 0.0);
+	}
 	for (size_t n = 1; n < s->cap; n++) {
-		double tn = (double)n * dt, conv = 0, g0 = c->g[0];
-		for (size_t m = 1; m < n; m++)
-			conv += s->P[m] * c->g[n - m];
+		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
 		if (c->dg) {
-			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load;
-			 * the current one's (in g0 only, zero before the bottom reflection)
-			 * extrapolated, second order */
-			for (size_t m = 1; m < n; m++)
-				conv += s->Q[m] * c->dg[n - m];
-			double q1 = n >= 2 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
-			double q2 = n >= 3 ? s->Q[n - 2] / s->P[n - 2] : q1;
+			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load
+			 * (by the second convolution, of Q against dg); the current one's
+			 * (in g0 only, zero before the bottom reflection) extrapolated,
+			 * second order; alpha_H = 0 at a node out of contact */
+			conv += anvil_fastconv_next(c->fc2);
+			double q1 = s->P[n - 1] > 0 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
+			double q2 = n >= 3 && s->P[n - 2] > 0 ? s->Q[n - 2] / s->P[n - 2] : q1;
 			g0 += (2.0 * q1 - q2) * c->dg[0];
-			B = g0 + dt * dt / (6.0 * p->m1);
 		}
-		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv;
-		if (A <= 0)
-			return n >= 3 ? finish_exact(c, s, impulse) : (finish(s, p, A, impulse), ANVIL_OK);
+		double B = g0 + dt * dt / (6.0 * p->m1);
+		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
+		int st = ANVIL_OK;
+		if (A <= 0 && in)
+			st = contact_end(c, s, A, impulse, &ioff);
+		else if (A > 0 && !in)
+			contact_start(s, n, a_prev, A);
+		if (st)
+			return st;
+		in = A > 0;
 		/* dw_c/dt(t_n) = wd0 + e0 P_n (BDF2; Euler at the first step) */
 		double wd0, e0;
 		if (n >= 2) {
@@ -350,23 +534,41 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 			wd0 = (conv - s->wc[0]) / dt;
 			e0 = g0 / dt;
 		}
-		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1;
-		double D = 0.5 * dt / p->m1 + e0;
-		double P = physical_root(b * D, B, p->k0, b * (v0 - wd0), A);
+		if (in) {
+			double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1;
+			double D = 0.5 * dt / p->m1 + e0;
+			P = physical_root(b * D, B, p->k0, b * (v0 - wd0), A);
+		}
 		double x = cbrt(P);
+		a_prev = in ? p->k0 * x * x : A; /* alpha_H in contact; the gap's A out of it */
+		amax = fmax(amax, in ? a_prev : 0.0);
 		s->P[n] = P;
 		s->Q[n] = c->dg ? P * p->k0 * x * x / c->alpha_ref : 0.0;
 		s->wc[n] = conv + P * g0;
 		impulse += 0.5 * dt * (s->P[n - 1] + P);
 		s->v[n] = p->V0 - impulse / p->m1;
-		double Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
+		if (in)
+			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
 		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
 		s->w[n] = s->wc[n] - beta * Q;
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
+		anvil_fastconv_push(c->fc, P);
+		if (c->fc2)
+			anvil_fastconv_push(c->fc2, s->Q[n]);
+		if (!in && parted(c, s, n, impulse, amax)) {
+			s->parted = 1;
+			break;
+		}
 	}
-	return ANVIL_ETOL;
+	if (in || s->v[s->n - 1] >= 0)
+		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
+	if (!s->parted)
+		s->parted = 2;
+	s->Vs = -(p->V0 - ioff / p->m1);
+	peak(s);
+	return ANVIL_OK;
 }
 
 /* The paper's explicit scheme, eqs (42)-(46): the deflection lags one step
@@ -389,6 +591,7 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 			finish(s, p, W - w, impulse);
 			/* the paper's own velocity update, eq (46), to the contact end */
 			s->Vs = -(s->v[n - 1] + a_prev * (s->ts - (double)(n - 1) * dt));
+			s->ncont = 1, s->on[0] = 0, s->off[0] = s->ts; /* one contact: not followed on */
 			return ANVIL_OK;
 		}
 		s->P[n] = p->K * pow(W - w, 1.5);
@@ -402,7 +605,8 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 	return ANVIL_ETOL;
 }
 
-static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct pass *s)
+static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t direct_max,
+		    struct pass *s)
 {
 	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
 	size_t cap = (size_t)floor(t_avail / dt) - 1;
@@ -414,6 +618,13 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, struct p
 	c->g = c->dg = NULL;
 	if (!st)
 		st = weights(c, dt, cap);
+	anvil_fastconv_free(c->fc);
+	anvil_fastconv_free(c->fc2);
+	c->fc = c->fc2 = NULL;
+	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, direct_max)))
+		st = ANVIL_ENOMEM;
+	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc(c->dg, cap, direct_max)))
+		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
 		     : c->physical		  ? pass_physical(c, s, c->beta)
@@ -461,6 +672,28 @@ static double extrap(double coarse, double fine, double *err)
 	return fine + (fine - coarse) / 3.0;
 }
 
+/* The contacts of the finer pass; when the passes disagree on how many
+ * there are, extrapolation means nothing: the fine values stand, with the
+ * whole difference (at least) as their error. */
+static void fill_contacts(struct anvil_result *r, const struct anvil_params *p,
+			  const struct pass *a, const struct pass *b)
+{
+	size_t nc = b->ncont < ANVIL_MAX_CONTACTS ? b->ncont : ANVIL_MAX_CONTACTS;
+	r->ncontacts = b->ncont;
+	memcpy(r->contact_on, b->on, nc * sizeof *b->on);
+	memcpy(r->contact_off, b->off, nc * sizeof *b->off);
+	if (nc && b->ncont <= ANVIL_MAX_CONTACTS)
+		r->contact_off[nc - 1] = r->ts.val;
+	r->t_free = (double)(b->n - 1) * b->dt;
+	if (a->ncont == b->ncont)
+		return;
+	r->ts.val = b->ts, r->ts.err = fmax(r->ts.err, fabs(b->ts - a->ts));
+	r->Vs.val = b->Vs, r->Vs.err = fmax(r->Vs.err, fabs(b->Vs - a->Vs));
+	r->Rf.val = r->Vs.val / p->V0, r->Rf.err = r->Vs.err / p->V0;
+	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
+	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
+}
+
 static void fill(struct anvil_result *r, const struct anvil_params *p,
 		 const struct pass *a, const struct pass *b, enum anvil_scheme scheme)
 {
@@ -481,6 +714,7 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 	r->Ea.err = p->m1 * fabs(r->Vs.val) * r->Vs.err;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
+	fill_contacts(r, p, a, b);
 }
 
 int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rctx,
@@ -503,9 +737,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
 	struct pass a = {0}, b = {0};
-	st = run_pass(&c, o->scheme, dt, &a);
+	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	if (!st)
-		st = run_pass(&c, o->scheme, 0.5 * dt, &b);
+		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, &b);
 	if (!st && o->single) { /* the dt pass alone; its error vs dt/2 */
 		fill(r, p, &a, &b, ANVIL_SCHEME_PAPER);
 		if (o->nhist > 1)
@@ -523,6 +757,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		anvil_err_set(err, st, "impact: %s", anvil_strerror(st));
 	}
 	free(c.g);
+	anvil_fastconv_free(c.fc);
+	anvil_fastconv_free(c.fc2);
 	free(c.dg);
 	pass_free(&a);
 	pass_free(&b);

@@ -11,6 +11,26 @@
  *   equation k0 P^(2/3) + B P = A_n with one positive root (a cubic in
  *   P^(1/3), solved by gsl_poly_solve_cubic).  Second order in dt; run at
  *   dt and dt/2 and Richardson-extrapolated, which also gives the error.
+ * The past enters through an online fast convolution (fastconv.h),
+ * O(N log^2 N): 10^6 steps take about 2 s.
+ *
+ * Repeated contacts (implicit): where alpha_H would be <= 0 the force is 0
+ * and the march goes on, the impactor in free flight and the layer in its
+ * free response (the convolution of the past force), through every new
+ * contact, until the two have parted for good: out of contact, the
+ * impactor moving away (v < 0), the gap opening, and the impactor outward
+ * of both the surface and the surface's late position (the impulse times
+ * the displacement impulse response at the window's end: alpha* I for a
+ * plate, ~0 for a half-space) by a tenth of the largest Hertz compression;
+ * or, failing that, out of contact and moving away at the window's end
+ * (the decision is recorded: t_free in the result, the time followed to).
+ * A contact or an impactor moving in at the window's end is ANVIL_ETOL
+ * with t_s NaN (the caller grows the window).  Each contact's start is
+ * where alpha_H rises through 0 (linear between steps), its end found as
+ * for one contact; t_s is the end of the last contact, V_s, R_f and E_a
+ * are from the final velocity, the history spans [0, t_s] with P = 0
+ * between contacts.
+ *
  * paper: the explicit, lagged scheme of eqs (42)-(46), first order, kept to
  *   show how the paper's printed numbers depend on its step. */
 #ifndef ANVIL_IMPACT_H
@@ -33,6 +53,8 @@ struct anvil_impact_opts {
 	size_t max_steps; /* refuse (ANVIL_ETOL) a run needing more steps */
 	size_t nhist;     /* history samples wanted (0: none) */
 	int single;       /* 1: one pass at dt, no extrapolation (to test the order) */
+	size_t direct_max; /* the convolution's direct squares (fastconv.h): 0 default,
+			    * (size_t)-1 the whole O(N^2) direct sum (to test) */
 	/* The physical contact (issue 10, doc/contact-model.md), implicit
 	 * scheme only: W = alpha_H(P) + w_c - beta Q.  The ramp given is then
 	 * the layer correction of a point load alone (w_c; a zero ramp for a
@@ -50,7 +72,11 @@ struct anvil_impact_opts {
 	 * radius, w(a) = w(0) + a^2 w2 + O(a^4), and the load applied at t' has
 	 * the radius a(t'), a^2 = R alpha_H(t'): so each past load acts through
 	 * ramp + (alpha_H(t')/alpha_ref) (ramp2 - ramp), the true radius to
-	 * O(a^4).  The caller estimates that remainder (solver.c). */
+	 * O(a^4).  The caller estimates that remainder (solver.c).  The past's
+	 * sums are online fast convolutions (fastconv.h) of P against ramp's
+	 * weights and of the loads' alpha_H/alpha_ref P against ramp2's less
+	 * ramp's; the physical pass follows repeated contacts as the implicit
+	 * one does (P = 0 and no lag out of contact). */
 	anvil_ramp_fn ramp2;
 	void *ramp2_ctx;
 	double alpha_ref;

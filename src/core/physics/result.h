@@ -23,6 +23,9 @@ struct anvil_history {
 	double *alpha; /* Hertz compression alpha_H = W - w, m */
 };
 
+/* Contacts whose times a result keeps (more are counted, not timed). */
+#define ANVIL_MAX_CONTACTS 16
+
 struct anvil_result {
 	enum anvil_model model;
 	enum anvil_contact contact; /* a wave row's contact model (options.h); AUTO: neither */
@@ -31,6 +34,13 @@ struct anvil_result {
 	struct anvil_val Pmax;     /* peak force, N */
 	struct anvil_val Vs, Rf, Ea; /* rebound speed m/s, restitution, absorbed energy J */
 	double lambda_star, Rf_star; /* Zener's parameter for this scene */
+	/* Repeated contacts (impact.h): how many (1 for a single impact, 0
+	 * when not computed), the start and end of the first
+	 * ANVIL_MAX_CONTACTS, s.  t_s is the end of the last; V_s, R_f, E_a
+	 * are from the final velocity, after the last. */
+	size_t ncontacts;
+	double contact_on[ANVIL_MAX_CONTACTS], contact_off[ANVIL_MAX_CONTACTS];
+	double t_free;       /* s: the free motion after the last contact was followed to here */
 	double seconds;      /* wall time spent on this model */
 	char note[160];      /* what the model left out, or "" */
 	/* How the run ended: ANVIL_OK; a warning (> 0, e.g. ANVIL_WTOL: the

@@ -27,6 +27,12 @@
  * impactor practically stops (R_f < 1e-8) and alpha creeps to 0 below the
  * absolute tolerance: t_s becomes ill-conditioned, and at ~1000 not found. */
 #define ZENER_TAU_END 1000.0
+/* The absolute error floor, relative to the tolerance: below every scale
+ * the solution reaches up to lambda* = 1e4 (u ~ 1e-20 there). */
+#define ZENER_ABS_FLOOR 1e-40
+/* lambda* above which the stiff stepper is used (rk8pd below: unchanged
+ * results where it is fast; at 30 both take a few thousand steps). */
+#define ZENER_STIFF 30.0
 
 /* State: alpha, alpha', v/V0, W/(T V0). */
 enum { Y_A, Y_DA, Y_V, Y_W, Y_DIM };
@@ -60,6 +66,25 @@ static int zener_rhs(double t, const double y[], double f[], void *params)
 	return GSL_SUCCESS;
 }
 
+/* The Jacobian, for the stiff stepper.  d sqrt(alpha)/d alpha is infinite
+ * at alpha = 0: taken at alpha >= ZENER_JAC_MIN (a Jacobian only steers
+ * the Newton iteration of an implicit method, not its accuracy). */
+#define ZENER_JAC_MIN 1e-300
+static int zener_jac(double t, const double y[], double *dfdy, double dfdt[], void *params)
+{
+	const double lambda = *(const double *)params;
+	double a = fmax(y[Y_A], 0.0), s = sqrt(a), ds = 0.5 / sqrt(fmax(a, ZENER_JAC_MIN));
+	(void)t;
+	memset(dfdy, 0, Y_DIM * Y_DIM * sizeof *dfdy);
+	dfdy[Y_A * Y_DIM + Y_DA] = 1.0;
+	dfdy[Y_DA * Y_DIM + Y_A] = a > 0 ? -1.5 * s - 1.5 * lambda * ds * y[Y_DA] : 0.0;
+	dfdy[Y_DA * Y_DIM + Y_DA] = -1.5 * lambda * s;
+	dfdy[Y_V * Y_DIM + Y_A] = -1.5 * s;
+	dfdy[Y_W * Y_DIM + Y_V] = 1.0;
+	memset(dfdt, 0, Y_DIM * sizeof *dfdt);
+	return GSL_SUCCESS;
+}
+
 static void zener_ws_free(struct zener_ws *w)
 {
 	if (w->march)
@@ -76,11 +101,15 @@ static int zener_ws_init(struct zener_ws *w, double lambda)
 {
 	memset(w, 0, sizeof *w);
 	w->lambda = lambda;
-	w->sys = (gsl_odeiv2_system){ zener_rhs, NULL, Y_DIM, &w->lambda };
-	w->march = gsl_odeiv2_driver_alloc_y_new(&w->sys, gsl_odeiv2_step_rk8pd,
-						 ZENER_H0, ZENER_TOL_MAX, ZENER_TOL_MAX);
-	w->probe = gsl_odeiv2_driver_alloc_y_new(&w->sys, gsl_odeiv2_step_rk8pd,
-						 ZENER_H0, ZENER_TOL_MAX, ZENER_TOL_MAX);
+	w->sys = (gsl_odeiv2_system){ zener_rhs, zener_jac, Y_DIM, &w->lambda };
+	/* past ZENER_STIFF the approach to the quasi-static balance
+	 * alpha^(3/2) = u/lambda* is fast against the contact (rate ~ lambda*
+	 * alpha^(1/2) against 1/lambda*): an explicit method would need ~10^8
+	 * steps at lambda* = 1e4; GSL's BDF (msbdf) takes it in its stride */
+	const gsl_odeiv2_step_type *T = lambda > ZENER_STIFF ? gsl_odeiv2_step_msbdf
+							     : gsl_odeiv2_step_rk8pd;
+	w->march = gsl_odeiv2_driver_alloc_y_new(&w->sys, T, ZENER_H0, ZENER_TOL_MAX, ZENER_TOL_MAX);
+	w->probe = gsl_odeiv2_driver_alloc_y_new(&w->sys, T, ZENER_H0, ZENER_TOL_MAX, ZENER_TOL_MAX);
 	w->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
 	if (!w->march || !w->probe || !w->root) {
 		zener_ws_free(w);
@@ -91,13 +120,18 @@ static int zener_ws_init(struct zener_ws *w, double lambda)
 	return ANVIL_OK;
 }
 
-/* Absolute and relative tolerance tol on every component (all are O(1)). */
+/* Relative tolerance tol on every component, on |y| + h |y'| (GSL's
+ * a_y = a_dydt = 1), with an absolute floor tol ZENER_ABS_FLOOR only.  An
+ * absolute tolerance tol (all components start O(1)) fails at large
+ * lambda*: the impactor then slows like exp(-tau/lambda*) and the contact
+ * ends when u and alpha are ~lambda*^-5 and ~lambda*^-4 (1e-20, 1e-16 at
+ * lambda* = 1e4: see zener_late), far below it. */
 static int zener_ws_set_tol(struct zener_ws *w, double tol)
 {
 	w->tol = tol;
-	int st = gsl_odeiv2_control_init(w->march->c, tol, tol, 1.0, 0.0);
+	int st = gsl_odeiv2_control_init(w->march->c, tol * ZENER_ABS_FLOOR, tol, 1.0, 1.0);
 	if (!st)
-		st = gsl_odeiv2_control_init(w->probe->c, tol, tol, 1.0, 0.0);
+		st = gsl_odeiv2_control_init(w->probe->c, tol * ZENER_ABS_FLOOR, tol, 1.0, 1.0);
 	return st;
 }
 
@@ -234,6 +268,13 @@ static int zener_solve_ws(struct zener_ws *w, double tol, struct anvil_zener_sol
 				     "zener: ODE solve failed at lambda* = %g, tol %g: %s",
 				     w->lambda, w->tol, w->why ? w->why : gsl_strerror(st));
 	sol->err = fmax(zener_sol_diff(sol, &coarse), tol);
+	sol->err_ts = fmax(fabs(sol->tau_s - coarse.tau_s), tol * sol->tau_s);
+	sol->err_tmax = fmax(fabs(sol->tau_max - coarse.tau_max), tol * sol->tau_max);
+	sol->err_amax = fmax(fabs(sol->alpha_max - coarse.alpha_max), tol * sol->alpha_max);
+	sol->err_rf = fmax(fabs(sol->rf - coarse.rf), tol);
+	/* physics: R_f >= 0 (zener.h); the clip is within err_rf */
+	sol->err_rf = fmax(sol->err_rf, -sol->rf);
+	sol->rf = fmax(sol->rf, 0.0);
 	return ANVIL_OK;
 }
 
@@ -301,17 +342,20 @@ static int zener_history(struct zener_ws *w, const struct anvil_params *p,
 static void zener_fill(const struct anvil_params *p, const struct anvil_zener_sol *s,
 		       struct anvil_result *r)
 {
-	double L = p->T * p->V0, e = s->err;
+	double L = p->T * p->V0;
 	r->ts.val = p->T * s->tau_s;
 	r->tmax.val = p->T * s->tau_max;
 	r->Pmax.val = p->K * pow(L * s->alpha_max, 1.5);
 	r->Rf.val = s->rf;
 	r->Vs.val = p->V0 * s->rf;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
-	r->ts.err = r->tmax.err = p->T * e;
-	r->Pmax.err = 1.5 * r->Pmax.val * e / s->alpha_max;
-	r->Rf.err = e;
-	r->Vs.err = p->V0 * e;
+	r->ts.err = p->T * s->err_ts;
+	r->tmax.err = p->T * s->err_tmax;
+	r->Pmax.err = 1.5 * r->Pmax.val * s->err_amax / s->alpha_max;
+	r->Rf.err = s->err_rf;
+	r->Vs.err = p->V0 * s->err_rf;
+	r->ncontacts = 1;
+	r->contact_off[0] = r->t_free = r->ts.val;
 	r->Ea.err = p->m1 * (fabs(r->Vs.val) + r->Vs.err) * r->Vs.err;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;

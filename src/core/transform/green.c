@@ -5,6 +5,9 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "accuracy.h"
 #include "durbin.h"
@@ -13,6 +16,7 @@
 #include "kernel.h"
 #include "layer_bc.h"
 #include "material.h"
+#include "plate.h"
 
 typedef double complex cplx;
 
@@ -174,7 +178,10 @@ static int adapt(struct quad *q, struct heap *h, double kband, double kend, doub
  * to about omega/c_A0, where the slowest mode (A0) has phase speed below
  * both c_R and the thin-plate flexural speed: that band starts in small
  * pieces; beyond it the fields are evanescent and the integrand smooth
- * (exp(-2kH) times the period-2pi oscillation of zhat). */
+ * (exp(-2kH) times the period-2pi oscillation of zhat).  The layer
+ * correction is O(E1^2) = O(exp(-2 Re(alpha1) hh)) there (layer_bc.c: its
+ * numerator is a sum of products of u1 and d, each O(E1)), so it is cut
+ * where E1^2, the integrand's own decay, falls below ktail. */
 static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 		      double cr, double ktail, double eps, cplx *val, double *abserr)
 {
@@ -183,7 +190,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	double kband = anvil_kband(omega, wabs, q->nu, hs ? INFINITY : hh, cr);
 	double L = -log(ktail);
 	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
-			 : fmax(kband, sqrt(pow(L / hh, 2) + omega * omega));
+			 : fmax(kband, sqrt(pow(0.5 * L / hh, 2) + omega * omega));
 	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
 	 * the band, wider in the smooth tail; the adaptive splitting finds the
 	 * poles from there (the results do not move when these are halved). */
@@ -222,42 +229,101 @@ static double plate_t(const struct plate *pl, double t)
 	return pl->alpha * (0.5 * t * t - tp * t - tp * tp * expm1(-t / tp));
 }
 
-/* Fill spec[0..M] with the transform of the ramp response on the line dl.
- * Each k-integral gets the share eps of the error budget that keeps the
- * time-domain ramp within tol of its size; qerr returns the time-domain
- * bound that the quadrature's estimates give. */
-static int sample_spectrum(struct quad *q, struct heap *h, const struct anvil_durbin *dl,
-			   const struct anvil_green_settings *gs, double tau_end,
-			   const struct plate *pl, cplx *spec, double *qerr,
-			   anvil_progress_fn progress, void *ctx)
+/* Fill spec[0..M] with the transform of the ramp response on the line dl,
+ * and err[n] with the time-domain bound of term n's quadrature error (the
+ * caller sums them in a fixed order).  Each k-integral gets the share epsF
+ * of the error budget that keeps the time-domain ramp within tol of its
+ * size.  The terms are independent: they run on all cores (OpenMP), each
+ * thread with its own heap and quad, so the bits do not depend on the
+ * number of threads.  Progress is reported (and cancellation seen) on the
+ * calling thread only. */
+struct spectrum {
+	const struct anvil_durbin *dl;
+	double cr, ktail, epsF;
+	const struct plate *pl;
+	anvil_progress_fn progress;
+	void *ctx;
+};
+
+static int spectrum_term(struct quad *q, struct heap *h, const struct spectrum *sp, size_t n,
+			 cplx *spec, double *err)
 {
-	double xr, cr;
-	size_t M = dl->M;
-	if (anvil_rayleigh_x(q->kap2, &xr, NULL))
+	double e;
+	cplx In;
+	q->s = anvil_durbin_s(sp->dl, n);
+	cplx b = q->s * q->s;
+	double s2 = cabs(b);
+	int qs = k_integral(q, h, cimag(q->s), q->hh, sp->cr, sp->ktail, sp->epsF * s2, &In, &e);
+	spec[n] = In / b - plate_s(sp->pl, q->s);
+	err[n] = e / s2;
+	if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
 		return ANVIL_ENUM;
-	cr = sqrt(xr); /* c_R/c2 */
-	double scale = 3.0 / (16.0 * (1.0 - q->kap2)) * tau_end; /* half-space ramp */
-	double amp = exp(dl->c0 * tau_end) / dl->Tp;  /* series -> time at tau_end */
-	double epsF = gs->tol * scale / (amp * (double)(M + 1));
-	double sum_err = 0;
-	int st = ANVIL_OK;
-	for (size_t n = 0; n <= M; n++) {
-		double e;
-		cplx In;
-		q->s = anvil_durbin_s(dl, n);
-		cplx b = q->s * q->s;
-		double s2 = cabs(b);
-		int qs = k_integral(q, h, cimag(q->s), q->hh, cr, gs->ktail, epsF * s2, &In, &e);
-		if (qs && !st)
-			st = qs; /* keep going: the result says how far off it is */
-		spec[n] = In / b - plate_s(pl, q->s);
-		sum_err += e / s2;
-		if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
-			return ANVIL_ENUM;
-		if (progress && n % 4 == 0 && progress(ctx, (double)n / (double)M, "layer response"))
-			return ANVIL_ECANCEL;
+	return qs;
+}
+
+static int sample_spectrum(const struct quad *q0, const struct spectrum *sp, cplx *spec,
+			   double *err, size_t *evals)
+{
+	size_t M = sp->dl->M, done = 0, nev = 0;
+	int st = ANVIL_OK, stop = 0;
+#ifdef _OPENMP
+#pragma omp parallel
+#endif
+	{
+		struct quad q = *q0;
+		struct heap *h = malloc(sizeof *h);
+		int mine = h ? ANVIL_OK : ANVIL_ENOMEM;
+		q.evals = 0;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+		for (size_t n = 0; n <= M; n++) {
+			int halt, ts = ANVIL_OK;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+			halt = stop;
+			if (halt || mine == ANVIL_ENOMEM)
+				continue;
+			ts = spectrum_term(&q, h, sp, n, spec, err);
+			/* ETOL is kept going: the result says how far off it is */
+			if (ts && (ts != ANVIL_ETOL || !mine))
+				mine = ts;
+			size_t nd;
+#ifdef _OPENMP
+#pragma omp atomic capture
+#endif
+			nd = ++done;
+			int master = 1;
+#ifdef _OPENMP
+			master = omp_get_thread_num() == 0;
+#endif
+			if (ts == ANVIL_ENUM || (master && sp->progress && nd % 4 == 0 &&
+						 sp->progress(sp->ctx, (double)nd / (double)(M + 1),
+							      "layer response"))) {
+				if (ts != ANVIL_ENUM)
+					mine = ANVIL_ECANCEL;
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+				stop = 1;
+			}
+		}
+		free(h);
+#ifdef _OPENMP
+#pragma omp critical(anvil_green_status)
+#endif
+		{
+			nev += q.evals;
+			/* the worst status wins, whichever thread met it: cancel,
+			 * then no memory, then a non-finite term, then a missed tolerance */
+			if (mine == ANVIL_ECANCEL || (mine == ANVIL_ENOMEM && st != ANVIL_ECANCEL) ||
+			    (mine == ANVIL_ENUM && (st == ANVIL_OK || st == ANVIL_ETOL)) ||
+			    (mine == ANVIL_ETOL && st == ANVIL_OK))
+				st = mine;
+		}
 	}
-	*qerr = amp * sum_err;
+	*evals = nev;
 	return st;
 }
 
@@ -270,56 +336,113 @@ void anvil_green_free(struct anvil_green *g)
 	free(g);
 }
 
-static int green_compute(struct anvil_green *g, const struct anvil_green_settings *gs,
-			 anvil_progress_fn progress, void *ctx)
+/* The response g from the first dl->M + 1 terms of the spectrum (the main
+ * line's, or the twin's: the same line with fewer terms), err[n] the terms'
+ * quadrature bounds, summed in order n = 0, 1, ... (fixed: the same bits
+ * whatever the threads). */
+static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
+			const double *err, const struct plate *pl)
 {
-	/* the line: output kept to [0, T'/2] of the period 2T' */
-	double Tp = 2.0 * g->tau_end;
-	struct anvil_durbin dl;
-	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0))
-		return ANVIL_EINVAL;
-	size_t M = dl.M, N = anvil_durbin_fft_size(&dl, GREEN_N_MIN);
+	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
+	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
 	g->dtau = 2.0 * Tp / (double)N;
 	g->n = (size_t)floor(g->tau_end / g->dtau) + 2; /* about N/4: bounded with M */
+	/* the inversion's samples; beyond its window, the plate (plate.h) */
+	size_t n1 = t_inv < g->tau_end ? (size_t)floor(t_inv / g->dtau) + 2 : g->n;
+	if (g->n > GREEN_SAMPLES_MAX)
+		return ANVIL_EINVAL;
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
-	cplx *spec = malloc((M + 1) * sizeof *spec);
-	struct heap *heap = malloc(sizeof *heap);
+	if (!g->tau)
+		return ANVIL_ENOMEM;
+	g->ramp = g->tau + g->n;
+	int st = anvil_durbin_fft(dl, spec, N, g->ramp, n1);
+	if (st)
+		return st;
+	for (size_t n = 0; n <= M; n++)
+		qsum += err[n];
+	double amp = exp(dl->c0 * fmin(t_inv, g->tau_end)) / Tp; /* series -> time at its end */
+	double tail = cabs(spec[M]) * (double)M * 0.5;
+	for (size_t j = 0; j < n1; j++) {
+		double t = (double)j * g->dtau;
+		/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
+		if (g->mode == ANVIL_GREEN_HALFSPACE)
+			g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * t;
+		else
+			g->ramp[j] += plate_t(pl, t);
+	}
+	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
+	if (n1 < g->n && (st = anvil_plate_extend(g->hh, g->nu, g->dtau, n1, g->n, g->ramp, &ext_err)))
+		return st;
+	g->abserr = amp * qsum + amp * tail + ext_err;
+	for (size_t j = 0; j < g->n; j++)
+		g->tau[j] = (double)j * g->dtau;
+	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
+	if (!g->interp)
+		return ANVIL_ENOMEM;
+	return gsl_interp_init(g->interp, g->tau, g->ramp, g->n) ? ANVIL_ENUM : ANVIL_OK;
+}
+
+/* The main response g and, when tw is not NULL, its twin at half the
+ * bandwidth from the same spectrum: the twin's line is the same (same
+ * window, same c0), its terms n <= M' the first of the main's.  Every
+ * k-integral meets the main's tolerance, which is tighter than a twin
+ * computed alone would ask (the budget is shared among M + 1 terms, not
+ * M' + 1): the twin's error estimate is its own, over its own terms. */
+static int green_compute(struct anvil_green *g, struct anvil_green *tw,
+			 const struct anvil_green_settings *gs, anvil_progress_fn progress,
+			 void *ctx)
+{
+	/* the line: output kept to [0, T'/2] of the period 2T'; for a long
+	 * window of a layer correction, only over [0, T1], the plate beyond */
+	double t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION && !gs->no_plate
+			    ? anvil_plate_t1(g->hh, g->tau_end) : 0;
+	double t_inv = t1 > 0 ? t1 : g->tau_end, Tp = 2.0 * t_inv, xr;
+	struct anvil_durbin dl, dt;
+	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0) ||
+	    (tw && anvil_durbin_init(&dt, Tp, gs->c0T / Tp, 0.5 * gs->omega_max, 0)))
+		return ANVIL_EINVAL;
+	if (anvil_rayleigh_x(g->kap2, &xr, NULL))
+		return ANVIL_ENUM;
+	size_t M = dl.M;
+	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
+	double amp = exp(dl.c0 * t_inv) / Tp;
+	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
 			  .patch = g->patch };
-	struct plate pl = plate_term(g->mode, g->hh, g->nu);
-	int st = (!g->tau || !spec || !heap) ? ANVIL_ENOMEM : ANVIL_OK;
-	double qerr = 0;
+	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
+			       .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = &pl,
+			       .progress = progress, .ctx = ctx };
+	cplx *spec = malloc((M + 1) * sizeof *spec);
+	double *err = malloc((M + 1) * sizeof *err);
+	int st = (!spec || !err) ? ANVIL_ENOMEM : ANVIL_OK;
 	if (!st)
-		st = sample_spectrum(&q, heap, &dl, gs, g->tau_end, &pl, spec, &qerr, progress, ctx);
+		st = sample_spectrum(&q, &sp, spec, err, &g->evals);
 	/* A k-integral that missed its share of the budget is not fatal: its
-	 * error estimate is in qerr, hence in abserr, for the caller to judge. */
+	 * error estimate is in err, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
 		st = ANVIL_OK;
-	if (!st) {
-		g->ramp = g->tau + g->n;
-		st = anvil_durbin_fft(&dl, spec, N, g->ramp, g->n);
-	}
-	if (!st) {
-		double tail = cabs(spec[M]) * (double)M * 0.5;
-		g->abserr = qerr + exp(dl.c0 * g->tau_end) / Tp * tail;
-		for (size_t j = 0; j < g->n; j++) {
-			g->tau[j] = (double)j * g->dtau;
-			/* the half-space's static part, (1-nu) 3/8 = 3/(16 (1-kappa^2)), as a ramp */
-			if (g->mode == ANVIL_GREEN_HALFSPACE)
-				g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * g->tau[j];
-			else
-				g->ramp[j] += plate_t(&pl, g->tau[j]);
-		}
-		g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
-		g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
-		st = g->interp ? ANVIL_OK : ANVIL_ENOMEM;
-		if (!st && gsl_interp_init(g->interp, g->tau, g->ramp, g->n))
-			st = ANVIL_ENUM;
-	}
-	g->evals = q.evals;
-	free(heap);
+	if (!st)
+		st = green_finish(g, &dl, spec, err, &pl);
+	if (!st && tw)
+		st = green_finish(tw, &dt, spec, err, &pl);
+	free(err);
 	free(spec);
 	return st;
+}
+
+static struct anvil_green *green_new(enum anvil_green_mode mode, double hh, double nu,
+				     double patch, double tau_end)
+{
+	struct anvil_green *g = calloc(1, sizeof *g);
+	if (!g)
+		return NULL;
+	g->mode = mode;
+	g->hh = hh;
+	g->patch = patch;
+	g->nu = nu;
+	g->kap2 = anvil_kappa2(nu);
+	g->tau_end = tau_end;
+	return g;
 }
 
 struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
@@ -328,7 +451,21 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 				      anvil_progress_fn progress, void *ctx,
 				      struct anvil_err *err)
 {
-	return anvil_green_alloc_patch(mode, hh, nu, 1.0, tau_end, gs, progress, ctx, err);
+	return anvil_green_alloc_twin(mode, hh, nu, tau_end, gs, progress, ctx, NULL, err);
+}
+
+static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, double nu,
+				      double patch, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_green **twin, struct anvil_err *err);
+
+struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh, double nu,
+					   double tau_end, const struct anvil_green_settings *gs,
+					   anvil_progress_fn progress, void *ctx,
+					   struct anvil_green **twin, struct anvil_err *err)
+{
+	return green_make(mode, hh, nu, 1.0, tau_end, gs, progress, ctx, twin, err);
 }
 
 struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
@@ -343,30 +480,35 @@ struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double h
 			      patch);
 		return NULL;
 	}
+	return green_make(mode, hh, nu, patch, tau_end, gs, progress, ctx, NULL, err);
+}
+
+static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, double nu,
+				      double patch, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_green **twin, struct anvil_err *err)
+{
+	if (twin)
+		*twin = NULL;
 	if (!(nu > -1 && nu < 0.5) || !(tau_end > 0) || !isfinite(tau_end) ||
 	    (mode == ANVIL_GREEN_LAYER_CORRECTION && !(hh > 0 && isfinite(hh)))) {
 		anvil_err_set(err, ANVIL_EINVAL, "layer response: bad parameters (h/r0 = %g, nu = %g, window %g)",
 			      hh, nu, tau_end);
 		return NULL;
 	}
-	struct anvil_green *g = calloc(1, sizeof *g);
-	if (!g) {
-		anvil_err_set(err, ANVIL_ENOMEM, "layer response: out of memory");
-		return NULL;
-	}
-	g->mode = mode;
-	g->hh = hh;
-	g->patch = patch;
-	g->nu = nu;
-	g->kap2 = anvil_kappa2(nu);
-	g->tau_end = tau_end;
-	int st = green_compute(g, gs, progress, ctx);
+	struct anvil_green *g = green_new(mode, hh, nu, patch, tau_end);
+	struct anvil_green *tw = twin ? green_new(mode, hh, nu, patch, tau_end) : NULL;
+	int st = !g || (twin && !tw) ? ANVIL_ENOMEM : green_compute(g, tw, gs, progress, ctx);
 	if (st) {
 		anvil_err_set(err, st, st == ANVIL_ECANCEL ? "layer response: cancelled" :
 			      "layer response (h/r0 = %g, nu = %g): %s", hh, nu, anvil_strerror(st));
 		anvil_green_free(g);
+		anvil_green_free(tw);
 		return NULL;
 	}
+	if (twin)
+		*twin = tw;
 	return g;
 }
 
@@ -427,9 +569,12 @@ static int sizes_ok(const struct anvil_green_samples *s)
 	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
 	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) || !s->ramp)
 		return 0;
-	double ratio = s->tau_end / s->dtau, N = exp2(round(log2(4.0 * ratio)));
-	if (!(ratio >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
-	    !(fabs(4.0 * ratio - N) <= 1e-9 * N))
+	/* a long window's inversion covered [0, T1] only (plate.h) */
+	double t1 = s->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(s->hh, s->tau_end) : 0;
+	double ratio = s->tau_end / s->dtau, r1 = (t1 > 0 ? t1 : s->tau_end) / s->dtau;
+	double N = exp2(round(log2(4.0 * r1)));
+	if (!(r1 >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
+	    !(fabs(4.0 * r1 - N) <= 1e-9 * N))
 		return 0;
 	return s->n == (size_t)floor(ratio) + 2;
 }

@@ -16,7 +16,9 @@
  * line s = c0 + i n pi/T' (Durbin), summed by FFT; the k-integral at each s
  * by globally adaptive Gauss-Kronrod quadrature, which resolves the
  * Lamb-mode poles (at about c0/c_group from the real k axis) wherever they
- * are, to a tolerance derived from the time-domain target.
+ * are, to a tolerance derived from the time-domain target.  The
+ * frequencies are computed on all cores (OpenMP, when configure finds it);
+ * the result has the same bits whatever the number of threads.
  * The ramp response (load P = t) is produced: it is the smoothest of the
  * step/ramp/impulse family and the one the impact solver's product
  * integration needs.  See ../shared/design/solver.md. */
@@ -42,6 +44,8 @@ struct anvil_green_settings {
 	double omega_max; /* highest frequency summed (dimensionless) */
 	double tol;     /* ramp error target, relative to its half-space size */
 	double ktail;   /* integrand cut-off: exp(-2 Re(alpha1) H) below this */
+	int no_plate;   /* 1: invert over the whole window, never the plate beyond
+			   (plate.h; for tests: the second method) */
 };
 
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);
@@ -57,6 +61,16 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 				      const struct anvil_green_settings *gs,
 				      anvil_progress_fn progress, void *ctx,
 				      struct anvil_err *err);
+/* The same, and in *twin (when twin is not NULL) its coarse twin: the
+ * response at half the bandwidth (gs->omega_max / 2) over the same window,
+ * from the first terms of the same spectrum (the twin's frequencies are a
+ * subset of the main one's), at no extra kernel evaluation.  Its k-integrals
+ * meet the main response's (tighter) tolerance; its error estimate is over
+ * its own terms.  The caller owns both (*twin NULL on failure). */
+struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh, double nu,
+					   double tau_end, const struct anvil_green_settings *gs,
+					   anvil_progress_fn progress, void *ctx,
+					   struct anvil_green **twin, struct anvil_err *err);
 void anvil_green_free(struct anvil_green *g);
 /* The same for the Hertz-shaped load of radius patch r0, 0 <= patch <= 1
  * (ANVIL_GREEN_LAYER_CORRECTION only; anvil_green_alloc is patch = 1).
@@ -64,7 +78,9 @@ void anvil_green_free(struct anvil_green *g);
  * finite, its integrand decaying like exp(-k h); that is what the physical
  * contact needs (impact.h), the static indentation being Hertz's.  Against
  * the true contact radius a its error is O((a/h)^2) (doc/contact-model.md).
- * Such a response is not for the cache: anvil_green_samples has no patch. */
+ * Such a response is not for the cache: anvil_green_samples has no patch;
+ * nor has it a twin, and a patch other than r0 is inverted over its whole
+ * window (plate.c's long-time K is the r0 patch's). */
 struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
 					    double patch, double tau_end,
 					    const struct anvil_green_settings *gs,

@@ -30,22 +30,63 @@ cplx anvil_kernel_expm1(cplx z)
 	return (expm1(x) * cos(y) - 2.0 * s * s) + I * (exp(x) * sin(y));
 }
 
+static double norm2(cplx z)
+{
+	double x = creal(z), y = cimag(z);
+	return x * x + y * y;
+}
+
+cplx anvil_kernel_csqrt(cplx z)
+{
+	double x = creal(z), y = cimag(z);
+	double t = sqrt(0.5 * (fabs(x) + sqrt(x * x + y * y)));
+	if (t == 0)
+		return anvil_kernel_cmplx(0.0, y);
+	if (x >= 0)
+		return anvil_kernel_cmplx(t, 0.5 * y / t);
+	return anvil_kernel_cmplx(0.5 * fabs(y) / t, copysign(t, y));
+}
+
+cplx anvil_kernel_recip(cplx z)
+{
+	double x = creal(z), y = cimag(z), n = x * x + y * y;
+	if (n > 1e-290 && n < 1e290) { /* no overflow or underflow: one division */
+		double r = 1.0 / n;
+		return anvil_kernel_cmplx(x * r, -y * r);
+	}
+	double sc = 1.0 / (fabs(x) + fabs(y)), xs = x * sc, ys = y * sc, r = sc / (xs * xs + ys * ys);
+	return anvil_kernel_cmplx(xs * r, -ys * r);
+}
+
+void anvil_kernel_exp_1m(cplx z, cplx *E, cplx *m)
+{
+	double x = creal(z), y = cimag(z), ex = exp(x), cs = cos(y), sn = sin(y);
+	double em1 = fabs(x) < 0.5 ? expm1(x) : ex - 1.0;
+	double omc = cs > 0 ? sn * sn / (1.0 + cs) : 1.0 - cs; /* 1 - cos y */
+	*E = anvil_kernel_cmplx(ex * cs, ex * sn);
+	*m = anvil_kernel_cmplx(omc - em1 * cs, -ex * sn);
+}
+
 cplx anvil_kernel_rayleigh(double a, cplx b, double kap2, cplx gam, cplx X)
 {
+	cplx g2 = gam * gam, g2X = g2 + X, g2mX = g2 - X;
+	if (norm2(g2mX) >= norm2(g2X))
+		return g2mX;
 	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
 		 8.0 * a * b * b + b * b * b;
-	cplx g2X = gam * gam + X, g2mX = gam * gam - X;
-	return cabs(g2mX) >= cabs(g2X) ? g2mX : b * Q / g2X;
+	return b * Q * anvil_kernel_recip(g2X);
 }
 
 cplx anvil_kernel_tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx E1, cplx E2,
-			cplx p1, cplx p2)
+			cplx ip12)
 {
 	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
-	cplx dal = (1.0 - kap2) * b / (al1 + al2);
-	if (cabs(hh * dal) < 1.0)
-		return 2.0 * E1 * (-anvil_kernel_expm1(-hh * dal)) / (p1 * p2);
-	return 2.0 * (E1 - E2) / (p1 * p2);
+	cplx dal = (1.0 - kap2) * b * anvil_kernel_recip(al1 + al2), E, m;
+	if (norm2(hh * dal) < 1.0) {
+		anvil_kernel_exp_1m(-hh * dal, &E, &m);
+		return 2.0 * E1 * m * ip12;
+	}
+	return 2.0 * (E1 - E2) * ip12;
 }
 
 double anvil_kband(double omega, double wabs, double nu, double hh, double cr)

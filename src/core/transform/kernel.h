@@ -19,6 +19,24 @@ double complex anvil_kernel_cmplx(double re, double im);
 /* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
 double complex anvil_kernel_expm1(double complex z);
 
+/* The principal square root, as csqrt for the kernels' arguments (finite,
+ * |z| < 1e150): sqrt((|x| + |z|)/2) and y over twice it, without cancellation
+ * and without hypot's care for overflow, which the kernels never need
+ * (csqrt was a fifth of a kernel evaluation). */
+double complex anvil_kernel_csqrt(double complex z);
+
+/* 1/z for finite z != 0: conj(z)/|z|^2, scaled by 1/(|x| + |y|) where |z|^2
+ * would overflow or underflow: one or two real divisions, where C's complex division (__divdc3, with
+ * its inf/nan recovery the kernels never need) cost a sixth of an
+ * evaluation.  Relative error a few ulp, as the division's. */
+double complex anvil_kernel_recip(double complex z);
+
+/* exp(z) and 1 - exp(z) together, Re z <= 0 (the kernels' e^{-hh alpha}):
+ * one exp and one sincos for both, expm1 only where Re z is small (there
+ * 1 - exp(Re z) would cancel); 1 - cos y as sin^2 y/(1 + cos y) where
+ * cos y > 0, so no digit is lost for small y either. */
+void anvil_kernel_exp_1m(double complex z, double complex *E, double complex *m);
+
 /* The Rayleigh function R = gamma^2 - X.  Rationalised, R = b Q /
  * (gamma^2 + X) with the k^8 terms of Q cancelled by hand, where that is the
  * larger denominator (the plain form loses every digit at large k); the
@@ -27,13 +45,13 @@ double complex anvil_kernel_expm1(double complex z);
 double complex anvil_kernel_rayleigh(double a, double complex b, double kap2,
 				     double complex gam, double complex X);
 
-/* t2 - t1, t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j), p_j = 1 + E_j:
+/* t2 - t1, t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j), ip12 = 1/(p1 p2), p_j = 1 + E_j:
  * through exp(-hh (alpha2 - alpha1)) - 1 where E1 and E2 are close (their
  * difference would cancel), directly where they are not (there the ratio
  * can overflow while E1 underflows: 0 * inf). */
 double complex anvil_kernel_tdiff(double complex al1, double complex al2, double complex b,
 				  double kap2, double hh, double complex E1, double complex E2,
-				  double complex p1, double complex p2);
+				  double complex ip12);
 
 /* The band of wavenumbers that holds the Lamb-mode poles at angular
  * frequency omega (units c2 = r0 = 1): 1.6 max(omega/c_R, k_flex) + 3, with

@@ -8,12 +8,15 @@
 
 typedef double complex cplx;
 
+/* Every quotient through one reciprocal (kernel.h: anvil_kernel_recip) and
+ * each E_j with its 1 - E_j from one exponential (anvil_kernel_exp_1m):
+ * that halved the cost of an evaluation (scripts/bench). */
 void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil_layer_bc *bc)
 {
 	double a = k * k;
 	cplx b = s * s;
-	cplx al1 = csqrt(a + kap2 * b), al2 = csqrt(a + b), gam = 2.0 * a + b;
-	cplx X = 4.0 * a * al1 * al2;
+	cplx al1 = anvil_kernel_csqrt(a + kap2 * b), al2 = anvil_kernel_csqrt(a + b);
+	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
 	bc->k = k;
 	bc->kap2 = kap2;
 	bc->hh = hh;
@@ -25,17 +28,18 @@ void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil
 	bc->R = anvil_kernel_rayleigh(a, b, kap2, gam, X);
 	if (!isfinite(hh))
 		return;
-	cplx m1 = -anvil_kernel_expm1(-hh * al1), m2 = -anvil_kernel_expm1(-hh * al2); /* 1 - E_j */
-	/* E1 itself, not 1 - m1: that would leave rounding noise (1e-16) where
-	 * E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
-	bc->E1 = cexp(-hh * al1);
-	bc->E2 = cexp(-hh * al2);
+	/* E_j itself, not 1 - m_j: that would leave rounding noise (1e-16)
+	 * where E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
+	cplx m1, m2; /* 1 - E_j */
+	anvil_kernel_exp_1m(-hh * al1, &bc->E1, &m1);
+	anvil_kernel_exp_1m(-hh * al2, &bc->E2, &m2);
 	bc->p1 = 2.0 - m1;
 	bc->p2 = 2.0 - m2;
-	bc->t1 = m1 / bc->p1;
-	bc->t2 = m2 / bc->p2;
-	bc->u1 = 2.0 * bc->E1 / bc->p1;
-	bc->d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, bc->E1, bc->E2, bc->p1, bc->p2);
+	cplx ip1 = anvil_kernel_recip(bc->p1), ip2 = anvil_kernel_recip(bc->p2);
+	bc->t1 = m1 * ip1;
+	bc->t2 = m2 * ip2;
+	bc->u1 = 2.0 * bc->E1 * ip1;
+	bc->d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, bc->E1, bc->E2, ip1 * ip2);
 	bc->Xd = X * bc->d;
 	bc->den1 = bc->t2 * bc->R + bc->Xd;
 	bc->den2 = bc->t1 * bc->R - bc->Xd;
@@ -43,16 +47,22 @@ void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil
 
 cplx anvil_layer_bc_w_halfspace(const struct anvil_layer_bc *bc)
 {
-	return bc->al1 * bc->b / bc->R;
+	return bc->al1 * bc->b * anvil_kernel_recip(bc->R);
 }
 
+/* The two fractions of layer_bc.h over one denominator den1 den2: with
+ * u1 = 1 - t1 and d = t2 - t1 the numerator
+ *   (R u1 + Xd) den1 - (t2 R u1 + Xd) den2
+ *     = t2 R^2 u1^2 + R Xd (u1 + d + t2 u1) + 2 Xd^2
+ * is a sum of products of the small u1 and d: the O(E) parts of the two
+ * fractions, which cancel, are never formed. */
 cplx anvil_layer_bc_w_correction(const struct anvil_layer_bc *bc)
 {
 	if (!isfinite(bc->hh))
 		return 0.0;
-	cplx R = bc->R, Xd = bc->Xd;
-	return 0.5 * anvil_layer_bc_w_halfspace(bc) *
-	       ((R * bc->u1 + Xd) / bc->den2 - (bc->t2 * R * bc->u1 + Xd) / bc->den1);
+	cplx R = bc->R, Xd = bc->Xd, u1 = bc->u1, t2 = bc->t2;
+	cplx num = t2 * R * R * u1 * u1 + R * Xd * (u1 + bc->d + t2 * u1) + 2.0 * Xd * Xd;
+	return 0.5 * anvil_layer_bc_w_halfspace(bc) * num * anvil_kernel_recip(bc->den1 * bc->den2);
 }
 
 void anvil_layer_bc_potentials(const struct anvil_layer_bc *bc, cplx *A1, cplx *B1, cplx *A2,

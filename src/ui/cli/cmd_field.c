@@ -14,6 +14,7 @@
 #include "params.h"
 #include "units.h"
 #include "commands.h"
+#include "verdict.h"
 #include "common.h"
 #include "output.h"
 #include "plot.h"
@@ -48,6 +49,7 @@ struct fctx {
 	struct anvil_field *f;
 	struct cli_progress prog;
 	int tol; /* the impact missed its accuracy: exit 1 after writing */
+	struct anvil_verdict v; /* yield_check's, for the preamble */
 };
 
 /* ---- shared -------------------------------------------------------------- */
@@ -154,17 +156,27 @@ static int yield_check(struct fctx *c, const struct fargs *a, struct anvil_field
 	struct anvil_err err = {0};
 	if (a->no_yield)
 		return -1;
-	int st = anvil_field_peak(c->f, c->sc.layer.mat.yield, pk, &err);
+	/* The one verdict (verdict.h): it turns the field's true contact on,
+	 * so the peak below and the columns are the true contact's too. */
+	struct anvil_problem pb;
+	struct anvil_verdict *v = &c->v;
+	char line[320];
+	int st = anvil_problem_init(&pb, &c->sc, &err);
+	if (!st)
+		st = anvil_verdict_make(&pb, c->f, v, &err);
+	if (!st)
+		st = anvil_field_peak(c->f, c->sc.layer.mat.yield, pk, &err);
 	cli_progress_done(&c->prog);
 	if (st) {
 		cli_error("%s: yield check: %s", a->cmd, err.msg);
 		return cli_exit_code(st);
 	}
-	if (pk->exceeded)
-		cli_error("warning: the von Mises stress reaches %.4g MPa at r = %.3g mm, z = %.3g mm, "
-			  "t = %.4g us, above the layer's yield stress %.4g MPa: the layer yields, and the "
-			  "elastic model does not hold there", pk->vm * 1e-6, pk->r * 1e3, pk->z * 1e3,
-			  pk->t * 1e6, pk->yield * 1e-6);
+	anvil_verdict_text(v, line, sizeof line);
+	cli_error("%s", line);
+	if (v->imp.fate != ANVIL_HERTZ_ELASTIC) { /* as `anvil run`: only when it fails */
+		anvil_verdict_impactor_text(v, line, sizeof line);
+		cli_error("%s", line);
+	}
 	return -1;
 }
 
@@ -184,13 +196,14 @@ static void write_preamble(FILE *f, const struct fctx *c, const struct fargs *a,
 		fputs("# yield check: not done (--no-yield)\n", f);
 		return;
 	}
-	fprintf(f, "# yield check: peak von Mises %.4g MPa (+- %.2g) at r = %.4g mm, z = %.4g mm, t = %.4g us; ",
+	/* the peak as computed, then the one verdict (verdict.h) on both bodies */
+	char line[320];
+	fprintf(f, "# yield check: peak von Mises %.4g MPa (+- %.2g) at r = %.4g mm, z = %.4g mm, t = %.4g us\n",
 		pk->vm * 1e-6, pk->vm_err * 1e-6, pk->r * 1e3, pk->z * 1e3, pk->t * 1e6);
-	if (pk->yield > 0)
-		fprintf(f, "layer yield %.4g MPa: %s\n", pk->yield * 1e-6,
-			pk->exceeded ? "EXCEEDED, the elastic model does not hold there" : "below it");
-	else
-		fputs("layer yield unknown (0 in the material table): not judged\n", f);
+	anvil_verdict_text(&c->v, line, sizeof line);
+	fprintf(f, "# verdict: %s\n", line);
+	anvil_verdict_impactor_text(&c->v, line, sizeof line);
+	fprintf(f, "# verdict: %s\n", line);
 }
 
 /* The rows in the format asked for, the preamble (comment lines "# ...")

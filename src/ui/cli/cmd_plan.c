@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "plan.h"
+#include "verdict.h"
 #include "commands.h"
 #include "common.h"
 #include "output.h"
@@ -93,10 +94,8 @@ static void print_estimates(FILE *f, const struct anvil_plan *pl)
 	fputs("estimates\n", f);
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
 		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
-		if (i == ANVIL_FIG_YIELD && !(pl->fig[i] > 0))
-			continue;
-		fprintf(f, "  %-12s %-12s %s%s%s\n", fi->name, fig_text(v, sizeof v, fi->unit, pl->fig[i]),
-			fi->what, i == ANVIL_FIG_YIELD ? ": " : "", i == ANVIL_FIG_YIELD ? pl->softer : "");
+		fprintf(f, "  %-12s %-12s %s\n", fi->name, fig_text(v, sizeof v, fi->unit, pl->fig[i]),
+			fi->what);
 	}
 }
 
@@ -139,6 +138,22 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 		fprintf(f, "  [layer response %s]", cached_text(r->cached));
 	fprintf(f, "\n      %s\n", anvil_plan_why_text(r->why));
 	fig_list(f, pl, r->fig, r->nfig);
+	/* decided here, returned by the solver as it stands, without work */
+	if (r->status < 0)
+		fprintf(f, "      refused: %s\n", r->refusal[0] ? r->refusal : anvil_strerror(r->status));
+	if (r->fallback)
+		fprintf(f, "      fallback: the layer, if the computed contact outlasts 2h/c1\n");
+}
+
+/* The one verdict (verdict.h): the layer, then the impactor under the
+ * same contact, each on its own line. */
+static void print_verdict(FILE *f, const struct anvil_verdict *v)
+{
+	char line[320];
+	anvil_verdict_text(v, line, sizeof line);
+	fprintf(f, "\nverdict\n  %s\n", line);
+	anvil_verdict_impactor_text(v, line, sizeof line);
+	fprintf(f, "  %s\n", line);
 }
 
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
@@ -164,11 +179,10 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 		fputs("\nwarnings\n", f);
 	for (int i = 0; i < pl->nwarn; i++) {
 		const struct anvil_plan_warning *w = &pl->warn[i];
-		fprintf(f, "  %s%s%s%s\n", anvil_plan_warn_text(w->kind),
-			w->kind == ANVIL_WARN_YIELD ? " (" : "", w->kind == ANVIL_WARN_YIELD ? pl->softer : "",
-			w->kind == ANVIL_WARN_YIELD ? ")" : "");
+		fprintf(f, "  %s\n", anvil_plan_warn_text(w->kind));
 		fig_list(f, pl, w->fig, w->nfig);
 	}
+	print_verdict(f, &pl->verdict);
 }
 
 void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix)
@@ -176,11 +190,9 @@ void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *
 	char v[48];
 	for (int i = 0; i < pl->nwarn; i++) {
 		const struct anvil_plan_warning *w = &pl->warn[i];
-		int yield = w->kind == ANVIL_WARN_YIELD && pl->softer[0];
 		if (w->kind == ANVIL_WARN_FIELD)
 			continue; /* what was asked for, not a warning about it */
-		fprintf(f, "%s%s%s%s%s", prefix, anvil_plan_warn_text(w->kind), yield ? " (" : "",
-			yield ? pl->softer : "", yield ? ")" : "");
+		fprintf(f, "%s%s", prefix, anvil_plan_warn_text(w->kind));
 		for (int k = 0; k < w->nfig; k++) {
 			const struct anvil_fig_info *fi = anvil_plan_fig_info(w->fig[k]);
 			fprintf(f, "%s%s = %s", k ? ", " : "; ", fi->name,
@@ -192,12 +204,19 @@ void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *
 
 /* ---- tsv, csv ---- */
 
+static const char *fate_name(enum anvil_hertz_fate fate, int known)
+{
+	return fate == ANVIL_HERTZ_YIELDS ? "yields" : fate == ANVIL_HERTZ_CRACKS ? "cracks"
+		: known ? "elastic" : "unknown";
+}
+
 static const char *const warn_names[ANVIL_WARN_COUNT] = {
-	"yield", "yield-unknown", "superseismic", "plate-range", "refuse", "not-exact", "field"};
+	"superseismic", "plate-range", "refuse", "not-exact", "field"};
 
 /* One record per line, SI values: "figure NAME VALUE", "row MODEL RUN
  * METHOD EXACT MODEL_ERR COST COST_FULL CACHED WHY", "warning KIND",
- * "total COST"; fields separated by sep (no field holds a tab or a
+ * "verdict BODY MATERIAL FATE STRESS LIMIT" (BODY layer or impactor, FATE
+ * elastic, yields, cracks or unknown, LIMIT 0 when unknown), "total COST"; fields separated by sep (no field holds a tab or a
  * comma but WHY, which CSV quotes). */
 static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 {
@@ -219,25 +238,15 @@ static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 	}
 	for (int i = 0; i < pl->nwarn; i++)
 		fprintf(f, "warning%c%s\n", sep, warn_names[pl->warn[i].kind]);
+	const struct anvil_verdict *vd = &pl->verdict;
+	fprintf(f, "verdict%clayer%c%s%c%s%c%.6g%c%.6g\n", sep, sep, vd->material, sep,
+		fate_name(vd->fate, vd->known), sep, vd->stress, sep, vd->limit);
+	fprintf(f, "verdict%cimpactor%c%s%c%s%c%.6g%c%.6g\n", sep, sep, vd->imp.material, sep,
+		fate_name(vd->imp.fate, vd->imp.known), sep, vd->imp.stress, sep, vd->imp.limit);
 	fprintf(f, "total%c%.6g\n", sep, pl->cost);
 }
 
 /* ---- json ---- */
-
-static void json_text(FILE *f, const char *s)
-{
-	fputc('"', f);
-	for (; *s; s++) {
-		unsigned char c = (unsigned char)*s;
-		if (c == '"' || c == '\\')
-			fprintf(f, "\\%c", c);
-		else if (c < 0x20)
-			fprintf(f, "\\u%04x", c);
-		else
-			fputc(c, f);
-	}
-	fputc('"', f);
-}
 
 static void json_num(FILE *f, double x)
 {
@@ -249,21 +258,42 @@ static const char *const si_unit[] = {
 	[ANVIL_UNIT_NONE] = "", [ANVIL_UNIT_FRACTION] = "", [ANVIL_UNIT_TIME] = "s",
 	[ANVIL_UNIT_FORCE] = "N", [ANVIL_UNIT_LENGTH] = "m", [ANVIL_UNIT_PRESSURE] = "Pa"};
 
+/* One body's verdict: {"material", "fate", "stress_Pa", "limit_Pa", "text"}. */
+static void json_verdict(FILE *f, const char *body, const char *mat, const char *fate,
+			 double stress, double limit, const struct anvil_verdict *v)
+{
+	char line[320];
+	if (body[0] == 'l')
+		anvil_verdict_text(v, line, sizeof line);
+	else
+		anvil_verdict_impactor_text(v, line, sizeof line);
+	fprintf(f, "\n    \"%s\": {\"material\": ", body);
+	out_json_string(f, mat);
+	fprintf(f, ", \"fate\": \"%s\", \"stress_Pa\": ", fate);
+	json_num(f, stress);
+	fputs(", \"limit_Pa\": ", f);
+	json_num(f, limit);
+	fputs(", \"text\": ", f);
+	out_json_string(f, line);
+	fputc('}', f);
+}
+
 /* {"title", "figures": [{name, value, unit (SI), what}], "rows": [...],
- * "warnings": [{kind, text}], "cost_s"} */
+ * "warnings": [{kind, text}], "verdict": {"layer": {...}, "impactor": {...}},
+ * "cost_s"} */
 static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 {
 	fputs("{\n  \"title\": ", f);
-	json_text(f, title);
+	out_json_string(f, title);
 	fputs(",\n  \"figures\": [", f);
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++) {
 		const struct anvil_fig_info *fi = anvil_plan_fig_info((enum anvil_fig)i);
 		fputs(i ? ",\n    {\"name\": " : "\n    {\"name\": ", f);
-		json_text(f, fi->name);
+		out_json_string(f, fi->name);
 		fputs(", \"value\": ", f);
 		json_num(f, pl->fig[i]);
 		fprintf(f, ", \"unit\": \"%s\", \"what\": ", si_unit[fi->unit]);
-		json_text(f, fi->what);
+		out_json_string(f, fi->what);
 		fputc('}', f);
 	}
 	fputs("\n  ],\n  \"rows\": [", f);
@@ -283,17 +313,24 @@ static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 		fputs(", \"cost_full_s\": ", f);
 		json_num(f, r->cost_full);
 		fprintf(f, ", \"cached\": \"%s\", \"why\": ", cached_text(r->cached));
-		json_text(f, anvil_plan_why_text(r->run ? r->why : r->off));
+		out_json_string(f, anvil_plan_why_text(r->run ? r->why : r->off));
 		fputc('}', f);
 	}
 	fputs("\n  ],\n  \"warnings\": [", f);
 	for (int i = 0; i < pl->nwarn; i++) {
 		fprintf(f, "%s\n    {\"kind\": \"%s\", \"text\": ", i ? "," : "",
 			warn_names[pl->warn[i].kind]);
-		json_text(f, anvil_plan_warn_text(pl->warn[i].kind));
+		out_json_string(f, anvil_plan_warn_text(pl->warn[i].kind));
 		fputc('}', f);
 	}
-	fprintf(f, "%s],\n  \"cost_s\": ", pl->nwarn ? "\n  " : "");
+	fprintf(f, "%s],\n  \"verdict\": {", pl->nwarn ? "\n  " : "");
+	json_verdict(f, "layer", pl->verdict.material, fate_name(pl->verdict.fate, pl->verdict.known),
+		     pl->verdict.stress, pl->verdict.limit, &pl->verdict);
+	fputc(',', f);
+	json_verdict(f, "impactor", pl->verdict.imp.material,
+		     fate_name(pl->verdict.imp.fate, pl->verdict.imp.known), pl->verdict.imp.stress,
+		     pl->verdict.imp.limit, &pl->verdict);
+	fputs("},\n  \"cost_s\": ", f);
 	json_num(f, pl->cost);
 	fputs("\n}\n", f);
 }
@@ -374,7 +411,7 @@ static int plan_scene(const struct plan_opts *o)
 		print_json(out.f, &pl, sc.title);
 	} else {
 		fprintf(out.f, "%s\n", sc.title[0] ? sc.title : "scene");
-		anvil_plan_print(out.f, &pl);
+		anvil_plan_print(out.f, &pl); /* the verdict at its end (plan.h) */
 	}
 	return cli_out_commit(&out) ? EXIT_FAIL : EXIT_OK;
 }

@@ -11,6 +11,7 @@
 #include "common.h"
 #include "output.h"
 #include "plot.h"
+#include "verdict.h"
 
 /* Samples per model in --history and the charts. */
 #define RUN_NHIST 400
@@ -246,8 +247,8 @@ static int run_png(const struct anvil_scene *sc, const struct run_opts *o,
 }
 
 /* The plan the rows will run from, before the work, on stderr: with -v
- * the whole of it, else (not with -q) its warnings (super-seismic, yield,
- * out of range), one line each. */
+ * the whole of it, else (not with -q) its warnings (super-seismic, out of
+ * range), one line each; the verdict is run_verdict's. */
 static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
 {
 	if (o->quiet)
@@ -258,6 +259,35 @@ static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
 	} else {
 		anvil_plan_warnings_line(stderr, pl, "anvil: warning: ");
 	}
+}
+
+/* The verdict on the layer (verdict.h), one line on stderr (not with -q),
+ * and a second on the impactor when it yields or cracks:
+ * from the layer or half-space row's field when the run has that row (the
+ * solver's cache holds its responses), else quasi-static Hertz.  A failed
+ * verdict is said, and does not fail the run. */
+static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
+			const struct run_opts *o)
+{
+	struct anvil_verdict v;
+	struct anvil_err err = {0};
+	char line[320];
+	if (o->quiet)
+		return;
+	unsigned waves = (1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE);
+	int st = pl->pb.run & waves ? anvil_solver_verdict(s, pl, &v, &err)
+				    : anvil_verdict_make(&pl->pb, NULL, &v, &err);
+	if (st < 0) {
+		cli_error("warning: no verdict on the layer: %s",
+			  err.msg[0] ? err.msg : anvil_strerror(st));
+		return;
+	}
+	anvil_verdict_text(&v, line, sizeof line);
+	cli_error("%s", line);
+	if (v.imp.fate == ANVIL_HERTZ_ELASTIC)
+		return; /* the impactor's line only when it fails: one line otherwise */
+	anvil_verdict_impactor_text(&v, line, sizeof line);
+	cli_error("%s", line);
 }
 
 /* R_f outside [0, 1] (beyond its error estimate) is no rebound: the
@@ -344,6 +374,8 @@ static int run_scene(struct run_opts *o)
 		return EXIT_FAIL;
 	}
 	code = run_models(s, &pl, &sc, o, res, &n, &tol);
+	if (!code)
+		run_verdict(s, &pl, o);
 	anvil_solver_free(s);
 	if (!code)
 		tol |= run_unphysical(res, n);

@@ -419,6 +419,13 @@ static double error(const struct anvil_result *r, const struct column *c)
 	return fabs(e) < OUT_ERR_NOISE * fabs(x) ? 0.0 : e;
 }
 
+/* The number of contacts (impact.h: repeated contacts), NaN when the
+ * model does not count them. */
+static double contacts(const struct anvil_result *r)
+{
+	return r->ncontacts ? (double)r->ncontacts : NAN;
+}
+
 static void machine_header(struct out_grid *g)
 {
 	out_grid_cell(g, "model");
@@ -429,6 +436,7 @@ static void machine_header(struct out_grid *g)
 	for (int i = 0; i < NCOLUMNS; i++)
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", columns[i].err_name);
+	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time_s");
 	out_grid_cell(g, "contact");
 }
@@ -445,6 +453,7 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 	for (int i = 0; i < NCOLUMNS; i++)
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), NULL));
+	out_grid_cell(g, "%s", out_num(b, contacts(r), NULL));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
 	out_grid_cell(g, "%s", contact_of(r));
 }
@@ -458,6 +467,7 @@ static void table_header(struct out_grid *g)
 		if (columns[i].err_name)
 			out_grid_cell(g, "±");
 	}
+	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time/s");
 }
 
@@ -472,6 +482,7 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", out_err(b, error(r, &columns[i]), "%.2g"));
 	}
+	out_grid_cell(g, "%s", out_num(b, contacts(r), "%.0f"));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
 }
 
@@ -494,8 +505,8 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 			const struct anvil_result *res, int n)
 {
 	/* model, h_r0, V0 and contact (not in the table: the row name says it),
-	 * values, errors, seconds */
-	int ncol = 3 + NCOLUMNS + nerr() + 1 + 1 - 2 * (fmt == OUT_TABLE);
+	 * values, errors, contacts, seconds */
+	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 - 2 * (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)
 		return ANVIL_ENOMEM;

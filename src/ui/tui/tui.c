@@ -44,6 +44,7 @@
 
 /* ---- the worker ---- */
 
+/* A finished row, or (plan set) the plan the rows of gen run from. */
 struct done {
 	struct done *next;
 	unsigned gen;
@@ -51,6 +52,7 @@ struct done {
 	int status;
 	char msg[ANVIL_ERR_MSG];
 	struct anvil_result r;
+	struct anvil_plan *plan; /* owned; NULL for a row */
 };
 
 struct worker {
@@ -101,17 +103,19 @@ static void worker_queue(struct worker *w, struct done *d)
 	(void)!write(w->wake[1], "r", 1);
 }
 
-/* One model for one job; 0 to go on, -1 when the job went stale. */
-static int worker_run_one(struct worker *w, const struct anvil_scene *sc,
-			  unsigned gen, enum anvil_model model)
+/* One row of the job's plan; 0 to go on, -1 when the job went stale.  A
+ * plan that failed (the scene's fault) is every row's status. */
+static int worker_run_one(struct worker *w, const struct anvil_plan *pl, int plan_st,
+			  const struct anvil_err *plan_err, unsigned gen, enum anvil_model model)
 {
-	struct anvil_err err = {0};
+	struct anvil_err err = *plan_err;
 	struct done *d = calloc(1, sizeof *d);
 	if (!d)
 		return -1;
 	d->gen = gen;
 	d->model = model;
-	d->status = cli_run_model(w->solver, sc, model, TUI_NHIST, &d->r, &err);
+	anvil_result_init(&d->r, model);
+	d->status = plan_st ? plan_st : anvil_solver_run(w->solver, pl, model, TUI_NHIST, &d->r, &err);
 	if (d->status == ANVIL_ECANCEL || atomic_load(&w->want) != gen) {
 		anvil_result_free(&d->r);
 		free(d);
@@ -122,6 +126,8 @@ static int worker_run_one(struct worker *w, const struct anvil_scene *sc,
 	return 0;
 }
 
+/* The scene is planned once; the plan goes to the model (the P screen
+ * shows it) and every row runs from it, as `anvil run` does. */
 static void worker_run(struct worker *w, const struct anvil_scene *sc,
 		       unsigned gen, unsigned mask)
 {
@@ -130,12 +136,32 @@ static void worker_run(struct worker *w, const struct anvil_scene *sc,
 		ANVIL_MODEL_HERTZ, ANVIL_MODEL_ZENER, ANVIL_MODEL_HALFSPACE,
 		ANVIL_MODEL_LAYER};
 	struct progress_ctx ctx = {w, gen};
+	struct anvil_err plan_err = {0};
+	struct done *pd = calloc(1, sizeof *pd);
+	struct anvil_plan *pl = malloc(sizeof *pl);
+	if (!pd || !pl) {
+		free(pd);
+		free(pl);
+		return;
+	}
+	int plan_st = cli_plan(sc, anvil_solver_cache(w->solver), pl, &plan_err);
+	if (!plan_st) {
+		struct anvil_plan *copy = malloc(sizeof *copy);
+		if (copy) {
+			*copy = *pl;
+			*pd = (struct done){ .gen = gen, .plan = copy };
+			worker_queue(w, pd);
+			pd = NULL;
+		}
+	}
+	free(pd);
 	anvil_solver_set_progress(w->solver, worker_progress, &ctx);
 	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i)
 		if ((mask & (1u << order[i])) &&
-		    worker_run_one(w, sc, gen, order[i]) < 0)
+		    worker_run_one(w, pl, plan_st, &plan_err, gen, order[i]) < 0)
 			break;
 	anvil_solver_set_progress(w->solver, NULL, NULL);
+	free(pl);
 }
 
 static void *worker_main(void *arg)
@@ -235,6 +261,7 @@ static int worker_stop(struct worker *w)
 	for (struct done *d = w->head, *next; d; d = next) {
 		next = d->next;
 		anvil_result_free(&d->r);
+		free(d->plan);
 		free(d);
 	}
 	pthread_cond_destroy(&w->cv);
@@ -248,9 +275,8 @@ static int worker_stop(struct worker *w)
 static void worker_post(struct worker *w, unsigned gen,
 			const struct anvil_scene *sc, unsigned mask)
 {
-	atomic_store(&w->want, gen); /* even with nothing to do: cancels the old */
-	if (!mask)
-		return;
+	/* even with no row to compute: cancels the old, and makes the plan */
+	atomic_store(&w->want, gen);
 	pthread_mutex_lock(&w->mu);
 	w->job_sc = *sc;
 	w->job_gen = gen;
@@ -293,59 +319,16 @@ static int collect(struct tui *t)
 	pthread_mutex_unlock(&t->w.mu);
 	for (struct done *d = list, *next; d; d = next) {
 		next = d->next;
-		any |= tui_model_deliver(&t->m, d->gen, d->model, d->status, d->msg, &d->r);
+		if (d->plan) {
+			tui_model_deliver_plan(&t->m, d->gen, d->plan);
+			free(d->plan);
+			any = 1;
+		} else {
+			any |= tui_model_deliver(&t->m, d->gen, d->model, d->status, d->msg, &d->r);
+		}
 		free(d);
 	}
 	return any;
-}
-
-/* ---- output that must not reach the screen ---- */
-
-/* While curses owns the terminal, whatever a helper prints (cli_error,
- * gnuplot's complaints) goes to a temporary file instead; the first line of
- * anvil's own ("anvil: gnuplot not found ..."), else the last line, becomes
- * the status-line message. */
-struct capture {
-	FILE *tmp;
-	int out, err;
-};
-
-static int capture_begin(struct capture *c)
-{
-	fflush(stdout);
-	fflush(stderr);
-	c->out = c->err = -1;
-	if (!(c->tmp = tmpfile()))
-		return -1;
-	c->out = dup(STDOUT_FILENO);
-	c->err = dup(STDERR_FILENO);
-	dup2(fileno(c->tmp), STDOUT_FILENO);
-	dup2(fileno(c->tmp), STDERR_FILENO);
-	return 0;
-}
-
-static void capture_end(struct capture *c, char *said, size_t n)
-{
-	char line[512];
-	int ours = 0;
-	said[0] = '\0';
-	if (!c->tmp)
-		return;
-	fflush(stdout);
-	fflush(stderr);
-	dup2(c->out, STDOUT_FILENO);
-	dup2(c->err, STDERR_FILENO);
-	close(c->out);
-	close(c->err);
-	rewind(c->tmp);
-	while (!ours && fgets(line, sizeof line, c->tmp)) {
-		line[strcspn(line, "\n")] = '\0';
-		ours = strncmp(line, "anvil: ", 7) == 0;
-		if (line[0])
-			snprintf(said, n, "%s", ours ? line + 7 : line);
-	}
-	fclose(c->tmp);
-	c->tmp = NULL;
 }
 
 /* ---- the actions ---- */
@@ -384,22 +367,20 @@ static void export_charts(struct tui *t)
 
 static void save_scene(struct tui *t)
 {
-	char path[TUI_PATH_MAX], said[512];
-	struct capture cap;
+	char path[TUI_PATH_MAX];
+	struct anvil_err err = {0};
 	struct cli_out o;
 	snprintf(path, sizeof path, "%s", tui_model_save_path(&t->m));
-	capture_begin(&cap);
-	int st = cli_out_open(&o, path);
+	int st = cli_out_open_err(&o, path, &err);
 	if (!st) {
 		st = anvil_scene_write(tui_model_scene(&t->m), o.f);
 		if (st)
 			cli_out_abort(&o);
 		else
-			st = cli_out_commit(&o);
+			st = cli_out_commit_err(&o, &err);
 	}
-	capture_end(&cap, said, sizeof said);
 	if (st)
-		tui_model_message(&t->m, 1, "%s", said[0] ? said : anvil_strerror(st));
+		tui_model_message(&t->m, 1, "%s", err.msg[0] ? err.msg : anvil_strerror(st));
 	else
 		tui_model_saved(&t->m, path);
 }

@@ -4,11 +4,13 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <curses.h>
 
 #include "params.h"
+#include "commands.h"
 #include "plot.h"
 #include "problem.h"
 #include "zener.h"
@@ -241,9 +243,24 @@ static void put_right(int y, int x, int w, attr_t a, const char *s)
 	put(y, x + (cols < w ? w - cols : 0), w, a, s);
 }
 
+/* The one verdict (verdict.h), first under the table: in the error colour
+ * when a body yields or cracks.  Returns the rows used. */
+static int draw_verdict(const struct tui_model *m, int y)
+{
+	char layer[320], imp[320];
+	int w = COLS - TABLE_X, fails = tui_model_verdict(m, layer, imp, sizeof layer);
+	if (fails < 0)
+		return 0;
+	putf(y, TABLE_X, w, attr(fails ? R_ERROR : R_INFO), "%s", layer);
+	if (!imp[0])
+		return 1;
+	putf(y + 1, TABLE_X, w, attr(R_ERROR), "%s", imp);
+	return 2;
+}
+
 static void draw_notes(const struct tui_model *m, int y)
 {
-	int w = COLS - TABLE_X, used = 0;
+	int w = COLS - TABLE_X, used = draw_verdict(m, y);
 	for (int i = 0; i < ANVIL_MODEL_COUNT && used < NOTES_ROWS; ++i) {
 		const struct tui_row *row = &m->rows[tui_model_order[i]];
 		const char *title = tui_model_title(tui_model_order[i]);
@@ -770,9 +787,42 @@ static void draw_help(const struct tui_model *m, const struct tui_view *v)
 	curs_set(0);
 }
 
+/* The plan of the rows on screen, as `anvil plan` prints it (the same
+ * function, the same object the worker ran). */
+static void draw_plan(const struct tui_model *m, const struct tui_view *v)
+{
+	char *text = NULL;
+	size_t len = 0;
+	(void)v;
+	bar(0, attr(R_TITLE));
+	put(0, 1, COLS - 2, attr(R_TITLE), "anvil tui: the plan (any key returns)");
+	FILE *f = m->have_plan && m->plan_gen == m->gen ? open_memstream(&text, &len) : NULL;
+	if (f) {
+		anvil_plan_print(f, &m->plan);
+		fclose(f);
+	}
+	if (!text) {
+		put(2, 2, COLS - 3, attr(R_NORMAL), "no plan yet: the worker is planning");
+		curs_set(0);
+		return;
+	}
+	int row = 1;
+	for (char *line = text, *nl; *line && row < LINES; line = nl + 1, ++row) {
+		nl = strchr(line, '\n');
+		if (!nl)
+			nl = line + strlen(line) - 1;
+		else
+			*nl = '\0';
+		put(row, 2, COLS - 3, attr(R_NORMAL), line);
+	}
+	free(text);
+	curs_set(0);
+}
+
 static void (*const screens[])(const struct tui_model *, const struct tui_view *) = {
 	[TUI_SCREEN_MAIN] = draw_main,
 	[TUI_SCREEN_HELP] = draw_help,
+	[TUI_SCREEN_PLAN] = draw_plan,
 };
 
 void tui_draw(const struct tui_model *m, const struct tui_view *v)

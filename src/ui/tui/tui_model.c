@@ -27,11 +27,15 @@ const char *const tui_help_lines[] = {
 	"  m                     next material of the selected body (clears its",
 	"                        E, nu, rho and yield overrides)",
 	"  a                     next accuracy level",
+	"  b                     impactor shape: rod (hemispherical tip) or ball",
+	"  D                     type the impactor's diameter (e.g. 10 mm)",
+	"  d                     type a drop height (e.g. 50 mm): V0 = sqrt(2 g H)",
 	"  v                     plot P(t), v(t), w(t), R_f(lambda*) or R_f(h)",
 	"  p                     export the charts as PNG (gnuplot) into the",
 	"                        current directory or $ANVIL_PNG_DIR",
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
 	"  Ctrl-L                repaint the screen",
+	"  P                     the plan: how each row is computed, and why",
 	"  ?, F1                 this help",
 	"  q                     quit (asks first when the scene has unsaved changes)",
 	"  Q                     quit without asking",
@@ -89,6 +93,7 @@ static const char *const labels[TUI_F_COUNT] = {
 	[TUI_F_LAYER] = "layer",
 	[TUI_F_MASS] = "mass",
 	[TUI_F_RADIUS] = "radius r0",
+	[TUI_F_SHAPE] = "shape",
 	[TUI_F_ACCURACY] = "accuracy",
 	[TUI_F_SHOW_LAYER] = "models",
 	[TUI_F_SHOW_HALFSPACE] = "",
@@ -155,12 +160,29 @@ void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 		snprintf(buf, n, "%s%s", b->material, has_overrides(b) ? "*" : "");
 	} else if (f == TUI_F_ACCURACY) {
 		snprintf(buf, n, "%s", anvil_accuracy_name(sc->accuracy));
+	} else if (f == TUI_F_SHAPE) {
+		snprintf(buf, n, "%s", anvil_shape_name(sc->shape));
 	} else if (mod >= 0) {
 		snprintf(buf, n, "[%c] %s", sc->models & (1u << mod) ? 'x' : ' ',
 			 tui_model_title((enum anvil_model)mod));
 	} else if (n) {
 		buf[0] = '\0';
 	}
+}
+
+int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n)
+{
+	if (n) {
+		layer[0] = '\0';
+		imp[0] = '\0';
+	}
+	if (!m->have_plan || m->plan_gen != m->gen)
+		return -1;
+	const struct anvil_verdict *v = &m->plan.verdict;
+	anvil_verdict_text(v, layer, n);
+	if (v->imp.fate != ANVIL_HERTZ_ELASTIC)
+		anvil_verdict_impactor_text(v, imp, n);
+	return anvil_verdict_fails(v);
 }
 
 /* ---- messages ---- */
@@ -320,6 +342,15 @@ int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 	return 1;
 }
 
+void tui_model_deliver_plan(struct tui_model *m, unsigned gen, const struct anvil_plan *pl)
+{
+	if (gen != m->gen)
+		return;
+	m->plan = *pl;
+	m->plan_gen = gen;
+	m->have_plan = 1;
+}
+
 void tui_model_progress(struct tui_model *m, unsigned gen, double fraction,
 			const char *what)
 {
@@ -452,6 +483,7 @@ static int field_body(int f)
 	case TUI_F_IMPACTOR:
 	case TUI_F_MASS:
 	case TUI_F_RADIUS:
+	case TUI_F_SHAPE:
 		return 1;
 	case TUI_F_THICK_MM:
 	case TUI_F_THICK_R0:
@@ -467,6 +499,13 @@ static enum tui_action cycle_accuracy(struct tui_model *m, int dir)
 	int a = (((int)m->sc.accuracy + dir) % ANVIL_ACC_COUNT + ANVIL_ACC_COUNT) %
 		ANVIL_ACC_COUNT;
 	return apply(m, "solver.accuracy", anvil_accuracy_name((enum anvil_accuracy)a));
+}
+
+static enum tui_action cycle_shape(struct tui_model *m, int dir)
+{
+	int s = (((int)m->sc.shape + dir) % ANVIL_SHAPE_COUNT + ANVIL_SHAPE_COUNT) %
+		ANVIL_SHAPE_COUNT;
+	return apply(m, "impactor.shape", anvil_shape_name((enum anvil_shape)s));
 }
 
 static enum tui_action toggle_model(struct tui_model *m, int model)
@@ -492,6 +531,8 @@ static enum tui_action change(struct tui_model *m, int dir, int coarse)
 		return cycle_material(m, f == TUI_F_IMPACTOR, dir);
 	if (f == TUI_F_ACCURACY)
 		return cycle_accuracy(m, dir);
+	if (f == TUI_F_SHAPE)
+		return cycle_shape(m, dir);
 	if (field_model(f) >= 0)
 		return toggle_model(m, field_model(f));
 	return TUI_ACT_NONE;
@@ -514,7 +555,8 @@ static enum tui_action edit_field(struct tui_model *m)
 	static const char *const keys[TUI_F_COUNT] = {
 		[TUI_F_IMPACTOR] = "impactor.material",
 		[TUI_F_LAYER] = "layer.material",
-		[TUI_F_ACCURACY] = "solver.accuracy"};
+		[TUI_F_ACCURACY] = "solver.accuracy",
+		[TUI_F_SHAPE] = "impactor.shape"};
 	char text[TUI_EDIT_MAX];
 	int f = m->sel;
 	if (field_model(f) >= 0)
@@ -633,6 +675,19 @@ static enum tui_action material_key(struct tui_model *m)
 	return cycle_material(m, body, +1);
 }
 
+/* D, d: the diameter and the drop height, typed with their unit through
+ * the text field (the scene replaces the radius, the velocity); the field
+ * opens on the values in use (the drop height V0^2 / 2g of the velocity). */
+static enum tui_action geometry_edit(struct tui_model *m, int drop)
+{
+	char text[64];
+	double g = ANVIL_G_STANDARD;
+	double x = drop ? 0.5 * m->sc.velocity * m->sc.velocity / g : 2 * m->sc.radius;
+	snprintf(text, sizeof text, "%.6g mm", x * 1e3);
+	edit_begin(m, drop ? "impact.drop_height" : "impactor.diameter", "mm", text);
+	return TUI_ACT_REDRAW;
+}
+
 static enum tui_action main_key(struct tui_model *m, int key)
 {
 	switch (key) {
@@ -651,6 +706,9 @@ static enum tui_action main_key(struct tui_model *m, int key)
 						: TUI_ACT_NONE;
 	case 'm': return material_key(m);
 	case 'a': return cycle_accuracy(m, +1);
+	case 'b': return cycle_shape(m, +1);
+	case 'D': return geometry_edit(m, 0);
+	case 'd': return geometry_edit(m, 1);
 	case 'v':
 		m->quantity = (enum tui_quantity)((m->quantity + 1) % TUI_Q_COUNT);
 		return TUI_ACT_REDRAW;
@@ -658,6 +716,9 @@ static enum tui_action main_key(struct tui_model *m, int key)
 	case 's': return TUI_ACT_SAVE;
 	case '?': case TUI_KEY_HELP:
 		m->screen = TUI_SCREEN_HELP;
+		return TUI_ACT_REDRAW;
+	case 'P':
+		m->screen = TUI_SCREEN_PLAN;
 		return TUI_ACT_REDRAW;
 	case 'q':
 		if (!m->modified)
@@ -696,7 +757,7 @@ enum tui_action tui_model_key(struct tui_model *m, int key)
 {
 	if (m->confirm_quit)
 		return confirm_key(m, key);
-	if (m->screen == TUI_SCREEN_HELP)
+	if (m->screen == TUI_SCREEN_HELP || m->screen == TUI_SCREEN_PLAN)
 		return help_key(m, key);
 	if (m->editing)
 		return edit_key(m, key);

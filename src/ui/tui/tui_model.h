@@ -59,6 +59,7 @@ enum tui_field {
 	TUI_F_LAYER,      /* layer material */
 	TUI_F_MASS,
 	TUI_F_RADIUS,
+	TUI_F_SHAPE,      /* impactor.shape: rod or ball */
 	TUI_F_ACCURACY,
 	TUI_F_SHOW_LAYER, /* which models are computed and shown */
 	TUI_F_SHOW_HALFSPACE,
@@ -71,7 +72,7 @@ enum tui_field {
 enum tui_quantity { TUI_Q_FORCE, TUI_Q_VELOCITY, TUI_Q_DEFLECTION, TUI_Q_RF_LAMBDA,
 		    TUI_Q_RF_THICKNESS, TUI_Q_COUNT };
 
-enum tui_screen { TUI_SCREEN_MAIN, TUI_SCREEN_HELP };
+enum tui_screen { TUI_SCREEN_MAIN, TUI_SCREEN_HELP, TUI_SCREEN_PLAN };
 
 enum tui_row_state {
 	TUI_ROW_OFF,     /* model not selected */
@@ -135,6 +136,11 @@ struct tui_model {
 	double run_seconds;         /* solver time spent for gen */
 	int run_cached, run_computed; /* rows of gen from cache / computed */
 	struct tui_row rows[ANVIL_MODEL_COUNT]; /* by enum anvil_model */
+	/* The plan the worker ran generation plan_gen's rows from (the same
+	 * object `anvil plan` prints); have_plan 0 until one arrives. */
+	int have_plan;
+	unsigned plan_gen;
+	struct anvil_plan plan;
 	unsigned long stamp;
 	struct tui_cache_entry cache[TUI_CACHE_SIZE];
 };
@@ -172,6 +178,9 @@ const struct anvil_scene *tui_model_scene(const struct tui_model *m);
  * when dropped as stale or cancelled. */
 int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 		      int status, const char *msg, struct anvil_result *r);
+/* The plan of generation gen, as the worker made it and ran its rows from
+ * (copied; ignored when stale). */
+void tui_model_deliver_plan(struct tui_model *m, unsigned gen, const struct anvil_plan *pl);
 /* Progress of the running job of generation gen (ignored when stale). */
 void tui_model_progress(struct tui_model *m, unsigned gen, double fraction,
 			const char *what);
@@ -184,6 +193,13 @@ void tui_model_message(struct tui_model *m, int error, const char *fmt, ...)
 const char *tui_model_save_path(const struct tui_model *m);
 /* After a successful save to path. */
 void tui_model_saved(struct tui_model *m, const char *path);
+
+/* The one verdict (verdict.h) of the current generation's plan (the
+ * quasi-static Hertz contact, as `anvil plan` prints it): the layer's line
+ * into layer, the impactor's into imp when it yields or cracks ("" when it
+ * does not).  Returns -1 with no plan yet for this generation (both ""), 1
+ * when a body yields or cracks, 0 when not (or not judged). */
+int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n);
 
 /* The label and the value (with its unit) of a panel row. */
 const char *tui_field_label(enum tui_field f);

@@ -1,0 +1,187 @@
+/* verdict.c: the one verdict on the layer (verdict.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "hertz.h"
+#include "verdict.h"
+
+/* The instants around the peak force at which the edge tension is read. */
+#define EDGE_NT 5
+
+static void criterion(const struct anvil_problem *pb, struct anvil_verdict *v)
+{
+	const struct anvil_material *m = &pb->layer;
+	memset(v, 0, sizeof *v);
+	snprintf(v->material, sizeof v->material, "%s", m->name);
+	v->brittle = m->brittle;
+	v->limit = m->brittle ? m->tensile : m->yield;
+	v->known = v->limit > 0;
+}
+
+static void judge(struct anvil_verdict *v)
+{
+	v->fate = ANVIL_HERTZ_ELASTIC;
+	if (v->known && v->stress > v->limit)
+		v->fate = v->brittle ? ANVIL_HERTZ_CRACKS : ANVIL_HERTZ_YIELDS;
+}
+
+/* Quasi-static Hertz at its peak: alpha_max = (5/4)^(2/5) T V0, t_s/2. */
+static int quasi_static(const struct anvil_problem *pb, struct anvil_verdict *v)
+{
+	const struct anvil_params *p = &pb->p;
+	double al = anvil_hertz_alpha_max() * p->T * p->V0, P = p->K * pow(al, 1.5);
+	double a = sqrt(p->r0 * al), p0 = 1.5 * P / (M_PI * a * a);
+	struct anvil_hertz_verdict hv;
+	int st = anvil_hertz_judge(a, p0, p->nu, NAN, NAN, &hv);
+	if (st)
+		return st;
+	v->a = a;
+	v->p0 = p0;
+	v->t = 0.5 * anvil_hertz_tau_s() * p->T;
+	v->r = v->brittle ? a : 0;
+	v->z = v->brittle ? 0 : hv.z_vm;
+	v->stress = v->brittle ? hv.tension : hv.vm;
+	v->err = 1e-10 * v->stress;
+	return ANVIL_OK;
+}
+
+/* The impactor under the layer's contact (a, p0): the Hertz field with
+ * its own nu, against its own criterion (verdict.h). */
+static int impactor(const struct anvil_problem *pb, struct anvil_verdict *v)
+{
+	const struct anvil_material *m = &pb->impactor;
+	struct anvil_verdict_impactor *im = &v->imp;
+	struct anvil_hertz_verdict hv;
+	memset(im, 0, sizeof *im);
+	snprintf(im->material, sizeof im->material, "%s", m->name);
+	im->brittle = m->brittle;
+	im->limit = m->brittle ? m->tensile : m->yield;
+	im->known = im->limit > 0;
+	im->fate = ANVIL_HERTZ_ELASTIC;
+	if (!(v->a > 0 && v->p0 > 0))
+		return ANVIL_OK; /* no contact, no stress */
+	int st = anvil_hertz_judge(v->a, v->p0, m->nu, NAN, NAN, &hv);
+	if (st)
+		return st;
+	im->stress = im->brittle ? hv.tension : hv.vm;
+	im->z = im->brittle ? 0 : hv.z_vm;
+	if (im->known && im->stress > im->limit)
+		im->fate = im->brittle ? ANVIL_HERTZ_CRACKS : ANVIL_HERTZ_YIELDS;
+	return ANVIL_OK;
+}
+
+/* The largest radial stress at the edge r = a(t) of the contact, z = 0,
+ * at instants around the peak force. */
+static int edge_tension(struct anvil_field *f, const struct anvil_field_peak *pk,
+			struct anvil_verdict *v, struct anvil_err *err)
+{
+	double t[EDGE_NT], r[EDGE_NT], z[EDGE_NT] = {0}, tl = anvil_field_t_load(f);
+	struct anvil_fval o[EDGE_NT * EDGE_NT];
+	for (int i = 0; i < EDGE_NT; i++) {
+		t[i] = fmin(tl, fmax(1e-3 * tl, pk->t + (i - EDGE_NT / 2) * tl / 200));
+		r[i] = anvil_field_contact_radius(f, anvil_field_load(f, t[i]));
+	}
+	int st = anvil_field_points(f, EDGE_NT, r, z, EDGE_NT, t, o, err);
+	v->stress = -INFINITY;
+	for (int i = 0; !st && i < EDGE_NT; i++) {
+		const struct anvil_fval *x = &o[i * EDGE_NT + i];
+		if (x->v[ANVIL_FQ_SRR] > v->stress) {
+			v->stress = x->v[ANVIL_FQ_SRR];
+			v->err = x->err[ANVIL_FQ_SRR];
+			v->t = t[i];
+			v->r = r[i];
+		}
+	}
+	v->z = 0;
+	return st;
+}
+
+int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
+		       struct anvil_verdict *v, struct anvil_err *err)
+{
+	criterion(pb, v);
+	if (!f) {
+		int st = quasi_static(pb, v);
+		judge(v);
+		return st ? st : impactor(pb, v);
+	}
+	struct anvil_field_peak pk;
+	anvil_field_set_contact(f, 1);
+	v->dynamic = 1;
+	int st = anvil_field_peak(f, 0, &pk, err);
+	if (st)
+		return st;
+	if (v->brittle) {
+		st = edge_tension(f, &pk, v, err);
+	} else {
+		v->stress = pk.vm;
+		v->err = pk.vm_err;
+		v->r = pk.r;
+		v->z = pk.z;
+		v->t = pk.t;
+	}
+	double P = anvil_field_load(f, v->t);
+	v->a = anvil_field_contact_radius(f, P);
+	v->p0 = v->a > 0 ? 1.5 * P / (M_PI * v->a * v->a) : 0;
+	judge(v);
+	return st ? st : impactor(pb, v);
+}
+
+int anvil_verdict_fails(const struct anvil_verdict *v)
+{
+	return v->fate != ANVIL_HERTZ_ELASTIC || v->imp.fate != ANVIL_HERTZ_ELASTIC;
+}
+
+/* A stress in MPa below 1 GPa, else GPa, 3 significant digits. */
+static void stress_text(double s, char *buf, size_t n)
+{
+	if (fabs(s) >= 1e9)
+		snprintf(buf, n, "%.3g GPa", s * 1e-9);
+	else
+		snprintf(buf, n, "%.3g MPa", s * 1e-6);
+}
+
+void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	char s[32], l[32], where[96];
+	const char *what = v->fate == ANVIL_HERTZ_YIELDS   ? "yields"
+			   : v->fate == ANVIL_HERTZ_CRACKS ? "cracks"
+			   : !v->known                     ? "is not judged"
+							   : "stays elastic";
+	stress_text(v->stress, s, sizeof s);
+	stress_text(v->limit, l, sizeof l);
+	if (v->brittle)
+		snprintf(where, sizeof where, "at the contact edge r = a = %.3g mm", v->a * 1e3);
+	else if (v->r <= 0.5 * v->a)
+		snprintf(where, sizeof where, "at %.2g a = %.3g mm below the contact",
+			 v->a > 0 ? v->z / v->a : 0, v->z * 1e3);
+	else
+		snprintf(where, sizeof where, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
+	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s", v->material, what,
+		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
+		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
+		 v->dynamic ? "" : " (quasi-static Hertz)",
+		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "");
+}
+
+void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	const struct anvil_verdict_impactor *im = &v->imp;
+	char s[32], l[32], where[96];
+	const char *what = im->fate == ANVIL_HERTZ_YIELDS   ? "yields"
+			   : im->fate == ANVIL_HERTZ_CRACKS ? "cracks"
+			   : !im->known                     ? "is not judged"
+							    : "stays elastic";
+	stress_text(im->stress, s, sizeof s);
+	stress_text(im->limit, l, sizeof l);
+	if (im->brittle)
+		snprintf(where, sizeof where, "at the contact edge");
+	else
+		snprintf(where, sizeof where, "at %.2g a = %.3g mm inside its tip",
+			 v->a > 0 ? im->z / v->a : 0, im->z * 1e3);
+	snprintf(buf, n, "the %s impactor %s under the same contact: %s %s %s, %s%s%s", im->material,
+		 what, im->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
+		 im->brittle ? "tensile strength " : "Y = ", im->known ? l : "unknown",
+		 !im->known ? (im->brittle ? ": set impactor.tensile" : ": set impactor.yield") : "");
+}

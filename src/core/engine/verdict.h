@@ -1,0 +1,89 @@
+/* verdict.h: will the layer fail under the contact?  One verdict, which
+ * `anvil plan`, `anvil run`, `anvil field` and the TUI all take from here.
+ *
+ * The criterion is the layer material's: a ductile layer yields when the
+ * peak von Mises stress exceeds its yield stress Y; a brittle one
+ * (material.h: glass, cemented carbide) cracks when the tensile radial
+ * stress at the contact edge, (1 - 2 nu) p0 / 3 under Hertz (Johnson 1985
+ * eq. 3.41), exceeds its tensile strength.  The stresses are those of the
+ * true contact of radius a(t) = sqrt(R alpha_H(t)) (field.h,
+ * anvil_field_set_contact), not of the paper's r0 patch: for a 50 g steel
+ * ball (R = 11.5 mm) at 3 m/s on a steel block the r0 patch gave 19 MPa,
+ * the true contact about 3.4 GPa.
+ *
+ * Two inputs, one function:
+ *   f NULL: quasi-static Hertz at its peak force (no run: what `anvil
+ *     plan` can say); closed form, accurate to 1e-10;
+ *   f the field of an impact (anvil_solver_verdict makes it): the Hertz
+ *     field of a(t) plus the dynamic remainder, its peak searched in space
+ *     and time, with the field's error estimate.
+ * For a block the two agree within the waves' share (the remainder near
+ * the contact is O(radiated fraction)); for a thin plate the field adds
+ * the bending stresses and the plate's lower force. */
+#ifndef ANVIL_VERDICT_H
+#define ANVIL_VERDICT_H
+
+#include <stddef.h>
+
+#include "field.h"
+#include "hertz_field.h"
+#include "problem.h"
+
+struct anvil_plan;   /* plan.h, which holds a verdict */
+struct anvil_solver; /* solver.h */
+
+/* The impactor under the same contact: the pressure on its tip is the
+ * layer's, so the same Hertz field with the impactor's own nu (Johnson
+ * 1985, sec. 4.2: each body of a Hertz contact carries the half-space
+ * field of its own elastic constants), judged against its own Y, or for a
+ * brittle impactor its tensile strength.  Quasi-static always: the
+ * impactor's waves are not modelled (a rigid-body impactor), so its field
+ * is the Hertz one at the layer verdict's contact (a, p0). */
+struct anvil_verdict_impactor {
+	enum anvil_hertz_fate fate; /* ELASTIC, YIELDS or CRACKS */
+	int known, brittle;         /* as for the layer */
+	char material[ANVIL_NAME_MAX];
+	double stress, limit;       /* Pa; accurate to 1e-10 (closed form) */
+	double z;                   /* depth of the von Mises peak inside the tip, m */
+};
+
+struct anvil_verdict {
+	enum anvil_hertz_fate fate; /* ELASTIC, YIELDS or CRACKS */
+	int known;     /* 0: the layer's Y (brittle: tensile strength) unknown: not judged */
+	int brittle;   /* the criterion: 1 edge tension, 0 von Mises */
+	int dynamic;   /* 1: from an impact's field, 0: quasi-static Hertz */
+	char material[ANVIL_NAME_MAX]; /* the layer's */
+	double stress, err; /* the peak von Mises or edge tension and its error, Pa */
+	double limit;       /* Y or the tensile strength, Pa; 0 unknown */
+	double r, z, t;     /* where (m) and when (s) */
+	double a, p0;       /* contact radius (m) and peak pressure (Pa) at t */
+	struct anvil_verdict_impactor imp; /* the impactor under the same (a, p0) */
+};
+
+/* The verdict on pb's layer, from field f (true contact turned on here) or,
+ * f NULL, from quasi-static Hertz, and on its impactor (v->imp) under the
+ * same contact.  ANVIL_OK, or the field's status (or hertz_field.h's). */
+int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
+		       struct anvil_verdict *v, struct anvil_err *err);
+
+/* The verdict of plan pl's impact (engine/yield.c): run its layer row (the
+ * halfspace row when h = inf) with the histories the field needs, make the
+ * field, anvil_verdict_make.  Returns the run's status (ANVIL_WTOL: the
+ * impact missed its target, v still filled) or the field's.  The results
+ * are the solver's cache's: a run of the same plan costs no second run. */
+int anvil_solver_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
+			 struct anvil_verdict *v, struct anvil_err *err);
+
+/* One line without a newline: "the steel layer yields: peak von Mises
+ * 3.41 GPa at 0.48 a = 0.42 mm below the contact at t = 32.5 us, Y = 1 GPa". */
+void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n);
+
+/* The impactor's line, without a newline: "the copper impactor yields
+ * under the same contact: peak von Mises 3.04 GPa at 0.48 a = 0.11 mm
+ * inside its tip, Y = 57 MPa". */
+void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n);
+
+/* 1 when the layer or the impactor yields or cracks. */
+int anvil_verdict_fails(const struct anvil_verdict *v);
+
+#endif

@@ -1,0 +1,49 @@
+/* fastconv.h: online (causal) discrete convolution in O(N log^2 N).
+ *
+ *   c_n = sum_{m < n} x_m g_{n-m},   n = 0 .. cap-1,
+ *
+ * where x_m becomes known one at a time and c_n is needed before x_n is
+ * (an implicit time step: x_n depends on c_n).  The pairs (m, n), m < n,
+ * are tiled by squares after Hairer, Lubich and Schlichte (SIAM J. Sci.
+ * Stat. Comput. 6, 1985): the pair belongs to level k, the highest bit in
+ * which m and n differ, and level k's squares are the sources
+ * [2jB, (2j+1)B) against the targets [(2j+1)B, (2j+2)B), B = 2^k.  When
+ * x_{L-1} is pushed, L = (2j+1)B with k = ctz(L), that one square is added
+ * to the targets' accumulators: by direct products for B <= direct_max,
+ * else by one real FFT of size 2B (GSL radix-2) against the level's kernel
+ * spectrum, computed once.  Exact in exact arithmetic; the rounding of an
+ * FFT square is about eps log2(2B) sum |x_m g_{n-m}| (tests/test_fastconv.c
+ * measures it).  Deterministic: the same pushes give the same bits. */
+#ifndef ANVIL_FASTCONV_H
+#define ANVIL_FASTCONV_H
+
+#include <stddef.h>
+
+/* Squares of side <= this are summed directly (faster than two FFTs there:
+ * scripts/bench, section "long contacts", measured the cross-over). */
+#define ANVIL_FASTCONV_DIRECT 64
+
+struct anvil_fastconv;
+
+/* A convolution against the kernel g_0 .. g_{cap-1} (copied; g_0 is never
+ * used: the sum is strictly causal) for up to cap pushes.  direct_max: the
+ * side up to which squares are summed directly (0: ANVIL_FASTCONV_DIRECT;
+ * (size_t)-1: all of them, the O(N^2) direct sum in the same order of
+ * squares).  NULL when out of memory or cap = 0. */
+struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max);
+void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
+
+/* Forget the pushed values (same kernel): as new. */
+void anvil_fastconv_reset(struct anvil_fastconv *f);
+
+/* c_n, n = the number of values pushed so far (complete: every x_m, m < n,
+ * is in it).  0 when n >= cap. */
+double anvil_fastconv_next(const struct anvil_fastconv *f);
+
+/* Push x_n; returns 0, or -1 when cap values have been pushed already. */
+int anvil_fastconv_push(struct anvil_fastconv *f, double x);
+
+/* The number of values pushed. */
+size_t anvil_fastconv_count(const struct anvil_fastconv *f);
+
+#endif

@@ -1,0 +1,102 @@
+/* test_fastconv: the online fast convolution (fastconv.c) against the
+ * direct sum in long double, on random data and on the impact's own kind
+ * of kernel; determinism; the error path. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "fastconv.h"
+#include "tap.h"
+
+/* A reproducible uniform number in [-1, 1) (xorshift64). */
+static double urand(unsigned long long *s)
+{
+	*s ^= *s << 13;
+	*s ^= *s >> 7;
+	*s ^= *s << 17;
+	return (double)(*s >> 11) / 4503599627370496.0 - 1.0;
+}
+
+/* Worst |c_fast - c_exact| / sum |x_m g_{n-m}| over n, with c_fast from
+ * pushing x through f (c_n read before x_n is pushed, as the scheme does). */
+static double worst_error(struct anvil_fastconv *f, const double *x, const double *g, size_t N)
+{
+	double worst = 0;
+	for (size_t n = 0; n < N; n++) {
+		long double c = 0, a = 0;
+		for (size_t m = 0; m < n; m++) {
+			c += (long double)x[m] * g[n - m];
+			a += fabsl((long double)x[m] * g[n - m]);
+		}
+		double e = a > 0 ? (double)(fabsl(anvil_fastconv_next(f) - c) / a) : fabs(anvil_fastconv_next(f));
+		worst = fmax(worst, e);
+		anvil_fastconv_push(f, x[n]);
+	}
+	return worst;
+}
+
+static void test_random(size_t N, size_t direct_max, double bound, const char *what)
+{
+	unsigned long long s = 88172645463325252ULL + N;
+	double *x = malloc(N * sizeof *x), *g = malloc(N * sizeof *g);
+	for (size_t i = 0; i < N; i++) {
+		x[i] = urand(&s);
+		g[i] = urand(&s) / (1.0 + 0.01 * (double)i);
+	}
+	struct anvil_fastconv *f = anvil_fastconv_alloc(g, N, direct_max);
+	double e = worst_error(f, x, g, N);
+	ok(e < bound, "%s, N = %zu: worst error %.2g of sum |x g| (< %.0g)", what, N, e, bound);
+	anvil_fastconv_free(f);
+	free(x);
+	free(g);
+}
+
+/* The impact's kernel: second differences of a ramp response, here of
+ * R(t) = t^2/2 + sin(t) - t (a plate-like late part plus an oscillation),
+ * against a smooth positive force pulse; and two runs give the same bits. */
+static void test_impact_like(void)
+{
+	size_t N = 5000;
+	double dt = 0.01, *x = malloc(N * sizeof *x), *g = malloc(N * sizeof *g);
+	for (size_t j = 0; j < N; j++) {
+		double t = (double)j * dt, R0 = t * t / 2 + sin(t) - t;
+		double Rp = t + dt, Rm = t - dt;
+		double R1 = Rp * Rp / 2 + sin(Rp) - Rp, Rm1 = j ? Rm * Rm / 2 + sin(Rm) - Rm : 0;
+		g[j] = (R1 - 2 * R0 + Rm1) / dt;
+		x[j] = pow(fmax(sin(M_PI * t / 30.0), 0.0), 1.5);
+	}
+	struct anvil_fastconv *f = anvil_fastconv_alloc(g, N, 0);
+	double e = worst_error(f, x, g, N);
+	ok(e < 5e-15, "impact-like kernel, N = %zu: worst error %.2g of sum |x g|", N, e);
+	double last = anvil_fastconv_next(f);
+	anvil_fastconv_reset(f);
+	for (size_t n = 0; n + 1 < N; n++)
+		anvil_fastconv_push(f, x[n]);
+	ok(anvil_fastconv_count(f) == N - 1 && anvil_fastconv_next(f) != last,
+	   "reset forgets the pushed values");
+	double c1 = anvil_fastconv_next(f);
+	anvil_fastconv_reset(f);
+	for (size_t n = 0; n + 1 < N; n++)
+		anvil_fastconv_push(f, x[n]);
+	ok(anvil_fastconv_next(f) == c1, "the same pushes give the same bits");
+	anvil_fastconv_push(f, x[N - 1]);
+	ok(anvil_fastconv_push(f, 1.0) == -1 && anvil_fastconv_next(f) == 0.0,
+	   "a push past the capacity is refused");
+	anvil_fastconv_free(f);
+	free(x);
+	free(g);
+}
+
+int main(void)
+{
+	/* the bound: eps log2(N) times a small constant (rounding of the FFT) */
+	test_random(1000, (size_t)-1, 1e-15, "direct squares");
+	test_random(1000, 0, 5e-15, "FFT squares");
+	test_random(4097, 8, 5e-15, "FFT squares from side 16");
+	test_random(3, 0, 1e-16, "tiny");
+	test_impact_like();
+	ok(anvil_fastconv_alloc(NULL, 0, 0) == NULL, "capacity 0 is refused");
+	anvil_fastconv_free(NULL);
+	plan(tap_n);
+	return done_testing();
+}

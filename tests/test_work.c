@@ -1,0 +1,128 @@
+/* test_work.c: the planner predicts the work of a layer response (issue 11).
+ *
+ * For a seeded random sample of scenes spanning thickness, velocity, mass,
+ * the built-in material pairs and the accuracy levels, the plan's layer
+ * job (window of attempt 0, bandwidth) is handed to green.c exactly as the
+ * solver does (the response with its twin), and the planner's predicted
+ * kernel evaluations (anvil_plan_corr_evals, what the cost model prices)
+ * are compared with the count green.c reports: deterministic counts, not
+ * seconds (scripts/bench compares seconds).  Each must be within a factor
+ * of 2.  Of the 300 scenes drawn (h/r0 0.1-30, V0 0.1-100 m/s, m 1 g-1 kg),
+ * those whose response the planner itself predicts to cost more than
+ * EVALS_MAX evaluations are left out to keep make check short (about 10 s;
+ * ANVIL_TEST_N and ANVIL_TEST_EMAX widen the run, ANVIL_TEST_DUMP prints
+ * every pair); the others are run with effects.waves = layer, so every
+ * scene with a reflection inside its window counts, and with the paper's
+ * contact, whose r0-patch response (and twin) is what the planner prices. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "cache.h"
+#include "green.h"
+#include "plan.h"
+#include "scene_run.h"
+#include "tap.h"
+
+#define NSCENES (getenv("ANVIL_TEST_N") ? atoi(getenv("ANVIL_TEST_N")) : 300)
+#define EVALS_MAX (getenv("ANVIL_TEST_EMAX") ? atof(getenv("ANVIL_TEST_EMAX")) : 4.0e4)
+
+/* A deterministic generator (a 64-bit LCG, Knuth's MMIX constants): the
+ * sample is the same on every machine. */
+static double uniform(unsigned long long *x)
+{
+	*x = *x * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*x >> 11) / 9007199254740992.0;
+}
+
+static const char *const materials[] = { "steel", "copper", "aluminium", "glass", "titanium",
+					 "tungsten-carbide",
+					 "pmma" };
+static const char *const levels[] = { "draft", "normal" };
+
+static int sample_scene(unsigned long long *seed, struct anvil_scene *sc, char *what, size_t n)
+{
+	char h[32], v[32], m[32];
+	struct anvil_err e;
+	double hh = exp(log(0.1) + uniform(seed) * log(300.0));
+	double v0 = exp(log(0.1) + uniform(seed) * log(1000.0));
+	double m1 = exp(log(1e-3) + uniform(seed) * log(1000.0));
+	const char *mi = materials[(int)(uniform(seed) * 7)], *ml = materials[(int)(uniform(seed) * 7)];
+	const char *lv = levels[(int)(uniform(seed) * 2)];
+	snprintf(h, sizeof h, "%.4gr0", hh);
+	snprintf(v, sizeof v, "%.4g m/s", v0);
+	snprintf(m, sizeof m, "%.4g kg", m1);
+	snprintf(what, n, "%s on %s, h %s, V0 %s, m %s, %s", mi, ml, h, v, m, lv);
+	anvil_scene_default(sc);
+	const char *kv[] = { "layer.thickness", h, "impact.velocity", v, "impactor.mass", m,
+			     "impactor.material", mi, "layer.material", ml, "solver.accuracy", lv,
+			     "effects.waves", "layer", "effects.contact", "paper", NULL };
+	for (int i = 0; kv[i]; i += 2)
+		if (anvil_scene_set(sc, kv[i], kv[i + 1], "test", 0, &e))
+			return -1;
+	return 0;
+}
+
+int main(void)
+{
+	plan(2);
+	unsigned long long seed = 7; /* not the fit's (plan.c: refine) */
+	int tried = 0, within = 0, skipped = 0;
+	double worst_lo = 1, worst_hi = 1, hmin = INFINITY, hmax = 0;
+	char what[200], worst[300] = "";
+	for (int i = 0; i < NSCENES; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		struct anvil_err e;
+		if (sample_scene(&seed, &sc, what, sizeof what) || scene_plan(&sc, &pl, &e))
+			continue;
+		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+		const struct anvil_wave_job *j = &r->job;
+		double tau_end = anvil_wave_window(j, 0);
+		if (r->status || r->method != ANVIL_METHOD_LAYER ||
+		    !anvil_wave_needs_corr(&pl.pb.p, j, tau_end))
+			continue;
+		double om = anvil_cache_grid(j->omega_idx);
+		double tq = anvil_cache_grid(anvil_cache_grid_up(tau_end));
+		double pred = anvil_plan_corr_evals(j->hh, pl.pb.p.nu, om, tq, pl.pb.accuracy);
+		if (!(pred <= EVALS_MAX)) {
+			skipped++;
+			continue;
+		}
+		struct anvil_green_settings gs;
+		struct anvil_green *tw = NULL;
+		anvil_green_settings(pl.pb.accuracy, &gs);
+		gs.omega_max = om;
+		struct anvil_green *g = anvil_green_alloc_twin(ANVIL_GREEN_LAYER_CORRECTION, j->hh,
+							       pl.pb.p.nu, tq, &gs, NULL, NULL, &tw, &e);
+		if (!g) {
+			diag("%s: %s", what, e.msg);
+			continue;
+		}
+		double got = (double)anvil_green_evals(g), q = pred / got;
+		if (getenv("ANVIL_TEST_DUMP"))
+			diag("ROW %g %d %g %g %g %g %g", j->hh, (int)pl.pb.accuracy, pl.pb.p.nu, om, tq,
+			     pred, got);
+		tried++;
+		within += q >= 0.5 && q <= 2.0;
+		hmin = fmin(hmin, j->hh);
+		hmax = fmax(hmax, j->hh);
+		if (q < worst_lo || q > worst_hi) {
+			snprintf(worst, sizeof worst, "%s: predicted %.0f, did %.0f", what, pred, got);
+			if (getenv("ANVIL_TEST_VERBOSE"))
+				diag("%s", worst);
+		}
+		worst_lo = fmin(worst_lo, q);
+		worst_hi = fmax(worst_hi, q);
+		anvil_green_free(g);
+		anvil_green_free(tw);
+	}
+	diag("%d scenes computed (h/r0 %.3g-%.3g), %d left out as too costly for make check",
+	     tried, hmin, hmax, skipped);
+	diag("predicted/actual kernel evaluations from %.2f to %.2f; worst: %s", worst_lo, worst_hi,
+	     worst);
+	ok(tried >= 80, "at least 80 layer responses in the sample (%d)", tried);
+	ok(within == tried, "the planner's kernel evaluations within 2x of green.c's on %d of %d",
+	   within, tried);
+	return done_testing();
+}
