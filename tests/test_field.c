@@ -184,6 +184,7 @@ static int impact_make(struct impact *m, const char *thick, const char *acc)
 	struct anvil_err e = {0};
 	struct anvil_solver *s = anvil_solver_alloc();
 	anvil_scene_default(&m->sc);
+	m->sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	anvil_scene_set(&m->sc, "layer.thickness", thick, "test", 0, &e);
 	anvil_scene_set(&m->sc, "solver.accuracy", acc, "test", 0, &e);
 	enum anvil_model md = isinf(anvil_scene_h(&m->sc)) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
@@ -296,6 +297,7 @@ static void params_of(const char *thick, struct anvil_params *p)
 {
 	struct anvil_scene sc;
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	anvil_scene_set(&sc, "layer.thickness", thick, "test", 0, NULL);
 	anvil_params_from_scene(p, &sc, NULL);
 }

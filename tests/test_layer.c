@@ -46,6 +46,7 @@ static int set(struct anvil_scene *sc, const char *key, const char *fmt, double 
 static void paper_scene(struct anvil_scene *sc, const struct row *r, enum anvil_accuracy acc)
 {
 	anvil_scene_default(sc);
+	sc->effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	sc->accuracy = acc;
 	set(sc, "impact.velocity", "%g m/s", r->V0);
 	if (isinf(r->h_r0))
@@ -139,6 +140,7 @@ static void test_thick_is_halfspace(void)
 	struct anvil_result a, b;
 	struct anvil_err e;
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	set(&sc, "layer.thickness", "%g r0", 1000);
 	run(&sc, ANVIL_MODEL_LAYER, &a, &e);
 	run(&sc, ANVIL_MODEL_HALFSPACE, &b, &e);
@@ -155,6 +157,7 @@ static void hard(const char *what, const char *key, const char *value)
 	struct anvil_result r, d;
 	struct anvil_err e = { 0 }, ed = { 0 };
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	if (key && anvil_scene_set(&sc, key, value, "test", 0, &e)) {
 		ok(0, "%s: scene: %s", what, e.msg);
 		return;
@@ -203,6 +206,7 @@ static void test_continuity(void)
 		struct anvil_result x, y;
 		struct anvil_err e;
 		anvil_scene_default(&sc);
+		sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 		anvil_scene_set(&sc, "layer.thickness", "2 r0", "test", 0, NULL);
 		anvil_scene_set(&sc, keys[i], a[i], "test", 0, NULL);
 		run(&sc, ANVIL_MODEL_LAYER, &x, &e);
@@ -223,6 +227,7 @@ static void test_paper_scheme(void)
 		struct anvil_result p, q;
 		struct anvil_err e;
 		anvil_scene_default(&sc);
+		sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 		set(&sc, "layer.thickness", "%g r0", hs[i]);
 		run(&sc, ANVIL_MODEL_LAYER, &q, &e);
 		anvil_scene_set(&sc, "solver.scheme", "paper", "test", 0, NULL);

@@ -60,6 +60,7 @@ static struct anvil_scene scene(const char *const kv[])
 	struct anvil_scene sc;
 	struct anvil_err e;
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	for (int i = 0; kv && kv[i]; i += 2)
 		if (anvil_scene_set(&sc, kv[i], kv[i + 1], "test", 0, &e))
 			diag("%s = %s: %s", kv[i], kv[i + 1], e.msg);
@@ -80,6 +81,7 @@ static void test_keys(void)
 	struct anvil_scene sc, back;
 	struct anvil_err e;
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	ok(sc.effects.waves == ANVIL_WAVES_AUTO && sc.effects.plate && sc.effects.quasistatic &&
 		   sc.effects.field == ANVIL_FIELDMODE_OFF && sc.output.table &&
 		   !sc.output.histories[0] && !sc.output.charts[0] && !sc.output.field[0],
@@ -108,6 +110,7 @@ static void test_keys(void)
 	anvil_scene_write(&sc, f);
 	fclose(f);
 	anvil_scene_default(&back);
+	back.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	st = anvil_scene_parse(&back, text, "written", &e);
 	ok(st == ANVIL_OK && memcmp(&back.effects, &sc.effects, sizeof sc.effects) == 0 &&
 		   back.output.table == sc.output.table &&
@@ -133,6 +136,7 @@ static void test_keys(void)
 	};
 	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
 		anvil_scene_default(&sc);
+		sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 		st = anvil_scene_set(&sc, bad[i].key, bad[i].value, NULL, 0, &e);
 		if (!ok(st == ANVIL_EPARSE && strstr(e.msg, bad[i].want), "%s = '%s': %s", bad[i].key,
 			bad[i].value, bad[i].want))

@@ -106,6 +106,7 @@ static struct tui_model *fresh(void)
 	struct anvil_scene sc;
 	tui_model_free(&m); /* from the test before; zeroed static at first */
 	anvil_scene_default(&sc);
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 	tui_model_init(&m, &sc, NULL);
 	return &m;
 }
@@ -472,6 +473,7 @@ static void test_generations(void)
 		struct tui_model *m2 = calloc(1, sizeof *m2);
 		struct anvil_scene sc;
 		anvil_scene_default(&sc);
+		sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's contact model is tested here */
 		tui_model_init(m2, &sc, NULL);
 		m2->sc.models = 1u << ANVIL_MODEL_LAYER;
 		tui_model_request(m2);

@@ -12,7 +12,8 @@
  * EVALS_MAX evaluations are left out to keep make check short (about 10 s;
  * ANVIL_TEST_N and ANVIL_TEST_EMAX widen the run, ANVIL_TEST_DUMP prints
  * every pair); the others are run with effects.waves = layer, so every
- * scene with a reflection inside its window counts. */
+ * scene with a reflection inside its window counts, and with the paper's
+ * contact, whose r0-patch response (and twin) is what the planner prices. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,7 +56,7 @@ static int sample_scene(unsigned long long *seed, struct anvil_scene *sc, char *
 	anvil_scene_default(sc);
 	const char *kv[] = { "layer.thickness", h, "impact.velocity", v, "impactor.mass", m,
 			     "impactor.material", mi, "layer.material", ml, "solver.accuracy", lv,
-			     "effects.waves", "layer", NULL };
+			     "effects.waves", "layer", "effects.contact", "paper", NULL };
 	for (int i = 0; kv[i]; i += 2)
 		if (anvil_scene_set(sc, kv[i], kv[i + 1], "test", 0, &e))
 			return -1;

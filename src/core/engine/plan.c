@@ -416,6 +416,9 @@ static const char *const why_text[ANVIL_WHY_COUNT] = {
 	[ANVIL_WHY_NEEDS_LAYER] = "reflections return during the contact and change the "
 				  "results by more than the target allows",
 	[ANVIL_WHY_NEEDS_WAVES] = "the energy radiated as waves matters at this accuracy",
+	[ANVIL_WHY_PHYSICAL] = "the physical contact: Hertz's approach plus the layer's "
+			       "dynamic remainder with the true contact radius (the bottom "
+			       "reflections when they return during the contact)",
 };
 
 const char *anvil_plan_why_text(enum anvil_plan_why w)
@@ -628,6 +631,84 @@ static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_r
 		snprintf(r->refusal, sizeof r->refusal, "%s", err.msg);
 }
 
+/* --- contactB: the physical contact's rows (issue 10) --- */
+
+/* The physical row of a wave model m (solver.c's run_physical): no
+ * approximation to choose, its own model is cheap.  A finite layer gets the
+ * layer job (the solver adds the point load's correction when the bottom
+ * reflection returns inside the window: causality), computed three times
+ * (point load, the Hertz radius' patch for the patch-size error, half the
+ * bandwidth for the correction's own error) and never cached; a half-space
+ * needs no response at all (the radiation lag is beta dP/dt). */
+static void physical_row(const struct est *e, enum anvil_model m, struct anvil_plan_row *r)
+{
+	struct anvil_err err;
+	/* effects.waves = halfspace: no reflections, as for the paper's rows */
+	int layer = m == ANVIL_MODEL_LAYER && isfinite(e->p.h) &&
+		    e->pb->effects.waves != ANVIL_WAVES_HALFSPACE;
+	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0);
+	enum anvil_cache_where where;
+	/* layer_cost prices a response and its twin: three responses are 1.5 of it */
+	double cost = layer ? 1.5 * layer_full_cost(e, NULL, e->pb->accuracy, &where) : hs_cost;
+	int run = r->run;
+	enum anvil_plan_why off = r->off;
+	memset(r, 0, sizeof *r);
+	r->run = run;
+	r->off = off;
+	r->contact = ANVIL_CONTACT_PHYSICAL;
+	row_set(r, layer ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE, ANVIL_WHY_PHYSICAL, 0.0, cost);
+	r->cost_full = cost;
+	r->job = layer ? e->lay : e->hs;
+	row_fig(r, ANVIL_FIG_RADIATED);
+	row_fig(r, ANVIL_FIG_A_HERTZ);
+	if (layer)
+		row_fig(r, ANVIL_FIG_T_REFLECT);
+	r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job, anvil_wave_window(&r->job, 0),
+				      r->job.omega, &err);
+	if (r->status)
+		snprintf(r->refusal, sizeof r->refusal, "%s", err.msg);
+}
+
+/* row[] holds the paper's contact as planned; with the physical one asked
+ * for, it moves to paper[] (run only for BOTH) and row[] gets the physical
+ * rows.  solver.scheme = paper is the paper's model: its contact alone. */
+static void contact_rows(const struct anvil_problem *pb, const struct est *e,
+			 struct anvil_plan *pl)
+{
+	enum anvil_contact c = pb->effects.contact;
+	if (c == ANVIL_CONTACT_AUTO || (unsigned)c >= ANVIL_CONTACT_COUNT)
+		c = ANVIL_CONTACT_PHYSICAL; /* a problem not made by anvil_problem_init */
+	if (pb->scheme == ANVIL_SCHEME_PAPER)
+		c = ANVIL_CONTACT_PAPER;
+	pl->contact = c;
+	for (int m = ANVIL_MODEL_LAYER; m <= ANVIL_MODEL_HALFSPACE; m++) {
+		pl->row[m].contact = ANVIL_CONTACT_PAPER;
+		if (c == ANVIL_CONTACT_PAPER)
+			continue;
+		pl->paper[m] = pl->row[m];
+		pl->paper[m].run = pl->row[m].run && c == ANVIL_CONTACT_BOTH;
+		if (pl->row[m].run)
+			pl->cost -= pl->row[m].cost;
+		physical_row(e, (enum anvil_model)m, &pl->row[m]);
+		if (pl->row[m].run)
+			pl->cost += pl->row[m].cost;
+		if (pl->paper[m].run)
+			pl->cost += pl->paper[m].cost;
+	}
+}
+
+const struct anvil_plan_row *anvil_plan_row_of(const struct anvil_plan *pl, enum anvil_model m,
+					       enum anvil_contact c)
+{
+	if ((unsigned)m >= ANVIL_MODEL_COUNT)
+		return NULL;
+	if (c == ANVIL_CONTACT_AUTO || pl->row[m].contact == c ||
+	    m < ANVIL_MODEL_LAYER) /* hertz, zener: one row whatever the contact */
+		return &pl->row[m];
+	return pl->paper[m].contact == c ? &pl->paper[m] : NULL;
+}
+/* --- end contactB --- */
+
 static void rows(const struct anvil_problem *pb, const struct est *e,
 		 const struct anvil_cache *cache, struct anvil_plan *pl)
 {
@@ -694,7 +775,8 @@ int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *ca
 		return st;
 	figures(&e, pl);
 	rows(&pl->pb, &e, cache, pl);
-	warnings(&pl->pb, &e, pl);
+	warnings(&pl->pb, &e, pl); /* of the layer model's choices: the paper's rows */
+	contact_rows(&pl->pb, &e, pl);
 	/* the one verdict (verdict.h), quasi-static: a plan runs nothing */
 	return anvil_verdict_make(&pl->pb, NULL, &pl->verdict, err);
 }
@@ -715,7 +797,13 @@ void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t n
 	k->effects.plate = pb->effects.plate;
 	k->effects.quasistatic = pb->effects.quasistatic;
 	k->effects.field = pb->effects.field;
+	k->effects.contact = pb->effects.contact;
 	k->nhist = nhist;
+	/* the row's contact, as contact_rows gives row[m] */
+	k->contact = m < ANVIL_MODEL_LAYER ? ANVIL_CONTACT_AUTO
+		     : pb->effects.contact == ANVIL_CONTACT_PAPER || pb->scheme == ANVIL_SCHEME_PAPER
+			     ? ANVIL_CONTACT_PAPER
+			     : ANVIL_CONTACT_PHYSICAL;
 }
 
 int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan_key *b)

@@ -130,6 +130,7 @@ enum anvil_plan_why {
 	ANVIL_WHY_SMALL_WAVES,  /* radiated energy below the target: quasi-static */
 	ANVIL_WHY_NEEDS_LAYER,  /* reflections return during the contact and matter */
 	ANVIL_WHY_NEEDS_WAVES,  /* the radiated energy matters */
+	ANVIL_WHY_PHYSICAL,     /* the physical contact: its own model, no approximation */
 	ANVIL_WHY_COUNT
 };
 const char *anvil_plan_why_text(enum anvil_plan_why w);
@@ -176,6 +177,9 @@ const struct anvil_fig_info *anvil_plan_fig_info(enum anvil_fig f);
  * method, the one the solver uses when asked for that model; run says
  * whether `anvil run` computes it (off says why not). */
 struct anvil_plan_row {
+	/* The contact model of a layer or halfspace row, PHYSICAL or PAPER
+	 * (options.h); AUTO for hertz and zener, which have their own. */
+	enum anvil_contact contact;
 	int status;               /* ANVIL_OK, or the refusal (< 0) the solver returns */
 	char refusal[ANVIL_ERR_MSG]; /* its message, "" when none */
 	struct anvil_wave_job job; /* STATIC, HALFSPACE, LAYER: what the solver runs */
@@ -217,6 +221,13 @@ struct anvil_plan {
 	struct anvil_problem pb;     /* what was planned: the solver reads only this */
 	double fig[ANVIL_FIG_COUNT];
 	struct anvil_plan_row row[ANVIL_MODEL_COUNT]; /* by enum anvil_model */
+	/* [effects] contact, resolved: PHYSICAL, PAPER or BOTH.  row[] has the
+	 * physical contact unless it is PAPER (or solver.scheme = paper, which
+	 * is the paper's model's scheme); with BOTH, paper[] holds the layer and
+	 * halfspace rows of the paper's contact (run set as in row[]), printed
+	 * before the physical ones.  paper[].run is 0 otherwise. */
+	enum anvil_contact contact;
+	struct anvil_plan_row paper[ANVIL_MODEL_COUNT];
 	int nwarn;
 	struct anvil_plan_warning warn[ANVIL_PLAN_MAXWARN];
 	struct anvil_verdict verdict; /* layer and impactor, quasi-static Hertz (verdict.h) */
@@ -233,6 +244,11 @@ struct anvil_plan {
 int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *cache,
 		    struct anvil_plan *pl, struct anvil_err *err);
 
+/* Row of model m with contact model c (PHYSICAL or PAPER; AUTO: row[m]):
+ * row[m] or paper[m], NULL when the plan has no such row. */
+const struct anvil_plan_row *anvil_plan_row_of(const struct anvil_plan *pl, enum anvil_model m,
+					       enum anvil_contact c);
+
 /* What one result depends on: the problem's numbers and options (effects
  * included), the model and the history length; compared with memcmp
  * (anvil_plan_key fills it zeroed, padding too).  Front ends that keep
@@ -243,6 +259,7 @@ struct anvil_plan_key {
 	int accuracy, scheme, model;
 	struct anvil_effects effects;
 	size_t nhist;
+	int contact; /* the row's contact model */
 };
 void anvil_plan_key(const struct anvil_problem *pb, enum anvil_model m, size_t nhist,
 		    struct anvil_plan_key *k);

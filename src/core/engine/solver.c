@@ -11,6 +11,7 @@
 #include "hertz.h"
 #include "impact.h"
 #include "plan.h"
+#include "radiation.h"
 #include "solver.h"
 #include "zener.h"
 
@@ -368,6 +369,179 @@ static void contacts_note(struct anvil_result *r)
 		snprintf(r->note + len, sizeof r->note - len, " ... -%.4g", r->ts.val * 1e6);
 }
 
+/* --- contactB: the physical contact (issue 10; impact.h, doc/contact-model.md) --- */
+
+/* The layer correction of a Hertz load of radius patch r0 (0: a point)
+ * at bandwidth omega over [0, tau_end], made for one run (not cached:
+ * green.h). */
+static struct anvil_green *physical_corr(struct anvil_solver *s, const struct anvil_problem *pb,
+					 double hh, double patch, double omega, double tau_end,
+					 struct anvil_err *err)
+{
+	struct anvil_green_settings gs;
+	anvil_green_settings(pb->accuracy, &gs);
+	gs.omega_max = omega;
+	struct anvil_green *g = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, pb->p.nu,
+							patch, tau_end, &gs, s->progress,
+							s->progress_ctx, err);
+	if (g) {
+		s->layer_computed++;
+		s->layer_evals += anvil_green_evals(g);
+	}
+	return g;
+}
+
+/* What one physical run takes: the bandwidth, and the patch (radius
+ * patch r0) whose correction gives the true contact radius (0: a point
+ * load throughout). */
+struct phys_load {
+	double omega, patch;
+};
+
+/* One physical impact of job j, the window grown as in waves_impact; the
+ * corrections are made for each window in which the bottom reflection
+ * returns.  *corr says whether they were. */
+static int physical_impact(struct anvil_solver *s, const struct anvil_problem *pb,
+			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
+			   size_t nhist, struct anvil_result *r, int *corr, struct anvil_err *err)
+{
+	const struct anvil_params *p = &pb->p;
+	struct response rs = { 0 }, rs2 = { 0 }; /* no half-space, no static part: Hertz's */
+	struct anvil_impact_opts io = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
+					.dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
+					.nhist = nhist, .physical = 1, .beta = beta };
+	int st = ANVIL_ETOL;
+	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
+		double tau_end = anvil_wave_window(j, attempt);
+		struct anvil_green *g = NULL, *g2 = NULL;
+		st = anvil_wave_refuse(p, pb->dt, r->model, j, tau_end, ld.omega, err);
+		if (st)
+			return st;
+		*corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, tau_end);
+		io.alpha_ref = 0;
+		if (*corr) {
+			g = physical_corr(s, pb, j->hh, 0.0, ld.omega, tau_end, err);
+			if (g && ld.patch > 0) {
+				g2 = physical_corr(s, pb, j->hh, ld.patch, ld.omega, tau_end, err);
+				/* a^2 = R alpha with R = r0 */
+				io = (struct anvil_impact_opts){ .scheme = io.scheme, .dt = io.dt,
+					.dt_auto = io.dt_auto, .max_steps = io.max_steps, .nhist = nhist,
+					.physical = 1, .beta = beta, .ramp2 = response_ramp,
+					.ramp2_ctx = &rs2, .alpha_ref = ld.patch * ld.patch * p->r0 };
+			}
+			if (!g || (ld.patch > 0 && !g2)) {
+				anvil_green_free(g);
+				return err ? err->status : ANVIL_ENUM;
+			}
+		}
+		rs.corr = g;
+		rs2.corr = g2;
+		enum anvil_model m = r->model;
+		anvil_result_free(r);
+		anvil_result_init(r, m);
+		st = anvil_impact_run(p, response_ramp, &rs, tau_end, &io, r, err);
+		anvil_green_free(g);
+		anvil_green_free(g2);
+		if (st == ANVIL_ETOL && !isnan(r->ts.val))
+			break;
+	}
+	return st;
+}
+
+/* Add |a - b| of each value to r's error estimates. */
+static void add_diff_error(struct anvil_result *r, const struct anvil_result *a,
+			   const struct anvil_result *b)
+{
+	r->ts.err += fabs(a->ts.val - b->ts.val);
+	r->tmax.err += fabs(a->tmax.val - b->tmax.val);
+	r->Pmax.err += fabs(a->Pmax.val - b->Pmax.val);
+	r->Vs.err += fabs(a->Vs.val - b->Vs.val);
+	r->Rf.err += fabs(a->Rf.val - b->Rf.val);
+	r->Ea.err += fabs(a->Ea.val - b->Ea.val);
+}
+
+/* The errors of the layer correction (solver.c's run_physical): the
+ * O(a^4) remainder of the true radius, measured as the change when the
+ * a^2 term comes from the patch of a_max/sqrt(2) instead of a_max (it
+ * bounds the remainder about twice over: w(a) = w0 + a^2 w2 + a^4 w4, the
+ * two fits differ by a^2 a_max^2 w4 / 2, the error of the first is at
+ * most a_max^4 w4 / 4), and the correction's own, by halving the
+ * bandwidth (point loads, as run_waves does). */
+static int physical_errors(struct anvil_solver *s, const struct anvil_problem *pb,
+			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
+			   struct anvil_result *r, struct anvil_err *err)
+{
+	struct anvil_result q[2];
+	struct phys_load alt[3] = { { ld.omega, ld.patch / M_SQRT2 }, { ld.omega, 0.0 },
+				    { 0.5 * ld.omega, 0.0 } };
+	int c, st = ANVIL_OK;
+	anvil_result_init(&q[0], r->model);
+	anvil_result_init(&q[1], r->model);
+	st = physical_impact(s, pb, j, beta, alt[0], 0, &q[0], &c, err);
+	if (!st)
+		add_diff_error(r, r, &q[0]);
+	if (!st)
+		st = physical_impact(s, pb, j, beta, alt[1], 0, &q[0], &c, err);
+	if (!st)
+		st = physical_impact(s, pb, j, beta, alt[2], 0, &q[1], &c, err);
+	if (!st)
+		add_diff_error(r, &q[0], &q[1]);
+	anvil_result_free(&q[0]);
+	anvil_result_free(&q[1]);
+	return st;
+}
+
+/* The physical row: Hertz's approach plus the layer's remainder, the
+ * correction with the true contact radius a(t) (impact.h: point load plus
+ * the a^2 term from the Hertz patch of the largest radius a_max).  Its
+ * error estimates add to the time stepping's: physical_errors', and the
+ * half-space remainder's next term, relative O(omega a / c2) of the wave
+ * effect (radiation.h), taken as pi a_max / (c2 t_s) times the radiated
+ * fraction of each value.
+ * Where the patch size still matters: thin layers, where a_max is not
+ * small against h and the correction is large: there the a^4 remainder
+ * is what the error estimate shows (doc/contact-model.md). */
+static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
+			const struct anvil_plan_row *row, size_t nhist, struct anvil_result *r,
+			struct anvil_err *err)
+{
+	const struct anvil_params *p = &pl->pb.p;
+	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
+	double a = pl->fig[ANVIL_FIG_A_HERTZ];
+	struct phys_load ld = { row->job.omega, fmin(1.0, a / p->r0) };
+	int corr = 0;
+	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
+	if (!st && corr)
+		st = physical_errors(s, &pl->pb, &row->job, beta, ld, r, err);
+	if (st)
+		return st;
+	/* the radiation lag's next term: relative pi a / (c2 t_s) of the wave
+	 * effect, which moves P_max, t_s and R_f by at most the radiated
+	 * fraction f of their values (plan.c's estimate; 0.4 % of P_max against
+	 * f = 1.3 % on the paper's half-space) and E_a by f m1 V0^2 / 2 */
+	double d = M_PI * a / (p->c2 * r->ts.val) * pl->fig[ANVIL_FIG_RADIATED];
+	r->ts.err += d * r->ts.val;
+	r->tmax.err += d * r->tmax.val;
+	r->Pmax.err += d * r->Pmax.val;
+	r->Vs.err += d * fabs(r->Vs.val);
+	r->Rf.err += d * fabs(r->Rf.val);
+	r->Ea.err += d * 0.5 * p->m1 * p->V0 * p->V0;
+	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h)) {
+		r->lambda_star = 0.0;
+		r->Rf_star = 1.0;
+	}
+	if (corr)
+		snprintf(r->note, sizeof r->note,
+			 "physical contact: Hertz + the layer's remainder with the true contact radius (a_max = %.3g mm), reflections from 2h/c1 = %.3g us",
+			 a * 1e3, 2e6 * p->h / p->c1);
+	else
+		snprintf(r->note, sizeof r->note,
+			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");
+	contacts_note(r);
+	return check_target(r, pl->pb.accuracy, err);
+}
+/* --- end contactB --- */
+
 /* A wave row (STATIC, HALFSPACE or LAYER) as the plan says, with its
  * fallback when the computed contact outlasts the reflection. */
 static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
@@ -377,6 +551,8 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 	const struct anvil_params *p = &pl->pb.p;
 	struct anvil_plan_row row = *planned;
 	int corr = 0;
+	if (row.contact == ANVIL_CONTACT_PHYSICAL)
+		return run_physical(s, pl, planned, nhist, r, err);
 	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
@@ -403,11 +579,15 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 }
 
 static int run_row(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
-		   size_t nhist, struct anvil_result *r, struct anvil_err *err)
+		   enum anvil_contact c, size_t nhist, struct anvil_result *r,
+		   struct anvil_err *err)
 {
 	if ((unsigned)m >= ANVIL_MODEL_COUNT)
 		return anvil_err_set(err, ANVIL_EINVAL, "unknown model %d", (int)m);
-	const struct anvil_plan_row *row = &pl->row[m];
+	const struct anvil_plan_row *row = anvil_plan_row_of(pl, m, c);
+	if (!row)
+		return anvil_err_set(err, ANVIL_EINVAL, "%s: the plan has no row with the %s contact",
+				     anvil_model_name(m), anvil_contact_name(c));
 	if (row->status) /* refused when planned: no work */
 		return anvil_err_set(err, row->status, "%s", row->refusal);
 	switch (row->method) {
@@ -428,10 +608,19 @@ static int run_row(struct anvil_solver *s, const struct anvil_plan *pl, enum anv
 int anvil_solver_run(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
 		     size_t nhist, struct anvil_result *r, struct anvil_err *err)
 {
+	return anvil_solver_run_contact(s, pl, m, ANVIL_CONTACT_AUTO, nhist, r, err);
+}
+
+int anvil_solver_run_contact(struct anvil_solver *s, const struct anvil_plan *pl,
+			     enum anvil_model m, enum anvil_contact c, size_t nhist,
+			     struct anvil_result *r, struct anvil_err *err)
+{
 	struct anvil_err e = { 0 };
 	double t0 = wall_seconds();
 	anvil_result_init(r, m);
-	int st = run_row(s, pl, m, nhist, r, &e);
+	int st = run_row(s, pl, m, c, nhist, r, &e);
+	const struct anvil_plan_row *row = anvil_plan_row_of(pl, m, c);
+	r->contact = row ? row->contact : ANVIL_CONTACT_AUTO; /* runs re-init r: set last */
 	r->seconds = wall_seconds() - t0;
 	if (!st)
 		anvil_err_clear(&e); /* no stale message from a retried window */

@@ -67,6 +67,13 @@ void anvil_solver_stats(const struct anvil_solver *s, struct anvil_solver_stats 
  * given back at its end (cache.h). */
 int anvil_solver_run(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,
 		     size_t nhist, struct anvil_result *r, struct anvil_err *err);
+/* The same for the row of model m with contact model c (PHYSICAL or PAPER:
+ * anvil_plan_row_of; AUTO is pl->row[m], as anvil_solver_run).  r->contact
+ * says which contact the result has.  ANVIL_EINVAL when the plan has no
+ * such row. */
+int anvil_solver_run_contact(struct anvil_solver *s, const struct anvil_plan *pl,
+			     enum anvil_model m, enum anvil_contact c, size_t nhist,
+			     struct anvil_result *r, struct anvil_err *err);
 
 /* The paper's yield check, over the r0 patch (engine/yield.c; the verdict
  * on the layer, over the true contact, is anvil_solver_verdict in

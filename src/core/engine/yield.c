@@ -16,7 +16,9 @@ static struct anvil_field *row_field(struct anvil_solver *s, const struct anvil_
 	const struct anvil_problem *pb = &pl->pb;
 	enum anvil_model m = isinf(pb->p.h) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 	struct anvil_result r;
-	int st = anvil_solver_run(s, pl, m, ANVIL_FIELD_NHIST, &r, err);
+	/* the field loads the layer over the paper's patch r0: the paper's
+	 * contact's P(t) (plan.h: the plan always holds that row) */
+	int st = anvil_solver_run_contact(s, pl, m, ANVIL_CONTACT_PAPER, ANVIL_FIELD_NHIST, &r, err);
 	*run_status = st;
 	if (st < 0) {
 		anvil_result_free(&r);

@@ -39,6 +39,27 @@ enum anvil_fieldmode {
 	ANVIL_FIELDMODE_COUNT
 };
 
+/* [effects] contact: how the layer and halfspace rows model the contact
+ * (doc/contact-model.md, man anvil MODELS).
+ *   physical  Hertz's approach of the true contact, plus what the layer does
+ *             beyond the static indentation Hertz already holds: the
+ *             half-space's radiation lag and the layer correction of a point
+ *             load (impact.h);
+ *   paper     the paper's: the layer's centre deflection under a Hertz patch
+ *             of fixed radius r0 added to Hertz's approach, which counts the
+ *             local indentation twice;
+ *   both      a row of each;
+ *   auto      both for the paper's own case (the default scene's physics),
+ *             physical otherwise: anvil_problem_init resolves it.
+ * A result row has PHYSICAL or PAPER; hertz and zener rows AUTO (neither). */
+enum anvil_contact {
+	ANVIL_CONTACT_AUTO,
+	ANVIL_CONTACT_PHYSICAL,
+	ANVIL_CONTACT_PAPER,
+	ANVIL_CONTACT_BOTH,
+	ANVIL_CONTACT_COUNT
+};
+
 /* [effects]: what physics the scene calls for.  plate and quasistatic
  * switch the zener and hertz rows; waves = none drops layer and halfspace.
  * Rows are run only if solver.models lists them too (anvil_scene_models). */
@@ -47,6 +68,7 @@ struct anvil_effects {
 	int plate;       /* 1: Zener's thin plate (the zener row) */
 	int quasistatic; /* 1: quasi-static Hertz on a rigid layer (the hertz row) */
 	enum anvil_fieldmode field;
+	enum anvil_contact contact;
 };
 
 /* Names <-> enums.  The parse functions return -1 for an unknown name. */
@@ -56,5 +78,8 @@ const char *anvil_waves_name(enum anvil_waves w);
 int anvil_waves_parse(const char *name);
 const char *anvil_fieldmode_name(enum anvil_fieldmode f);
 int anvil_fieldmode_parse(const char *name);
+/* (these two in scene_keys.c, beside the key) */
+const char *anvil_contact_name(enum anvil_contact c);
+int anvil_contact_parse(const char *name);
 
 #endif

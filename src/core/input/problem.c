@@ -24,6 +24,11 @@ int anvil_problem_init(struct anvil_problem *pb, const struct anvil_scene *sc,
 	pb->models = sc->models;
 	pb->run = anvil_scene_models(sc);
 	pb->effects = sc->effects;
+	/* [effects] contact = auto: both models side by side for the paper's own
+	 * case, the physical one for any other scene (options.h) */
+	if (pb->effects.contact == ANVIL_CONTACT_AUTO)
+		pb->effects.contact = anvil_scene_is_paper_case(sc) ? ANVIL_CONTACT_BOTH
+								     : ANVIL_CONTACT_PHYSICAL;
 	return ANVIL_OK;
 }
 

@@ -723,6 +723,8 @@ static int default_physics(const struct anvil_scene *sc)
 	       sc->thickness_per_r0 == d.thickness_per_r0 && same_double(sc->velocity, d.velocity);
 }
 
+int anvil_scene_is_paper_case(const struct anvil_scene *sc) { return default_physics(sc); }
+
 void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n)
 {
 	char mass[40], radius[40], v[40], h[48];

@@ -192,6 +192,9 @@ int anvil_scene_warnings(const struct anvil_scene *sc, struct anvil_scene_warnin
  * ("50 g steel impactor, r0 = 4 mm, at 10 m/s on a 4 mm steel layer").
  * sc->title is kept equal to it by parse, set and default. */
 void anvil_scene_title(const struct anvil_scene *sc, char *buf, size_t n);
+/* Whether sc has the default scene's physics (bodies, mass, r0, h, V0): the paper's
+ * own case, for which [effects] contact = auto shows both contact models. */
+int anvil_scene_is_paper_case(const struct anvil_scene *sc);
 
 /* "rod", "ball"; anvil_shape_parse gives -1 for anything else. */
 const char *anvil_shape_name(enum anvil_shape s);

@@ -626,6 +626,44 @@ static int put_waves(const void *base, const struct key *k, char *buf, size_t n)
 	return 1;
 }
 
+/* --- contactB: [effects] contact (options.h) --- */
+static const char *const contact_names[ANVIL_CONTACT_COUNT] = { "auto", "physical", "paper",
+								 "both" };
+
+const char *anvil_contact_name(enum anvil_contact c)
+{
+	return (unsigned)c < ANVIL_CONTACT_COUNT ? contact_names[c] : "unknown";
+}
+
+int anvil_contact_parse(const char *name)
+{
+	for (int i = 0; name && i < ANVIL_CONTACT_COUNT; ++i)
+		if (strcasecmp(name, contact_names[i]) == 0)
+			return i;
+	return -1;
+}
+
+static int set_contact(struct anvil_scene *sc, void *base, const struct key *k,
+		       const char *value, int deferred, struct anvil_err *err)
+{
+	int c = anvil_contact_parse(value);
+	(void)base;
+	(void)k;
+	(void)deferred;
+	if (c < 0)
+		return choice_error(value, contact_names, ANVIL_CONTACT_COUNT, NULL, err);
+	sc->effects.contact = (enum anvil_contact)c;
+	return ANVIL_OK;
+}
+
+static int put_contact(const void *base, const struct key *k, char *buf, size_t n)
+{
+	(void)k;
+	snprintf(buf, n, "%s", anvil_contact_name(((const struct anvil_scene *)base)->effects.contact));
+	return 1;
+}
+/* --- end contactB --- */
+
 static int set_field(struct anvil_scene *sc, void *base, const struct key *k,
 		     const char *value, int deferred, struct anvil_err *err)
 {
@@ -838,6 +876,7 @@ static const struct key keys[] = {
 	AT(EFFECTS, "plate", effects.plate, switch),
 	AT(EFFECTS, "quasistatic", effects.quasistatic, switch),
 	FN(EFFECTS, "field", BASE_SCENE, field),
+	FN(EFFECTS, "contact", BASE_SCENE, contact),
 	AT(OUTPUT, "table", output.table, switch),
 	AT(OUTPUT, "histories", output.histories, path),
 	AT(OUTPUT, "charts", output.charts, path),

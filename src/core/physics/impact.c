@@ -23,6 +23,8 @@ struct pass {
 	double dt;
 	size_t n, cap;
 	double *P, *W, *w, *v; /* one block, owned */
+	double *wc;            /* physical contact: the layer correction's deflection */
+	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
 	double ts, tmax, Pmax, Vs;
 	double tmax_ie;  /* the peak interpolation's own error (peak) */
 	/* repeated contacts: the count, each one's start and end (s) */
@@ -38,7 +40,14 @@ struct ctx {
 	double tau_avail;
 	double *g;      /* convolution weights g_j, j < ng */
 	size_t ng;
+	int physical;   /* the physical contact (opts), with beta */
+	double beta;
+	anvil_ramp_fn ramp2; /* the correction of the patch of radius a_ref (opts) */
+	void *rctx2;
+	double alpha_ref;
+	double *dg;     /* its weights less g's, when ramp2 is given */
 	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
+	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
 };
 
 static void pass_free(struct pass *s)
@@ -50,19 +59,21 @@ static void pass_free(struct pass *s)
 static int pass_alloc(struct pass *s, size_t cap, double dt)
 {
 	memset(s, 0, sizeof *s);
-	s->P = calloc(4 * cap, sizeof *s->P);
+	s->P = calloc(6 * cap, sizeof *s->P);
 	if (!s->P)
 		return ANVIL_ENOMEM;
 	s->W = s->P + cap;
 	s->w = s->P + 2 * cap;
 	s->v = s->P + 3 * cap;
+	s->wc = s->P + 4 * cap;
+	s->Q = s->P + 5 * cap;
 	s->cap = cap;
 	s->dt = dt;
 	return ANVIL_OK;
 }
 
 /* Dimensional ramp response Rr(t) (m s/N): the anvil's response to P = t. */
-static int ramp_at(const struct ctx *c, double t, double *val)
+static int ramp_of(const struct ctx *c, anvil_ramp_fn fn, void *ctx, double t, double *val)
 {
 	const struct anvil_params *p = c->p;
 	if (t <= 0) {
@@ -70,9 +81,14 @@ static int ramp_at(const struct ctx *c, double t, double *val)
 		return ANVIL_OK;
 	}
 	double v;
-	int st = c->ramp(c->rctx, t * p->c2 / p->r0, &v);
+	int st = fn(ctx, t * p->c2 / p->r0, &v);
 	*val = v / (p->mu * p->c2);
 	return st;
+}
+
+static int ramp_at(const struct ctx *c, double t, double *val)
+{
+	return ramp_of(c, c->ramp, c->rctx, t, val);
 }
 
 /* Weights of the product integration: the deflection at t_n caused by the
@@ -92,6 +108,15 @@ static int weights(struct ctx *c, double dt, size_t cap)
 	for (size_t j = 0; j < cap && !st; j++)
 		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
 	c->ng = cap;
+	if (c->ramp2 && !st) { /* dg = g2 - g */
+		c->dg = malloc(cap * sizeof *c->dg);
+		if (!c->dg)
+			st = ANVIL_ENOMEM;
+		for (size_t j = 0; j < cap + 1 && !st; j++)
+			st = ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R[j]);
+		for (size_t j = 0; j < cap && !st; j++)
+			c->dg[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt - c->g[j];
+	}
 	free(R);
 	return st;
 }
@@ -225,28 +250,42 @@ struct end_ctx {
 	double *R;      /* scratch: R(j dt + d), j = 0 .. k - m0 + 1 */
 };
 
-/* The far past's deflection at t_k + d (m < m0), exactly. */
+/* sum_{m < m0} F_m times the hat response through fn at t_k + d, off the
+ * grid (0 < d < dt): R at (k - m) dt + d and its neighbours. */
+static double far_of(const struct end_ctx *e, const double *F, anvil_ramp_fn fn, void *fctx,
+		     double d)
+{
+	const double dt = e->s->dt;
+	size_t k = e->k;
+	double w = 0, Rm = 0, R0, Rp;
+	ramp_of(e->c, fn, fctx, (double)(k - e->m0) * dt + d, &R0);
+	ramp_of(e->c, fn, fctx, (double)(k - e->m0 + 1) * dt + d, &Rp);
+	for (size_t m = e->m0 - 1; m >= 1; m--) { /* lag k - m rising */
+		Rm = R0;
+		R0 = Rp;
+		ramp_of(e->c, fn, fctx, (double)(k - m + 1) * dt + d, &Rp);
+		w += F[m] * (Rp - 2.0 * R0 + Rm) / dt;
+	}
+	return w;
+}
+
+/* The far past's deflection at t_k + d (m < m0), exactly; with the true
+ * contact radius (dg), the loads' Q through ramp2 - ramp as well. */
 static double far_exact(const struct end_ctx *e, double d)
 {
-	const double *P = e->s->P, dt = e->s->dt;
-	const double *g = e->c->g;
+	const struct ctx *c = e->c;
+	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt;
 	size_t k = e->k;
 	double w = 0;
 	if (d == 0.0 || d == dt) { /* on the grid: the weights */
 		size_t sh = d == 0.0 ? 0 : 1;
 		for (size_t m = 1; m < e->m0; m++)
-			w += P[m] * g[k + sh - m];
+			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
 		return w;
 	}
-	double Rm = 0, R0, Rp;
-	ramp_at(e->c, (double)(k - e->m0) * dt + d, &R0);
-	ramp_at(e->c, (double)(k - e->m0 + 1) * dt + d, &Rp);
-	for (size_t m = e->m0 - 1; m >= 1; m--) { /* lag k - m rising */
-		Rm = R0;
-		R0 = Rp;
-		ramp_at(e->c, (double)(k - m + 1) * dt + d, &Rp);
-		w += P[m] * (Rp - 2.0 * R0 + Rm) / dt;
-	}
+	w = far_of(e, P, c->ramp, c->rctx, d);
+	if (c->dg)
+		w += far_of(e, Q, c->ramp2, c->rctx2, d) - far_of(e, Q, c->ramp, c->rctx, d);
 	return w;
 }
 
@@ -263,21 +302,37 @@ static double far_cubic(const struct end_ctx *e, double d)
 	return f;
 }
 
+/* The near past's deflection at t_k + d (loads F, hats at t_m, m0 <= m <= k,
+ * the last one ending at t_k + d) through the ramp response R at j dt + d,
+ * added to w in the order the paper contact's end has always summed it (same bits). */
+static double near_deflection(double w, const double *F, const double *R, size_t k, size_t m0,
+			      double dt, double d)
+{
+	for (size_t m = m0; m < k; m++)
+		w += F[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
+	return w + F[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
+}
+
 static double alpha_end(double d, void *vp)
 {
 	const struct end_ctx *e = vp;
-	const struct anvil_params *p = e->c->p;
+	const struct ctx *c = e->c;
+	const struct anvil_params *p = c->p;
 	const double *P = e->s->P, dt = e->s->dt;
-	size_t k = e->k;
+	size_t k = e->k, nr = k - e->m0 + 1;
 	double t1 = (double)k * dt, tau = t1 + d, w = far_cubic(e, d), *R = e->R;
 	double mom = dt * (tau * e->S0 - e->S1);
-	for (size_t j = 0; j <= k - e->m0 + 1; j++)
-		ramp_at(e->c, (double)j * dt + d, &R[j]);
-	for (size_t m = e->m0; m < k; m++)
-		w += P[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
+	for (size_t j = 0; j <= nr; j++)
+		ramp_at(c, (double)j * dt + d, &R[j]);
+	w = near_deflection(w, P, R, k, e->m0, dt, d);
+	if (c->dg) { /* the true contact radius: + Q through (R2 - R) */
+		w -= near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
+		for (size_t j = 0; j <= nr; j++)
+			ramp_of(c, c->ramp2, c->rctx2, (double)j * dt + d, &R[j]);
+		w += near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
+	}
 	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	w += P[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
 	return p->V0 * tau - mom / p->m1 - w;
 }
 
@@ -431,6 +486,131 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 	return ANVIL_OK;
 }
 
+/* The one positive root of the physical step equation (see pass_physical)
+ *   G(x) = bD x^4 + B x^3 + k0 x^2 - bu x - A,  bD >= 0, B, k0 > 0, A > 0:
+ * G is convex on x > 0 with G(0) = -A < 0, so the root is unique, and
+ * Newton from a point where G >= 0 decreases to it monotonically.  At
+ * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0. */
+static double physical_root(double bD, double B, double k0, double bu, double A)
+{
+	double x = fabs(bu) / k0 + sqrt(A / k0);
+	for (int i = 0; i < 100; i++) {
+		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
+		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
+		double dx = f / df;
+		x -= dx;
+		if (fabs(dx) <= 1e-15 * x)
+			break;
+	}
+	return x * x * x;
+}
+
+/* The physical contact (issue 10; doc/contact-model.md):
+ *   W = alpha_H(P) + w_c - beta Q,
+ * w_c the layer correction of a point load (the ramp given here; zero for
+ * a half-space), -beta Q the half-space's radiation lag with dP/dt reduced
+ * in order to its beta = 0 value Q = (3/2) K alpha^(1/2) (v - dw_c/dt)
+ * (Landau and Lifshitz's treatment of radiation reaction: the unreduced
+ * -beta dP/dt runs away, see contact.h).  The static indentation is
+ * Hertz's alone.  Collocation at t_n as in pass_implicit, dw_c/dt by the
+ * second-order backward difference of w_c; with x = P_n^(1/3),
+ * (3/2) K alpha^(1/2) = 1.5 x / k0, and v_n, w_c(t_n) linear in P_n:
+ *   G(x) = b D x^4 + B x^3 + k0 x^2 - b u0 x - A = 0,  b = 1.5 beta / k0,
+ * u0 and D the parts of v_n - dw_c/dt(t_n) free of and linear in P_n.
+ * Every piece is second order in dt, so the scheme is (tests/test_physical.c
+ * measures it).  The contact ends where A = 0: alpha = 0 takes the lag
+ * with it, and finish_exact's alpha_end is W - w_c there (its far past,
+ * Q's through ramp2 - ramp included, by far_exact/far_cubic as for the
+ * paper's contact).  The march goes on through repeated contacts as in
+ * pass_implicit: out of contact P = Q = 0, w = w_c (the layer's free
+ * response), until the two have parted for good.  The past's sums come
+ * from the online fast convolutions: P against g (fc) and, with the true
+ * radius, Q against dg = g2 - g (fc2). */
+static int pass_physical(const struct ctx *c, struct pass *s, double beta)
+{
+	const struct anvil_params *p = c->p;
+	double dt = s->dt, b = 1.5 * beta / p->k0;
+	double S0 = 0, S1 = 0, impulse = 0;
+	double ioff = 0, a_prev = 0, amax = 0;
+	int in = 1;
+	s->v[0] = p->V0;
+	s->n = 1;
+	s->ncont = 1;
+	s->on[0] = 0;
+	anvil_fastconv_reset(c->fc);
+	anvil_fastconv_push(c->fc, 0.0);
+	if (c->fc2) {
+		anvil_fastconv_reset(c->fc2);
+		anvil_fastconv_push(c->fc2, 0.0);
+	}
+	for (size_t n = 1; n < s->cap; n++) {
+		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
+		if (c->dg) {
+			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load
+			 * (by the second convolution, of Q against dg); the current one's
+			 * (in g0 only, zero before the bottom reflection) extrapolated,
+			 * second order; alpha_H = 0 at a node out of contact */
+			conv += anvil_fastconv_next(c->fc2);
+			double q1 = s->P[n - 1] > 0 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
+			double q2 = n >= 3 && s->P[n - 2] > 0 ? s->Q[n - 2] / s->P[n - 2] : q1;
+			g0 += (2.0 * q1 - q2) * c->dg[0];
+		}
+		double B = g0 + dt * dt / (6.0 * p->m1);
+		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
+		int st = ANVIL_OK;
+		if (A <= 0 && in)
+			st = contact_end(c, s, A, impulse, &ioff);
+		else if (A > 0 && !in)
+			contact_start(s, n, a_prev, A);
+		if (st)
+			return st;
+		in = A > 0;
+		/* dw_c/dt(t_n) = wd0 + e0 P_n (BDF2; Euler at the first step) */
+		double wd0, e0;
+		if (n >= 2) {
+			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
+			e0 = 1.5 * g0 / dt;
+		} else {
+			wd0 = (conv - s->wc[0]) / dt;
+			e0 = g0 / dt;
+		}
+		if (in) {
+			double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1;
+			double D = 0.5 * dt / p->m1 + e0;
+			P = physical_root(b * D, B, p->k0, b * (v0 - wd0), A);
+		}
+		double x = cbrt(P);
+		a_prev = in ? p->k0 * x * x : A; /* alpha_H in contact; the gap's A out of it */
+		amax = fmax(amax, in ? a_prev : 0.0);
+		s->P[n] = P;
+		s->Q[n] = c->dg ? P * p->k0 * x * x / c->alpha_ref : 0.0;
+		s->wc[n] = conv + P * g0;
+		impulse += 0.5 * dt * (s->P[n - 1] + P);
+		s->v[n] = p->V0 - impulse / p->m1;
+		if (in)
+			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
+		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
+		s->w[n] = s->wc[n] - beta * Q;
+		S0 += P;
+		S1 += P * tn;
+		s->n = n + 1;
+		anvil_fastconv_push(c->fc, P);
+		if (c->fc2)
+			anvil_fastconv_push(c->fc2, s->Q[n]);
+		if (!in && parted(c, s, n, impulse, amax)) {
+			s->parted = 1;
+			break;
+		}
+	}
+	if (in || s->v[s->n - 1] >= 0)
+		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
+	if (!s->parted)
+		s->parted = 2;
+	s->Vs = -(p->V0 - ioff / p->m1);
+	peak(s);
+	return ANVIL_OK;
+}
+
 /* The paper's explicit scheme, eqs (42)-(46): the deflection lags one step
  * (w_n from forces up to t_{n-1}) and uses the impulse response w_delta,
  * here the second difference of the ramp response (w_delta(0) from eq 34). */
@@ -474,15 +654,21 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 		return ANVIL_ETOL;
 	int st = pass_alloc(s, cap, dt);
 	free(c->g);
-	c->g = NULL;
+	free(c->dg);
+	c->g = c->dg = NULL;
 	if (!st)
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
-	c->fc = NULL;
+	anvil_fastconv_free(c->fc2);
+	c->fc = c->fc2 = NULL;
 	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, direct_max)))
 		st = ANVIL_ENOMEM;
+	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc(c->dg, cap, direct_max)))
+		st = ANVIL_ENOMEM;
 	if (!st)
-		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s) : pass_implicit(c, s);
+		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
+		     : c->physical		  ? pass_physical(c, s, c->beta)
+						  : pass_implicit(c, s);
 	return st;
 }
 
@@ -593,7 +779,13 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 				     "the contact (over %.3g us) needs more than %zu steps of %.3g us",
 				     tau_avail * p->r0 / p->c2 * 1e6, o->max_steps, dt * 1e6);
 	int st;
-	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail };
+	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail,
+			 .physical = o->physical, .beta = o->beta,
+			 .ramp2 = o->physical && o->alpha_ref > 0 ? o->ramp2 : NULL,
+			 .rctx2 = o->ramp2_ctx, .alpha_ref = o->alpha_ref };
+	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
+		return anvil_err_set(err, ANVIL_EINVAL,
+				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
 	struct pass a = {0}, b = {0};
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	if (!st)
@@ -616,6 +808,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	}
 	free(c.g);
 	anvil_fastconv_free(c.fc);
+	anvil_fastconv_free(c.fc2);
+	free(c.dg);
 	pass_free(&a);
 	pass_free(&b);
 	return st;

@@ -55,6 +55,31 @@ struct anvil_impact_opts {
 	int single;       /* 1: one pass at dt, no extrapolation (to test the order) */
 	size_t direct_max; /* the convolution's direct squares (fastconv.h): 0 default,
 			    * (size_t)-1 the whole O(N^2) direct sum (to test) */
+	/* The physical contact (issue 10, doc/contact-model.md), implicit
+	 * scheme only: W = alpha_H(P) + w_c - beta Q.  The ramp given is then
+	 * the layer correction of a point load alone (w_c; a zero ramp for a
+	 * half-space), not the full response: the static indentation is
+	 * Hertz's, and the half-space's dynamic remainder is the radiation lag
+	 * -beta dP/dt (beta = xi(nu)/(rho c2^3), m s/N, transform/radiation.h),
+	 * with dP/dt reduced in order to Q = (3/2) K alpha^(1/2) (v - dw_c/dt),
+	 * which keeps the scheme stable and second order.  The history's w is
+	 * the remainder w_c - beta Q. */
+	int physical;
+	double beta;
+	/* The true contact radius (physical only; alpha_ref = 0: a point load).
+	 * ramp2 is the correction for a Hertz patch of radius a_ref, alpha_ref
+	 * = a_ref^2 / R its approach.  The correction is even in the patch
+	 * radius, w(a) = w(0) + a^2 w2 + O(a^4), and the load applied at t' has
+	 * the radius a(t'), a^2 = R alpha_H(t'): so each past load acts through
+	 * ramp + (alpha_H(t')/alpha_ref) (ramp2 - ramp), the true radius to
+	 * O(a^4).  The caller estimates that remainder (solver.c).  The past's
+	 * sums are online fast convolutions (fastconv.h) of P against ramp's
+	 * weights and of the loads' alpha_H/alpha_ref P against ramp2's less
+	 * ramp's; the physical pass follows repeated contacts as the implicit
+	 * one does (P = 0 and no lag out of contact). */
+	anvil_ramp_fn ramp2;
+	void *ramp2_ctx;
+	double alpha_ref;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

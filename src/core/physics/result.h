@@ -28,6 +28,7 @@ struct anvil_history {
 
 struct anvil_result {
 	enum anvil_model model;
+	enum anvil_contact contact; /* a wave row's contact model (options.h); AUTO: neither */
 	/* Each with its estimated absolute error (err NaN when not estimated). */
 	struct anvil_val ts, tmax; /* contact time, time of peak force, s */
 	struct anvil_val Pmax;     /* peak force, N */

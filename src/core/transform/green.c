@@ -30,6 +30,7 @@ typedef double complex cplx;
 struct anvil_green {
 	enum anvil_green_mode mode;
 	double hh, nu, kap2, tau_end;
+	double patch;         /* load radius / r0: 1 the paper's patch, 0 a point */
 	double dtau;          /* output grid step */
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
@@ -59,7 +60,7 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
  * rounding (tests/test_green.c). */
 struct quad {
 	enum anvil_green_mode mode;
-	double kap2, nu, hh;
+	double kap2, nu, hh, patch;
 	cplx s;
 	size_t evals;
 };
@@ -75,7 +76,9 @@ static cplx integrand(double k, void *vq)
 		       anvil_kernel_zhat(k);
 	}
 	anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
-	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k) * k;
+	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
+	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
+	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k * q->patch) * k;
 }
 
 /* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
@@ -404,7 +407,8 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
 	double amp = exp(dl.c0 * t_inv) / Tp;
 	struct plate pl = plate_term(g->mode, g->hh, g->nu);
-	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh };
+	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
+			  .patch = g->patch };
 	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
 			       .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = &pl,
 			       .progress = progress, .ctx = ctx };
@@ -427,13 +431,14 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 }
 
 static struct anvil_green *green_new(enum anvil_green_mode mode, double hh, double nu,
-				     double tau_end)
+				     double patch, double tau_end)
 {
 	struct anvil_green *g = calloc(1, sizeof *g);
 	if (!g)
 		return NULL;
 	g->mode = mode;
 	g->hh = hh;
+	g->patch = patch;
 	g->nu = nu;
 	g->kap2 = anvil_kappa2(nu);
 	g->tau_end = tau_end;
@@ -449,10 +454,40 @@ struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,
 	return anvil_green_alloc_twin(mode, hh, nu, tau_end, gs, progress, ctx, NULL, err);
 }
 
+static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, double nu,
+				      double patch, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_green **twin, struct anvil_err *err);
+
 struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh, double nu,
 					   double tau_end, const struct anvil_green_settings *gs,
 					   anvil_progress_fn progress, void *ctx,
 					   struct anvil_green **twin, struct anvil_err *err)
+{
+	return green_make(mode, hh, nu, 1.0, tau_end, gs, progress, ctx, twin, err);
+}
+
+struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
+					    double patch, double tau_end,
+					    const struct anvil_green_settings *gs,
+					    anvil_progress_fn progress, void *ctx,
+					    struct anvil_err *err)
+{
+	if (!(patch >= 0 && patch <= 1) || (mode == ANVIL_GREEN_HALFSPACE && patch != 1.0)) {
+		anvil_err_set(err, ANVIL_EINVAL,
+			      "layer response: patch %g r0 (0..1; the half-space mode takes r0 only)",
+			      patch);
+		return NULL;
+	}
+	return green_make(mode, hh, nu, patch, tau_end, gs, progress, ctx, NULL, err);
+}
+
+static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, double nu,
+				      double patch, double tau_end,
+				      const struct anvil_green_settings *gs,
+				      anvil_progress_fn progress, void *ctx,
+				      struct anvil_green **twin, struct anvil_err *err)
 {
 	if (twin)
 		*twin = NULL;
@@ -462,8 +497,8 @@ struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh
 			      hh, nu, tau_end);
 		return NULL;
 	}
-	struct anvil_green *g = green_new(mode, hh, nu, tau_end);
-	struct anvil_green *tw = twin ? green_new(mode, hh, nu, tau_end) : NULL;
+	struct anvil_green *g = green_new(mode, hh, nu, patch, tau_end);
+	struct anvil_green *tw = twin ? green_new(mode, hh, nu, patch, tau_end) : NULL;
 	int st = !g || (twin && !tw) ? ANVIL_ENOMEM : green_compute(g, tw, gs, progress, ctx);
 	if (st) {
 		anvil_err_set(err, st, st == ANVIL_ECANCEL ? "layer response: cancelled" :
@@ -596,7 +631,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 		anvil_err_set(err, ANVIL_ENOMEM, "layer response: out of memory");
 		return NULL;
 	}
-	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu,
+	*g = (struct anvil_green){ .mode = s->mode, .hh = s->hh, .nu = s->nu, .patch = 1.0,
 				   .kap2 = anvil_kappa2(s->nu), .tau_end = s->tau_end,
 				   .dtau = s->dtau, .n = s->n, .tau = block, .ramp = block + s->n,
 				   .abserr = s->abserr };

@@ -72,6 +72,20 @@ struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh
 					   anvil_progress_fn progress, void *ctx,
 					   struct anvil_green **twin, struct anvil_err *err);
 void anvil_green_free(struct anvil_green *g);
+/* The same for the Hertz-shaped load of radius patch r0, 0 <= patch <= 1
+ * (ANVIL_GREEN_LAYER_CORRECTION only; anvil_green_alloc is patch = 1).
+ * patch = 0 is a point load: the correction (layer less half-space) stays
+ * finite, its integrand decaying like exp(-k h); that is what the physical
+ * contact needs (impact.h), the static indentation being Hertz's.  Against
+ * the true contact radius a its error is O((a/h)^2) (doc/contact-model.md).
+ * Such a response is not for the cache: anvil_green_samples has no patch;
+ * nor has it a twin, and a patch other than r0 is inverted over its whole
+ * window (plate.c's long-time K is the r0 patch's). */
+struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
+					    double patch, double tau_end,
+					    const struct anvil_green_settings *gs,
+					    anvil_progress_fn progress, void *ctx,
+					    struct anvil_err *err);
 
 /* Ramp response at tau in [0, tau_end] (cubic interpolation of the FFT grid;
  * 0 for tau <= 0).  ANVIL_EINVAL beyond tau_end. */

@@ -97,7 +97,11 @@ static int impact_field(struct fctx *c, const struct fargs *a)
 	}
 	if (!a->quiet)
 		anvil_solver_set_progress(s, fprogress, c);
-	int st = cli_run_model(s, &c->sc, m, ANVIL_FIELD_NHIST, &c->r, &err);
+	/* the field loads the layer over the paper's patch r0: its P(t) is the
+	 * paper's contact's (until the field takes the true contact radius) */
+	struct anvil_scene fsc = c->sc;
+	fsc.effects.contact = ANVIL_CONTACT_PAPER;
+	int st = cli_run_model(s, &fsc, m, ANVIL_FIELD_NHIST, &c->r, &err);
 	cli_progress_done(&c->prog);
 	anvil_solver_free(s);
 	/* a missed accuracy target still gives values; a refusal gives none */

@@ -104,15 +104,31 @@ static const char *cached_text(enum anvil_cache_where w)
 	return w == ANVIL_CACHE_MEMORY ? "in memory" : w == ANVIL_CACHE_DISK ? "on disk" : "to compute";
 }
 
+/* A row's name: the model, "layer (paper)" for the paper's contact. */
+static const char *row_name(enum anvil_model m, const struct anvil_plan_row *r, char *b, size_t n)
+{
+	snprintf(b, n, "%s%s", anvil_model_name(m), r->contact == ANVIL_CONTACT_PAPER ? " (paper)" : "");
+	return b;
+}
+
+/* The row's contact in the records and JSON: physical, paper or - */
+static const char *row_contact(const struct anvil_plan_row *r)
+{
+	return r->contact == ANVIL_CONTACT_AUTO ? "-" : anvil_contact_name(r->contact);
+}
+
 static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *r,
 		      const struct anvil_plan *pl)
 {
-	char c[32], full[32], e[48];
+	char c[32], full[32], e[48], nm[40];
+	/* room for "halfspace (paper)" only when there is such a row */
+	int w = r->contact == ANVIL_CONTACT_PAPER || pl->contact == ANVIL_CONTACT_BOTH ? 17 : 10;
+	row_name(m, r, nm, sizeof nm);
 	if (!r->run) {
-		fprintf(f, "  %-10s not run: %s\n", anvil_model_name(m), anvil_plan_why_text(r->off));
+		fprintf(f, "  %-*s not run: %s\n", w, nm, anvil_plan_why_text(r->off));
 		return;
 	}
-	fprintf(f, "  %-10s %-10s %-18s ~%s", anvil_model_name(m), anvil_method_name(r->method),
+	fprintf(f, "  %-*s %-10s %-18s ~%s", w, nm, anvil_method_name(r->method),
 		r->exact ? "exact" : (snprintf(e, sizeof e, "within ~%.2g %%", 100 * r->model_err), e),
 		cost_text(c, sizeof c, r->cost));
 	if (r->cost_full > 1.5 * r->cost)
@@ -146,7 +162,12 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 	double cost_full = 0;
 	print_estimates(f, pl);
 	fprintf(f, "\nmodels (effects.waves = %s)\n", anvil_waves_name(pl->waves));
+	fprintf(f, "  contact: %s (effects.contact)\n", anvil_contact_name(pl->contact));
 	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
+		if (pl->paper[m].run) {
+			print_row(f, (enum anvil_model)m, &pl->paper[m], pl);
+			cost_full += pl->paper[m].cost_full;
+		}
 		print_row(f, (enum anvil_model)m, &pl->row[m], pl);
 		cost_full += pl->row[m].run ? pl->row[m].cost_full : 0.0;
 	}
@@ -204,13 +225,16 @@ static void print_records(FILE *f, const struct anvil_plan *pl, char sep)
 	for (int i = 0; i < ANVIL_FIG_COUNT; i++)
 		fprintf(f, "figure%c%s%c%s\n", sep, anvil_plan_fig_info((enum anvil_fig)i)->name, sep,
 			out_num(v, pl->fig[i], NULL));
-	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
-		const struct anvil_plan_row *r = &pl->row[m];
-		fprintf(f, "row%c%s%c%d%c%s%c%d%c%.6g%c%.6g%c%.6g%c%s%c%s%s%s\n", sep,
+	for (int k = 0; k < 2 * ANVIL_MODEL_COUNT; k++) {
+		int m = k / 2;
+		const struct anvil_plan_row *r = k % 2 ? &pl->row[m] : &pl->paper[m];
+		if (k % 2 == 0 && !r->run)
+			continue;
+		fprintf(f, "row%c%s%c%d%c%s%c%d%c%.6g%c%.6g%c%.6g%c%s%c%s%s%s%c%s\n", sep,
 			anvil_model_name((enum anvil_model)m), sep, r->run, sep,
 			anvil_method_name(r->method), sep, r->exact, sep, r->model_err, sep, r->cost,
 			sep, r->cost_full, sep, cached_text(r->cached), sep, q,
-			anvil_plan_why_text(r->run ? r->why : r->off), q);
+			anvil_plan_why_text(r->run ? r->why : r->off), q, sep, row_contact(r));
 	}
 	for (int i = 0; i < pl->nwarn; i++)
 		fprintf(f, "warning%c%s\n", sep, warn_names[pl->warn[i].kind]);
@@ -273,12 +297,16 @@ static void print_json(FILE *f, const struct anvil_plan *pl, const char *title)
 		fputc('}', f);
 	}
 	fputs("\n  ],\n  \"rows\": [", f);
-	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
-		const struct anvil_plan_row *r = &pl->row[m];
-		fprintf(f, "%s\n    {\"model\": \"%s\", \"run\": %s, \"method\": \"%s\", "
-			"\"exact\": %s, \"model_err\": ", m ? "," : "",
-			anvil_model_name((enum anvil_model)m), r->run ? "true" : "false",
+	for (int k = 0, first = 1; k < 2 * ANVIL_MODEL_COUNT; k++) {
+		int m = k / 2;
+		const struct anvil_plan_row *r = k % 2 ? &pl->row[m] : &pl->paper[m];
+		if (k % 2 == 0 && !r->run)
+			continue;
+		fprintf(f, "%s\n    {\"model\": \"%s\", \"contact\": \"%s\", \"run\": %s, \"method\": \"%s\", "
+			"\"exact\": %s, \"model_err\": ", first ? "" : ",", anvil_model_name((enum anvil_model)m), row_contact(r),
+			r->run ? "true" : "false",
 			anvil_method_name(r->method), r->exact ? "true" : "false");
+		first = 0;
 		json_num(f, r->model_err);
 		fputs(", \"cost_s\": ", f);
 		json_num(f, r->cost);

@@ -639,6 +639,56 @@ static int chart_accuracy(struct plot_chart *c, struct batch *b,
 	return st;
 }
 
+/* --- contactB: anvil plot models --- */
+
+/* R_f against h/r0 of the two contact models: the paper's thicknesses and
+ * the ends of Fig 8's axis. */
+static const double models_h[] = {0.5, 1, 2, 5, 10, 20};
+#define MODELS_NH ((int)(sizeof models_h / sizeof models_h[0]))
+
+/* The scene with contact c and thickness h/r0 (INFINITY: half-space);
+ * the model it runs then. */
+static enum anvil_model models_scene(struct anvil_scene *sc, const struct anvil_scene *base,
+				     enum anvil_contact c, double h)
+{
+	*sc = *base;
+	sc->effects.contact = c;
+	sc->thickness = h;
+	sc->thickness_per_r0 = isfinite(h);
+	enum anvil_model m = isfinite(h) ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+	sc->models |= 1u << m; /* this chart is about that model */
+	return m;
+}
+
+static int chart_models(struct plot_chart *c, struct batch *b, const struct anvil_scene *base)
+{
+	static const enum anvil_contact cm[2] = {ANVIL_CONTACT_PHYSICAL, ANVIL_CONTACT_PAPER};
+	double h0 = anvil_scene_h(base) / base->radius, x[2][MODELS_NH], y[2][MODELS_NH];
+	struct plot_curve rf[2] = {{0, 0, NULL, NULL}, {0, 0, NULL, NULL}};
+	struct anvil_scene sc;
+	int st = ANVIL_OK, nh;
+	/* P(t): the scene's thickness and the half-space, each contact */
+	for (int k = 0; k < 2 && !st; k++)
+		for (int i = 0; i < (isfinite(h0) ? 2 : 1) && !st; i++) {
+			enum anvil_model m = models_scene(&sc, base, cm[k], i ? INFINITY : h0);
+			st = batch_run(b, &sc, m, PLOT_NHIST);
+		}
+	nh = b->n;
+	for (int k = 0; k < 2 && !st; k++) {
+		rf[k] = (struct plot_curve){base->velocity, 0, x[k], y[k]};
+		for (int i = 0; i < MODELS_NH && !st; i++) {
+			enum anvil_model m = models_scene(&sc, base, cm[k], models_h[i]);
+			st = batch_run(b, &sc, m, 0);
+			if (!st && b->runs[b->n - 1].r) {
+				x[k][rf[k].n] = models_h[i];
+				y[k][rf[k].n++] = b->runs[b->n - 1].r->Rf.val;
+			}
+		}
+	}
+	return st ? st : built(c, plot_chart_models(c, b->runs, nh, rf));
+}
+/* --- end contactB --- */
+
 /* Runs the models of a.kind and builds its chart. */
 static int build_chart(struct plot_chart *c, struct batch *b,
 		       const struct anvil_scene *sc, const struct plot_args *a)
@@ -654,6 +704,8 @@ static int build_chart(struct plot_chart *c, struct batch *b,
 		return chart_accuracy(c, b, sc);
 	case PLOT_RESTITUTION_VELOCITY: /* plot_sweep.c, on every core */
 		return plot_sweep_rf_velocity(c, sc, a->fixed_h) ? ANVIL_EINVAL : ANVIL_OK;
+	case PLOT_MODELS:
+		return chart_models(c, b, sc);
 	default:
 		st = runs_history(b, sc, a);
 		return st ? st : built(c, plot_chart_history(c, a->kind, b->runs, b->n));
@@ -700,6 +752,10 @@ static int plot_scene(struct plot_args *a)
 	int st = cli_scene(&sc, a->scene, a->sets.v, a->sets.n), code = EXIT_FAIL;
 	if (st)
 		return cli_exit_code(st);
+	/* The paper's figures with the paper's values beside them: its contact
+	 * model, unless the scene names one (models draws both). */
+	if (sc.effects.contact == ANVIL_CONTACT_AUTO && a->kind != PLOT_MODELS)
+		sc.effects.contact = ANVIL_CONTACT_PAPER;
 	/* Fail on a missing gnuplot before minutes of layer runs. */
 	if (a->out && plot_gnuplot_check(&err)) {
 		cli_error("%s", err.msg);
@@ -709,7 +765,7 @@ static int plot_scene(struct plot_args *a)
 		return EXIT_FAIL;
 	st = build_chart(&c, b, &sc, a);
 	if (!st) {
-		int vary_h = a->kind == PLOT_RESTITUTION_THICKNESS ||
+		int vary_h = a->kind == PLOT_RESTITUTION_THICKNESS || a->kind == PLOT_MODELS ||
 			     (!a->fixed_h && a->kind != PLOT_ACCURACY);
 		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY ||
 			     (!a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||

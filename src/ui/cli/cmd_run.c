@@ -163,12 +163,17 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 	int code = EXIT_OK;
 	anvil_solver_set_progress(s, run_progress_cb, &prog);
 	anvil_solver_set_warn(s, run_warn, NULL);
-	for (int m = 0; m < ANVIL_MODEL_COUNT && code == EXIT_OK; m++) {
+	/* each model; with [effects] contact = both, the paper's layer and
+	 * halfspace rows before the physical ones */
+	for (int k = 0; k < 2 * ANVIL_MODEL_COUNT && code == EXIT_OK; k++) {
 		struct anvil_err err = {0};
-		if (!(anvil_scene_models(sc) & (1u << m)))
+		int m = k / 2, paper = k % 2 == 0;
+		if (!(anvil_scene_models(sc) & (1u << m)) || (paper && !pl->paper[m].run))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
-		int st = anvil_solver_run(s, pl, (enum anvil_model)m, nhist, &res[*n], &err);
+		int st = anvil_solver_run_contact(s, pl, (enum anvil_model)m,
+						  paper ? ANVIL_CONTACT_PAPER : ANVIL_CONTACT_AUTO,
+						  nhist, &res[*n], &err);
 		cli_progress_done(&prog.shown);
 		(*n)++;
 		if (st > 0) {
@@ -318,7 +323,7 @@ static void run_output(struct run_opts *o, const struct anvil_scene *sc)
 static int run_scene(struct run_opts *o)
 {
 	struct anvil_scene sc;
-	struct anvil_result res[ANVIL_MODEL_COUNT];
+	struct anvil_result res[2 * ANVIL_MODEL_COUNT]; /* a paper twin per model at most */
 	struct cli_out out = {0}, hist = {0};
 	int n = 0, tol = 0, code;
 	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);

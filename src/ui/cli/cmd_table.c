@@ -312,6 +312,7 @@ int anvil_cmd_table(int argc, char **argv)
 		goto done;
 	if ((st = cli_scene(&sc, NULL, o.sets.v, o.sets.n)))
 		goto done;
+	sc.effects.contact = ANVIL_CONTACT_PAPER; /* the paper's tables: its contact model */
 	if ((st = cli_out_open(&out, o.out)))
 		goto done;
 	if (!(s = anvil_solver_alloc())) {

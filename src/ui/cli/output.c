@@ -337,6 +337,30 @@ double out_h_r0(const struct anvil_scene *sc, const struct anvil_result *r)
 	return anvil_scene_h(sc) / sc->radius;
 }
 
+/* --- contactB: which contact model a row has (options.h) --- */
+
+/* "physical" or "paper" for a layer or halfspace row, "-" for hertz and
+ * zener, which have their own contact. */
+static const char *contact_of(const struct anvil_result *r)
+{
+	return r->contact == ANVIL_CONTACT_PHYSICAL || r->contact == ANVIL_CONTACT_PAPER
+		       ? anvil_contact_name(r->contact)
+		       : "-";
+}
+
+/* The table's row name: the model, "layer (paper)" for the paper's contact
+ * (the physical rows carry the plain name: they are what anvil computes
+ * unless asked otherwise). */
+static const char *row_name(const struct anvil_result *r, char *buf, size_t n)
+{
+	if (r->contact == ANVIL_CONTACT_PAPER)
+		snprintf(buf, n, "%s (paper)", anvil_model_name(r->model));
+	else
+		snprintf(buf, n, "%s", anvil_model_name(r->model));
+	return buf;
+}
+/* --- end contactB --- */
+
 /* One number of a result row: its column name, how to get it (scaled to the
  * column's unit), and how the table rounds it.  A table of columns keeps
  * the header, the machine rows and the JSON keys in one place. */
@@ -414,6 +438,7 @@ static void machine_header(struct out_grid *g)
 			out_grid_cell(g, "%s", columns[i].err_name);
 	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time_s");
+	out_grid_cell(g, "contact");
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -430,6 +455,7 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), NULL));
 	out_grid_cell(g, "%s", out_num(b, contacts(r), NULL));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
+	out_grid_cell(g, "%s", contact_of(r));
 }
 
 static void table_header(struct out_grid *g)
@@ -449,7 +475,7 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 		      const struct anvil_result *r)
 {
 	char b[40];
-	out_grid_cell(g, "%s", anvil_model_name(r->model));
+	out_grid_cell(g, "%s", row_name(r, b, sizeof b));
 	out_grid_cell(g, "%s", out_num(b, out_h_r0(sc, r), "%.4g"));
 	for (int i = 0; i < NCOLUMNS; i++) {
 		out_grid_cell(g, "%s", out_num(b, value(r, &columns[i]), columns[i].fmt));
@@ -478,8 +504,9 @@ static void table_caption(FILE *f, const struct anvil_scene *sc)
 static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 			const struct anvil_result *res, int n)
 {
-	/* model, h_r0, V0 (not in the table), values, errors, contacts, seconds */
-	int ncol = 3 + NCOLUMNS + nerr() + 2 - (fmt == OUT_TABLE);
+	/* model, h_r0, V0 and contact (not in the table: the row name says it),
+	 * values, errors, contacts, seconds */
+	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 - 2 * (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)
 		return ANVIL_ENOMEM;
@@ -497,10 +524,11 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 	out_grid_free(g);
 	if (fmt == OUT_TABLE && !st) {
 		int any = 0;
+		char b[40];
 		for (int i = 0; i < n; i++)
 			if (res[i].note[0])
 				fprintf(f, "%s%s: %s\n", any++ ? "" : "\n",
-					anvil_model_name(res[i].model), res[i].note);
+					row_name(&res[i], b, sizeof b), res[i].note);
 		table_caption(f, sc);
 		st = ferror(f) ? ANVIL_EIO : ANVIL_OK;
 	}
@@ -562,6 +590,8 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 	json_number(f, r->seconds);
 	json_key(f, in, "note");
 	json_string(f, r->note);
+	json_key(f, in, "contact");
+	json_string(f, contact_of(r));
 	fputs("\n    }", f);
 }
 
@@ -589,14 +619,14 @@ int out_results(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 
 int out_history(FILE *f, const struct anvil_result *res, int n)
 {
-	fputs("model\tt_us\tP_kN\tv_m_s\tW_impactor_um\tw_layer_um\talphaH_um\n", f);
+	fputs("model\tt_us\tP_kN\tv_m_s\tW_impactor_um\tw_layer_um\talphaH_um\tcontact\n", f);
 	for (int i = 0; i < n; i++) {
 		const struct anvil_history *h = &res[i].hist;
-		const char *name = anvil_model_name(res[i].model);
+		const char *name = anvil_model_name(res[i].model), *c = contact_of(&res[i]);
 		for (size_t k = 0; k < h->n; k++)
-			fprintf(f, "%s\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\n", name,
+			fprintf(f, "%s\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%s\n", name,
 				h->t[k] * 1e6, h->P[k] * 1e-3, h->v[k], h->W[k] * 1e6,
-				h->w[k] * 1e6, h->alpha[k] * 1e6);
+				h->w[k] * 1e6, h->alpha[k] * 1e6, c);
 	}
 	return ferror(f) ? ANVIL_EIO : ANVIL_OK;
 }

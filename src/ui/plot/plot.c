@@ -53,6 +53,8 @@ static const struct plot_kind_info kinds[PLOT_KIND_COUNT] = {
 	[PLOT_RESTITUTION_MAP] = {"restitution-map",
 		"R_f over V0 x h as a heat map with contours, from FILE (anvil sweep's rows)",
 		"impact velocity V_0 (m/s)", "layer thickness h / r_0", ""},
+	[PLOT_MODELS] = {"models", "the physical and the paper's contact: P(t) and R_f against h/r0",
+		"t (µs)", "", ""},
 };
 
 const struct plot_kind_info *plot_kind_info(enum plot_kind k)
@@ -463,6 +465,54 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 			snprintf(c->keys[i].label, sizeof c->keys[i].label, "%s",
 				 kind == PLOT_DEFLECTION ? "Hertz, rigid: w = 0, not drawn"
 				 : "Hertz, rigid layer (w = 0)");
+	return ANVIL_OK;
+}
+
+/* ---------------------------------------------- contactB: the two models */
+
+int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
+		      const struct plot_curve rf[2])
+{
+	int st = ANVIL_OK, any_hs = 0;
+	plot_chart_init(c, PLOT_MODELS);
+	snprintf(c->title, sizeof c->title,
+		 "The physical and the paper's contact model, V_0 = %g m/s", n > 0 ? runs[0].V0 : 0.0);
+	for (int i = 0; i < n && !st; i++) {
+		const struct plot_run *run = &runs[i];
+		if (!ok_run(run) || run->r->hist.n == 0)
+			continue;
+		int paper = run->r->contact == ANVIL_CONTACT_PAPER;
+		st = plot_chart_add(c, "", paper ? PLOT_DASH : PLOT_LINE, run_colour(run),
+				    run->r->hist.t, run->r->hist.P, run->r->hist.n, 1e6, 1e-3, 0);
+		if (!st)
+			c->s[c->nseries - 1].panel = 0;
+		any_hs |= !isfinite(run->h_r0) || run->model == ANVIL_MODEL_HALFSPACE;
+	}
+	for (int k = 0; k < 2 && !st; k++) {
+		if (rf[k].n == 0)
+			continue;
+		st = plot_chart_add(c, "", k ? PLOT_DASH : PLOT_LINESPOINTS, PLOT_BLACK, rf[k].x,
+				    rf[k].y, rf[k].n, 1.0, 1.0, 1);
+		if (!st) {
+			c->s[c->nseries - 1].panel = 1;
+			c->s[c->nseries - 1].point = PLOT_PT_DIAMOND;
+		}
+	}
+	if (st || c->nseries == 0)
+		return st ? st : ANVIL_EINVAL;
+	for (int i = 0; i < n; i++) { /* the thicknesses' colours, once each */
+		char label[PLOT_LABEL_MAX];
+		if (!ok_run(&runs[i]) || runs[i].r->hist.n == 0)
+			continue;
+		if (!isfinite(runs[i].h_r0) || runs[i].model == ANVIL_MODEL_HALFSPACE)
+			snprintf(label, sizeof label, "half-space, h = ∞");
+		else
+			snprintf(label, sizeof label, "h = %g r_0", runs[i].h_r0);
+		plot_chart_key(c, label, PLOT_LINE, run_colour(&runs[i]), 0);
+	}
+	(void)any_hs;
+	plot_chart_key(c, "physical contact", PLOT_LINE, PLOT_BLACK, 0);
+	plot_chart_key(c, "paper's contact", PLOT_DASH, PLOT_BLACK, 0);
 	return ANVIL_OK;
 }
 

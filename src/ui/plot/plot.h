@@ -60,6 +60,7 @@ enum plot_kind {
 	PLOT_HISTORY,               /* P, v and w stacked, one time axis */
 	PLOT_RESTITUTION_VELOCITY,  /* R_f against V0 per thickness (sweeps) */
 	PLOT_RESTITUTION_MAP,       /* R_f over V0 x h from a sweep's file */
+	PLOT_MODELS,                /* the two contact models: P(t) | R_f(h/r0) */
 	PLOT_KIND_COUNT
 };
 
@@ -236,6 +237,14 @@ int plot_paper_load(struct plot_paper *p, const char *path, struct anvil_err *er
  * r == NULL (failed models).  Histories are borrowed: runs[i].r must
  * outlive the chart; everything else is copied.  They return ANVIL_OK,
  * ANVIL_ENOMEM, or ANVIL_EINVAL when the chart has no series at all. */
+
+/* The two contact models side by side (PLOT_MODELS; effects.contact in
+ * man anvil, MODELS): left, P(t) of every run with a history, colour by
+ * thickness, the physical contact solid and the paper's dashed (each run's
+ * r->contact); right, R_f against h/r0 of the two, rf[0] physical, rf[1]
+ * the paper's (black, as on every thickness axis). */
+int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
+		      const struct plot_curve rf[2]);
 
 /* P(t), v(t) or w(t) (kind PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION) of
  * every run with a history, or all three stacked (PLOT_HISTORY).  Colour

@@ -17,6 +17,9 @@
 /* The plot area's left and right edges, and the top (screen fractions):
  * room for the y tick labels and label, and for title and subtitle. */
 #define LEFT 0.11
+/* The time axis of the histories (as plot.c's TIME_AXIS) */
+#define TIME_AXIS_W "set xrange [0:*]\nset autoscale fix\n" \
+	"set offsets 0, graph 0.03, graph 0.05, graph 0.05\n"
 #define RIGHT 0.965
 #define TOP_NOSUB 0.90
 #define TOP_SUB 0.865
@@ -167,7 +170,7 @@ static const char *key_inside(enum plot_kind k)
  * pixels a row at gnuplot's font size 10. */
 static double frame_bottom(const struct plot_chart *c, const struct plot_opts *o)
 {
-	int rows = key_inside(c->kind) ? 0 : (c->nkeys + 1) / 2;
+	int rows = key_inside(c->kind) || c->kind == PLOT_MODELS ? 0 : (c->nkeys + 1) / 2;
 	double px = 64 + 20.0 * rows + (rows ? 10 : 0) + (c->footnote[0] ? 16 : 0);
 	return fmin(0.45, px / (o->height > 0 ? o->height : 600));
 }
@@ -277,6 +280,27 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 	fputs("unset multiplot\n", f);
 }
 
+/* contactB: the two contact models side by side, P(t) left, R_f(h/r0)
+ * right (plot_chart_models). */
+static void write_models(FILE *f, const struct plot_chart *c, double top, double bottom)
+{
+	const double mid = 0.5 * (LEFT + RIGHT), gap = 0.045;
+	fputs("set multiplot\n", f);
+	fprintf(f, "# panel 1: P(t)\nset lmargin at screen %g\nset rmargin at screen %g\n"
+		"set tmargin at screen %g\nset bmargin at screen %g\n", LEFT, mid - gap, top, bottom);
+	fputs("set xlabel 't (µs)'\nset ylabel 'contact force P (kN)'\n" TIME_AXIS_W
+	      "set yrange [0:*]\nset key off\n", f);
+	write_plot(f, c, 0, 0);
+	fprintf(f, "# panel 2: R_f against h/r0\nunset label\nunset offsets\nset autoscale\n"
+		"set lmargin at screen %g\nset rmargin at screen %g\n", mid + gap, RIGHT);
+	fputs("set xlabel 'layer thickness h / r_0'\nset ylabel 'coefficient of restitution R_f'\n"
+	      "set logscale x\nset xrange [0.4:25]\nset xtics (0.5, 1, 2, 5, 10, 20)\n"
+	      "set yrange [0:1.05]\n"
+	      "set key inside right bottom vertical Left reverse width 1\n", f);
+	write_plot(f, c, 1, 1);
+	fputs("unset multiplot\n", f);
+}
+
 int plot_write(FILE *f, const struct plot_chart *c, const struct plot_opts *o)
 {
 	const struct plot_kind_info *k = plot_kind_info(c->kind);
@@ -297,6 +321,8 @@ int plot_write(FILE *f, const struct plot_chart *c, const struct plot_opts *o)
 			write_block(f, i + 1, &c->s[i]);
 	if (c->kind == PLOT_HISTORY) {
 		write_history(f, c, c->subtitle[0] ? TOP_SUB : TOP_NOSUB, frame_bottom(c, o));
+	} else if (c->kind == PLOT_MODELS) {
+		write_models(f, c, c->subtitle[0] ? TOP_SUB : TOP_NOSUB, frame_bottom(c, o));
 	} else {
 		write_axes(f, k);
 		fputs(k->setup, f);
