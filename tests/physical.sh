@@ -53,13 +53,9 @@ printf '[effects]\ncontact = fancy\n' >"$tmp/bad.scene"
 check_exit 2 'in a scene file' "$ANVIL" run "$tmp/bad.scene"
 assert '  naming file, line and key' grep -q 'bad.scene:2: effects.contact' "$tmp/err"
 
-# h = 0.25 r0: the physical contact on main's repeated-contact loop (the
-# layer catches the impactor again); R_f from the final velocity
-check 'physical: repeated contacts (h = 0.25 r0)' "$ANVIL" run -m layer -s solver.accuracy=draft \
-	-s layer.thickness=0.25r0 -s effects.contact=physical -f tsv
-assert '  one physical layer row, more than one contact' \
-	awk -F '\t' '$1 == "layer" { n++; ok = $17 >= 2 && $19 == "physical" } END { exit !(n == 1 && ok) }' "$tmp/out"
-assert '  R_f in [0, 1] after the last contact' awk -F '\t' '$1 == "layer" { exit !($8 >= 0 && $8 <= 1) }' "$tmp/out"
+# Repeated contacts in the physical pass are tested in test_physical.c (h =
+# r0/4, fast convolution against the direct sum); a whole run of that scene
+# from here takes minutes at draft (thin-layer chatter: issue 11).
 
 # ---- anvil plot models (the script: no gnuplot needed) ----
 check 'plot models --script' "$ANVIL" plot models --script "$tmp/m.gp"
