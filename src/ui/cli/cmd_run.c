@@ -190,6 +190,8 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 				anvil_model_name((enum anvil_model)m), res[*n - 1].seconds);
 		}
 	}
+	/* prog dies with this frame: the solver runs on (the verdict) without it */
+	anvil_solver_set_progress(s, NULL, NULL);
 	return code;
 }
 
