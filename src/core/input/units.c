@@ -27,7 +27,8 @@ static const struct unit length_units[] = {
 	{"\xc2\xb5m", -6, 1}, {"\xce\xbcm", -6, 1}, {NULL, 0, 0}};
 static const struct unit velocity_units[] = {
 	{"m/s", 0, 1}, {"km/s", 3, 1}, {"mm/us", 3, 1}, {"mm/\xc2\xb5s", 3, 1},
-	{"mm/\xce\xbcs", 3, 1}, {"km/h", 0, 1.0 / 3.6}, {NULL, 0, 0}};
+	{"mm/\xce\xbcs", 3, 1}, {"km/h", 0, 1.0 / 3.6},
+	{"cm/s", -2, 1}, {"mm/s", -3, 1}, {NULL, 0, 0}};
 static const struct unit pressure_units[] = {
 	{"Pa", 0, 1}, {"kPa", 3, 1}, {"MPa", 6, 1}, {"GPa", 9, 1}, {NULL, 0, 0}};
 static const struct unit density_units[] = {

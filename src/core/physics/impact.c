@@ -367,6 +367,23 @@ static int finish_exact(const struct ctx *c, const struct pass *s, double impuls
 		free(e.R);
 		return ANVIL_ENOMEM;
 	}
+	/* The march saw A_n <= 0, but the exact end's alpha at t_k + dt may
+	 * round (or, with the true radius, extrapolate) to a hair above 0 when
+	 * A_n is tiny: no sign change, no root to polish.  The end is then at
+	 * the bracket's edge that the signs point to, within rounding of the
+	 * march's own verdict (and within one step at worst, which the dt/2
+	 * pass's difference carries into the error estimate). */
+	double flo = alpha_end(lo, &e), fhi = alpha_end(hi, &e);
+	if (!(flo > 0 && fhi < 0)) {
+		gsl_root_fsolver_free(rs);
+		free(e.R);
+		if (!isfinite(flo) || !isfinite(fhi))
+			return ANVIL_ENUM;
+		d = fhi >= 0 ? hi : lo;
+		*toff = (double)k * s->dt + d;
+		*ioff = impulse + 0.5 * s->P[k] * d;
+		return ANVIL_OK;
+	}
 	st = gsl_root_fsolver_set(rs, &f, lo, hi);
 	for (int i = 0; !st && i < 100; i++) {
 		st = gsl_root_fsolver_iterate(rs);

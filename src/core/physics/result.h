@@ -42,7 +42,7 @@ struct anvil_result {
 	double contact_on[ANVIL_MAX_CONTACTS], contact_off[ANVIL_MAX_CONTACTS];
 	double t_free;       /* s: the free motion after the last contact was followed to here */
 	double seconds;      /* wall time spent on this model */
-	char note[160];      /* what the model left out, or "" */
+	char note[320];      /* what the model left out, or "" */
 	/* How the run ended: ANVIL_OK; a warning (> 0, e.g. ANVIL_WTOL: the
 	 * values and error estimates stand, the target was missed); a failure
 	 * (< 0: no usable values).  why says it in words ("" for ANVIL_OK). */

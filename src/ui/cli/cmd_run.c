@@ -154,9 +154,25 @@ static void run_warn(void *ctx, const char *msg)
 	cli_error("warning: %s", msg);
 }
 
+/* A row that failed: every value NaN (printed "-", never a zero taken for
+ * a result), its reason as the row's note. */
+static void run_failed_row(struct anvil_result *r)
+{
+	struct anvil_val none = {NAN, NAN};
+	r->ts = r->tmax = r->Pmax = r->Vs = r->Rf = r->Ea = none;
+	r->lambda_star = r->Rf_star = NAN;
+	r->ncontacts = 0;
+	anvil_result_free(r); /* the history: a failed row has none */
+	const char *why = r->why[0] ? r->why : "failed", *name = anvil_model_name(r->model);
+	size_t len = strlen(name);
+	if (!strncmp(why, name, len) && !strncmp(why + len, ": ", 2))
+		why += len + 2; /* the row already names the model */
+	snprintf(r->note, sizeof r->note, "not computed: %.290s", why);
+}
+
 static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		      const struct anvil_scene *sc, const struct run_opts *o,
-		      struct anvil_result *res, int *n, int *tol)
+		      struct anvil_result *res, int *n, int *tol, int *failed)
 {
 	struct run_progress prog = {.quiet = o->quiet};
 	size_t nhist = o->history || o->png ? RUN_NHIST : 0;
@@ -182,9 +198,11 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 			cli_error("warning: %s", model_message((enum anvil_model)m, &err, st));
 			*tol = 1;
 		} else if (st) {
-			/* a refusal without values is a failure: no row of zeros */
+			/* A failure has no values: its row says why, and the other
+			 * models still run and print (the exit status says it). */
 			cli_error("%s", model_message((enum anvil_model)m, &err, st));
-			code = EXIT_FAIL;
+			run_failed_row(&res[*n - 1]);
+			*failed = 1;
 		} else if (o->verbose) {
 			fprintf(stderr, "anvil: %s: %.3g s\n",
 				anvil_model_name((enum anvil_model)m), res[*n - 1].seconds);
@@ -327,7 +345,7 @@ static int run_scene(struct run_opts *o)
 	struct anvil_scene sc;
 	struct anvil_result res[2 * ANVIL_MODEL_COUNT]; /* a paper twin per model at most */
 	struct cli_out out = {0}, hist = {0};
-	int n = 0, tol = 0, code;
+	int n = 0, tol = 0, failed = 0, code;
 	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);
 	if (st)
 		return cli_exit_code(st);
@@ -375,7 +393,7 @@ static int run_scene(struct run_opts *o)
 		anvil_solver_free(s);
 		return EXIT_FAIL;
 	}
-	code = run_models(s, &pl, &sc, o, res, &n, &tol);
+	code = run_models(s, &pl, &sc, o, res, &n, &tol, &failed);
 	if (!code)
 		run_verdict(s, &pl, o);
 	anvil_solver_free(s);
@@ -393,7 +411,7 @@ static int run_scene(struct run_opts *o)
 		code = anvil_field_map_file(&sc, sc.output.field, o->quiet);
 	for (int i = 0; i < n; i++)
 		anvil_result_free(&res[i]);
-	return code ? code : tol ? EXIT_FAIL : EXIT_OK;
+	return code ? code : tol || failed ? EXIT_FAIL : EXIT_OK;
 }
 
 int anvil_cmd_run(int argc, char **argv)

@@ -586,8 +586,12 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 		json_key(f, in, columns[i].err_name);
 		json_number(f, error(r, &columns[i]));
 	}
+	json_key(f, in, "contacts");
+	json_number(f, contacts(r));
 	json_key(f, in, "time_s");
 	json_number(f, r->seconds);
+	json_key(f, in, "status");
+	json_string(f, r->status < 0 ? "failed" : r->status > 0 ? "warning" : "ok");
 	json_key(f, in, "note");
 	json_string(f, r->note);
 	json_key(f, in, "contact");
