@@ -31,6 +31,13 @@ void cli_error(const char *fmt, ...)
 	fputc('\n', stderr);
 }
 
+const char *cli_model_reason(enum anvil_model m, const char *msg)
+{
+	const char *name = anvil_model_name(m);
+	size_t n = strlen(name);
+	return strncmp(msg, name, n) == 0 && msg[n] == ':' && msg[n + 1] == ' ' ? msg + n + 2 : msg;
+}
+
 int cli_exit_code(int status)
 {
 	if (status == ANVIL_OK)

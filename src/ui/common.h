@@ -24,6 +24,9 @@ void cli_init(void);
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* Map a core status to an exit code: input errors -> 2, others -> 1. */
+/* A model's message without a leading "MODEL: " (the core's refusals
+ * name the model; a row or a "MODEL: " prefix already does). */
+const char *cli_model_reason(enum anvil_model m, const char *msg);
 int cli_exit_code(int status);
 
 /* --strict, a global option (main.c takes it out of argv before the

@@ -93,6 +93,16 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
 				     ANVIL_MAX_STEPS, j->dt * 1e6,
 				     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
 				     "set a larger solver.dt or a coarser solver.accuracy");
+	/* the window and bandwidth as the solver rounds them (cache grid) */
+	double tq = anvil_cache_grid(anvil_cache_grid_up(tau_end));
+	double oq = anvil_cache_grid(anvil_cache_grid_up(omega));
+	if (anvil_wave_needs_corr(p, j, tau_end) && terms <= ANVIL_MAX_TERMS &&
+	    !anvil_green_fits(ANVIL_GREEN_LAYER_CORRECTION, j->hh, tq, oq))
+		return anvil_err_set(err, ANVIL_ETOL,
+				     "layer: the contact lasts over %.3g us (lambda* = %.3g), more samples than a layer response holds at this bandwidth; %s",
+				     tau_end * p->r0 / p->c2 * 1e6, p->lambda_star,
+				     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
+				     "set a coarser solver.accuracy");
 	if (anvil_wave_needs_corr(p, j, tau_end) && terms > ANVIL_MAX_TERMS)
 		return anvil_err_set(err, ANVIL_ETOL,
 				     "layer: the contact lasts over %.3g us (lambda* = %.3g), too long for the transform solver (%.0f terms); the thin-plate model 'zener' applies here",
@@ -646,6 +656,17 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
 	/* effects.waves = halfspace: no reflections, as for the paper's rows */
 	int layer = m == ANVIL_MODEL_LAYER && isfinite(e->p.h) &&
 		    e->pb->effects.waves != ANVIL_WAVES_HALFSPACE;
+	/* Only the effects the scene calls for (as layer_auto does for the
+	 * paper's contact): under effects.waves = auto, a layer whose
+	 * reflections change P_max, t_s and R_f by less than the target allows
+	 * (plan's bending estimate, 0 when they return after the contact) is
+	 * the physical half-space, that estimate its model error. */
+	double d_hs = layer && !late_reflection(e) ? e->bending : 0.0;
+	/* (a late reflection stays with the layer job: the solver leaves its
+	 * correction out by causality, exactly, and sees a longer contact) */
+	int small = layer && d_hs > 0 && e->pb->effects.waves == ANVIL_WAVES_AUTO &&
+		    ANVIL_PLAN_SAFETY * d_hs <= e->target;
+	layer = layer && !small;
 	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0);
 	enum anvil_cache_where where;
 	/* layer_cost prices a response and its twin: three responses are 1.5 of it */
@@ -656,7 +677,9 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
 	r->run = run;
 	r->off = off;
 	r->contact = ANVIL_CONTACT_PHYSICAL;
-	row_set(r, layer ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE, ANVIL_WHY_PHYSICAL, 0.0, cost);
+	row_set(r, layer ? ANVIL_METHOD_LAYER : ANVIL_METHOD_HALFSPACE,
+		small ? ANVIL_WHY_SMALL_PLATE : ANVIL_WHY_PHYSICAL,
+		small ? d_hs : 0.0, cost);
 	r->cost_full = cost;
 	r->job = layer ? e->lay : e->hs;
 	row_fig(r, ANVIL_FIG_RADIATED);

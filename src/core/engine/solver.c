@@ -530,10 +530,16 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 		r->lambda_star = 0.0;
 		r->Rf_star = 1.0;
 	}
+	if (row->model_err > 0) /* the layer's reflections left out (plan.c) */
+		add_model_error(r, p, row->model_err);
 	if (corr)
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the layer's remainder with the true contact radius (a_max = %.3g mm), reflections from 2h/c1 = %.3g us",
 			 a * 1e3, 2e6 * p->h / p->c1);
+	else if (row->model_err > 0)
+		snprintf(r->note, sizeof r->note,
+			 "physical contact on the half-space: the reflections from 2h/c1 = %.3g us change the results by about %.2g (estimated), below the target: left out",
+			 2e6 * p->h / p->c1, row->model_err);
 	else
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");

@@ -15,28 +15,29 @@ struct unit {
 	const char *name;
 	int exp10;
 	double factor;
+	int parse_only; /* read, never chosen to print (cm/s, mm/s: 0.99 m/s stays so) */
 };
 
 /* "\xc2\xb5" is U+00B5 MICRO SIGN, "\xce\xbc" U+03BC GREEK SMALL LETTER MU:
  * both are typed for "micro", so both are accepted, as is ASCII "u". */
-static const struct unit none_units[] = {{NULL, 0, 0}};
+static const struct unit none_units[] = {{NULL, 0, 0, 0}};
 static const struct unit mass_units[] = {
-	{"kg", 0, 1}, {"g", -3, 1}, {"mg", -6, 1}, {NULL, 0, 0}};
+	{"kg", 0, 1, 0}, {"g", -3, 1, 0}, {"mg", -6, 1, 0}, {NULL, 0, 0, 0}};
 static const struct unit length_units[] = {
-	{"m", 0, 1}, {"cm", -2, 1}, {"mm", -3, 1}, {"um", -6, 1},
-	{"\xc2\xb5m", -6, 1}, {"\xce\xbcm", -6, 1}, {NULL, 0, 0}};
+	{"m", 0, 1, 0}, {"cm", -2, 1, 0}, {"mm", -3, 1, 0}, {"um", -6, 1, 0},
+	{"\xc2\xb5m", -6, 1, 0}, {"\xce\xbcm", -6, 1, 0}, {NULL, 0, 0, 0}};
 static const struct unit velocity_units[] = {
-	{"m/s", 0, 1}, {"km/s", 3, 1}, {"mm/us", 3, 1}, {"mm/\xc2\xb5s", 3, 1},
-	{"mm/\xce\xbcs", 3, 1}, {"km/h", 0, 1.0 / 3.6},
-	{"cm/s", -2, 1}, {"mm/s", -3, 1}, {NULL, 0, 0}};
+	{"m/s", 0, 1, 0}, {"km/s", 3, 1, 0}, {"mm/us", 3, 1, 0}, {"mm/\xc2\xb5s", 3, 1, 0},
+	{"mm/\xce\xbcs", 3, 1, 0}, {"km/h", 0, 1.0 / 3.6, 0},
+	{"cm/s", -2, 1, 1}, {"mm/s", -3, 1, 1}, {NULL, 0, 0, 0}};
 static const struct unit pressure_units[] = {
-	{"Pa", 0, 1}, {"kPa", 3, 1}, {"MPa", 6, 1}, {"GPa", 9, 1}, {NULL, 0, 0}};
+	{"Pa", 0, 1, 0}, {"kPa", 3, 1, 0}, {"MPa", 6, 1, 0}, {"GPa", 9, 1, 0}, {NULL, 0, 0, 0}};
 static const struct unit density_units[] = {
-	{"kg/m^3", 0, 1}, {"kg/m3", 0, 1}, {"g/cm^3", 3, 1}, {"g/cm3", 3, 1},
-	{NULL, 0, 0}};
+	{"kg/m^3", 0, 1, 0}, {"kg/m3", 0, 1, 0}, {"g/cm^3", 3, 1, 0}, {"g/cm3", 3, 1, 0},
+	{NULL, 0, 0, 0}};
 static const struct unit time_units[] = {
-	{"s", 0, 1}, {"ms", -3, 1}, {"us", -6, 1}, {"\xc2\xb5s", -6, 1},
-	{"\xce\xbcs", -6, 1}, {"ns", -9, 1}, {NULL, 0, 0}};
+	{"s", 0, 1, 0}, {"ms", -3, 1, 0}, {"us", -6, 1, 0}, {"\xc2\xb5s", -6, 1, 0},
+	{"\xce\xbcs", -6, 1, 0}, {"ns", -9, 1, 0}, {NULL, 0, 0, 0}};
 
 struct dim_info {
 	const char *noun;    /* "a mass" */
@@ -232,7 +233,7 @@ void anvil_units_format(double si, enum anvil_dim dim, char *buf, size_t n)
 		return;
 	}
 	for (const struct unit *u = dims[dim].units; u->name; ++u) {
-		if (u->factor != 1 || !ascii_only(u->name))
+		if (u->factor != 1 || u->parse_only || !ascii_only(u->name))
 			continue;
 		/* 1.4999: 1 MPa rather than 1000 kPa */
 		double d = fabs(log10(fabs(si)) - u->exp10 - 1.4999);

@@ -351,6 +351,10 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
 	return e->R ? ANVIL_OK : ANVIL_ENOMEM;
 }
 
+/* Relative size of a wrong sign at the contact end's bracket taken for
+ * rounding (finish_exact): far above 1e-16, far below any real mismatch. */
+#define END_FLAT 1e-9
+
 /* The end of the contact whose last node in contact is k = s->n - 1:
  * *toff its time, *ioff the impulse up to it (impulse: up to t_k). */
 static int finish_exact(const struct ctx *c, const struct pass *s, double impulse,
@@ -369,15 +373,15 @@ static int finish_exact(const struct ctx *c, const struct pass *s, double impuls
 	}
 	/* The march saw A_n <= 0, but the exact end's alpha at t_k + dt may
 	 * round (or, with the true radius, extrapolate) to a hair above 0 when
-	 * A_n is tiny: no sign change, no root to polish.  The end is then at
-	 * the bracket's edge that the signs point to, within rounding of the
-	 * march's own verdict (and within one step at worst, which the dt/2
-	 * pass's difference carries into the error estimate). */
+	 * A_n is tiny: no sign change, no root to polish.  When the wrong-signed
+	 * end is at rounding level against the other (END_FLAT), the end is at
+	 * that edge; anything larger is a failure (a runaway: tests/test_contact.c). */
 	double flo = alpha_end(lo, &e), fhi = alpha_end(hi, &e);
 	if (!(flo > 0 && fhi < 0)) {
 		gsl_root_fsolver_free(rs);
 		free(e.R);
-		if (!isfinite(flo) || !isfinite(fhi))
+		if (!(fhi >= 0 && fhi <= END_FLAT * fabs(flo)) &&
+		    !(flo <= 0 && -flo <= END_FLAT * fabs(fhi)))
 			return ANVIL_ENUM;
 		d = fhi >= 0 ? hi : lo;
 		*toff = (double)k * s->dt + d;

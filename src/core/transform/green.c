@@ -382,6 +382,17 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 	return gsl_interp_init(g->interp, g->tau, g->ramp, g->n) ? ANVIL_ENUM : ANVIL_OK;
 }
 
+int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, double omega_max)
+{
+	double t1 = mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(hh, tau_end) : 0;
+	double t_inv = t1 > 0 ? t1 : tau_end, Tp = 2.0 * t_inv;
+	struct anvil_durbin dl;
+	if (!(tau_end > 0) || anvil_durbin_init(&dl, Tp, 1.0 / Tp, omega_max, 0))
+		return 0;
+	double dtau = 2.0 * Tp / (double)anvil_durbin_fft_size(&dl, GREEN_N_MIN);
+	return floor(tau_end / dtau) + 2 <= (double)GREEN_SAMPLES_MAX;
+}
+
 /* The main response g and, when tw is not NULL, its twin at half the
  * bandwidth from the same spectrum: the twin's line is the same (same
  * window, same c0), its terms n <= M' the first of the main's.  Every

@@ -72,6 +72,12 @@ struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh
 					   anvil_progress_fn progress, void *ctx,
 					   struct anvil_green **twin, struct anvil_err *err);
 void anvil_green_free(struct anvil_green *g);
+/* 1 if a response over [0, tau_end] at bandwidth omega_max fits this
+ * module's limits (ANVIL_DURBIN_M_MAX terms, at most 2^21 + 2 samples: a
+ * long window continued by the plate keeps the inversion's fine step), by
+ * the arithmetic green_compute uses with the default settings; 0 if
+ * anvil_green_alloc would refuse it.  The planner asks before any work. */
+int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, double omega_max);
 /* The same for the Hertz-shaped load of radius patch r0, 0 <= patch <= 1
  * (ANVIL_GREEN_LAYER_CORRECTION only; anvil_green_alloc is patch = 1).
  * patch = 0 is a point load: the correction (layer less half-space) stays

@@ -138,12 +138,8 @@ static int run_progress_cb(void *ctx, double fraction, const char *what)
 static const char *model_message(enum anvil_model m, const struct anvil_err *err, int st)
 {
 	static char buf[ANVIL_ERR_MSG + 32];
-	const char *name = anvil_model_name(m), *msg = err->msg[0] ? err->msg : anvil_strerror(st);
-	size_t n = strlen(name);
-	if (strncmp(msg, name, n) == 0 && msg[n] == ':')
-		snprintf(buf, sizeof buf, "%s", msg);
-	else
-		snprintf(buf, sizeof buf, "%s: %s", name, msg);
+	const char *msg = err->msg[0] ? err->msg : anvil_strerror(st);
+	snprintf(buf, sizeof buf, "%s: %s", anvil_model_name(m), cli_model_reason(m, msg));
 	return buf;
 }
 
@@ -163,11 +159,8 @@ static void run_failed_row(struct anvil_result *r)
 	r->lambda_star = r->Rf_star = NAN;
 	r->ncontacts = 0;
 	anvil_result_free(r); /* the history: a failed row has none */
-	const char *why = r->why[0] ? r->why : "failed", *name = anvil_model_name(r->model);
-	size_t len = strlen(name);
-	if (!strncmp(why, name, len) && !strncmp(why + len, ": ", 2))
-		why += len + 2; /* the row already names the model */
-	snprintf(r->note, sizeof r->note, "not computed: %.290s", why);
+	snprintf(r->note, sizeof r->note, "not computed: %.290s",
+		 cli_model_reason(r->model, r->why[0] ? r->why : "failed"));
 }
 
 static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,

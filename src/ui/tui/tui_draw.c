@@ -11,6 +11,7 @@
 
 #include "params.h"
 #include "commands.h"
+#include "common.h"
 #include "plot.h"
 #include "problem.h"
 #include "zener.h"
@@ -268,7 +269,9 @@ static void draw_notes(const struct tui_model *m, int y)
 			continue;
 		if (row->status != ANVIL_OK)
 			putf(y + used++, TABLE_X, w, attr(row->have ? R_INFO : R_ERROR),
-			     "%s: %s", title, row->msg[0] ? row->msg : anvil_strerror(row->status));
+			     "%s: %s", title,
+			     row->msg[0] ? cli_model_reason(tui_model_order[i], row->msg)
+					 : anvil_strerror(row->status));
 		else if (row->have && row->res.note[0])
 			putf(y + used++, TABLE_X, w, attr(R_INFO), "%s: %s", title,
 			     row->res.note);
