@@ -133,4 +133,21 @@ else
 fi
 chmod 755 "$chmod_dir"
 
+# A response longer than its sample limit is refused when planned: a 100 kg
+# impactor on a 1 r0 layer once failed with "invalid argument" after seconds.
+check 'plan: 100 kg on h = r0' "$ANVIL" plan -m layer -s impactor.mass=100kg
+assert '  the layer row is refused at planning time' grep -q 'refused: layer: .*more samples than a layer response holds' "$tmp/out"
+check_exit 1 'run: 100 kg on h = r0, the layer refused' "$ANVIL" run -m layer,zener -f tsv -s impactor.mass=100kg
+assert '  zener still prints' awk -F '\t' '$1 == "zener" && $4 > 0 { z = 1 } END { exit !z }' "$tmp/out"
+assert '  no invalid argument' sh -c "! grep -q 'invalid argument' '$tmp/err'"
+
+# The physical layer row leaves out reflections that change nothing at
+# the target (a 1 kg impactor at 1 mm/s on 1000 r0: the reflection returns
+# at 2h/c1 = 1.3 ms of a 1.45 ms contact, weakened by a/2h), as the
+# paper's contact does: the half-space, with the estimate as model error.
+check 'plan: 1 kg at 1 mm/s on h = 1000 r0' "$ANVIL" plan -m layer -s layer.thickness=1000r0 -s impactor.mass=1kg -s impact.velocity=1mm/s
+assert '  the layer row is the half-space within an estimate' grep -Eq '^  layer +halfspace +within ~' "$tmp/out"
+check 'run: 1 kg at 1 mm/s on h = 1000 r0' "$ANVIL" run -m layer,halfspace -s layer.thickness=1000r0 -s impactor.mass=1kg -s impact.velocity=1mm/s
+assert '  its note says what was left out' grep -q '^layer: physical contact on the half-space: the reflections .* left out' "$tmp/out"
+
 done_testing
