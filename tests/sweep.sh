@@ -124,11 +124,36 @@ cp long.tsv long.bak
 check_exit 2 "--resume refuses another sweep's file" $ANVIL sweep $D -m hertz 'impact.velocity=1m/s' -o long.tsv --resume
 assert "...and leaves it alone" cmp -s long.tsv long.bak
 
+# ---- a velocity sweep shares one response per thickness (plan.h) ----
+VS="$D -m layer impact.velocity=0.1..10m/s:25:log -j 1"
+check "a 25-point velocity sweep, the paper's contact" $ANVIL sweep $VS -s effects.contact=paper -o vp.tsv -v
+assert "...computes one layer response" grep -q '; 1 layer responses computed' "$tmp/err"
+check "the same, the physical contact" $ANVIL sweep $VS -o vf.tsv -v
+assert "...computes its 4 corrections once (point load and patch, the patch below, half the band)" \
+	grep -q '; 4 layer responses computed' "$tmp/err"
+for k in 1 2 3; do
+	$ANVIL sweep $VS --shard $k/3 -o vf$k.tsv -q
+done
+check "its 3 shards merged" $ANVIL merge vf1.tsv vf2.tsv vf3.tsv -o vfm.tsv
+assert "...= unsharded, byte for byte (every shard takes the same envelope)" cmp -s vfm.tsv vf.tsv
+# a row against anvil run of its scene (no envelope): both within their
+# error of the truth, so within the sum of each other's (man page, sweep)
+$ANVIL run $D -m layer -s impact.velocity=1m/s -f tsv >v1.tsv 2>/dev/null
+assert "a row = anvil run of its scene within the sum of their errors (t_s, P_max, R_f)" \
+	awk -F'\t' 'NR == FNR && FNR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+		NR == FNR && $c["V0_m_s"] == 1 { t = $c["ts_us"]; te = $c["ts_err_us"]; p = $c["Pmax_kN"]
+			pe = $c["Pmax_err_kN"]; r = $c["Rf"]; re = $c["Rf_err"]; n++; next }
+		NR != FNR && FNR == 1 { for (i = 1; i <= NF; i++) d[$i] = i; next }
+		NR != FNR { m++; ok = (t - $d["ts_us"])^2 <= (te + $d["ts_err_us"])^2 &&
+			(p - $d["Pmax_kN"])^2 <= (pe + $d["Pmax_err_kN"])^2 &&
+			(r - $d["Rf"])^2 <= (re + $d["Rf_err"])^2 }
+		END { exit !(n == 1 && m == 1 && ok) }' vf.tsv v1.tsv
+
 # ---- the response cache shared by concurrent processes ----
 cache="$tmp/cache"
-# The paper's contact: its layer responses go through the shared cache (the
-# physical contact's point-load corrections are made per run, not cached yet).
-CW="$D -m layer -s effects.contact=paper layer.thickness=1.5r0,2.5r0,3.5r0 impact.velocity=2m/s,4m/s -j 1"
+# The physical contact (the default): its corrections go through the
+# shared cache as the paper's responses do.
+CW="$D -m layer layer.thickness=1.5r0,2.5r0,3.5r0 impact.velocity=2m/s,4m/s -j 1"
 for i in 1 2 3 4; do
 	env -u ANVIL_NO_CACHE XDG_CACHE_HOME="$cache" $ANVIL sweep $CW -o c$i.tsv -q 2>c$i.err &
 	eval "p$i=\$!"
@@ -144,6 +169,13 @@ assert "...no temporary file left in the cache" [ -z "$(find "$cache" -name '*tm
 env -u ANVIL_NO_CACHE XDG_CACHE_HOME="$cache" $ANVIL sweep $CW -o cw.tsv -v 2>cw.err
 assert "a warm run computes no response" grep -q ' 0 layer responses computed' cw.err
 assert "...and writes the same bytes" cmp -s cw.tsv c0.tsv
+assert "...the cache holds 4 corrections per thickness (12 phys- files)" \
+	[ "$(find "$cache" -name 'phys-draft-*.bin' | wc -l)" -eq 12 ]
+CP="$D -m layer -s effects.contact=paper layer.thickness=1.5r0,2.5r0 impact.velocity=2m/s,4m/s -j 1"
+env -u ANVIL_NO_CACHE XDG_CACHE_HOME="$cache" $ANVIL sweep $CP -o cp1.tsv -q
+env -u ANVIL_NO_CACHE XDG_CACHE_HOME="$cache" $ANVIL sweep $CP -o cp2.tsv -v 2>cp.err
+assert "the paper's contact beside them: warm, no response computed, the same bytes" \
+	sh -c "grep -q ' 0 layer responses computed' cp.err && cmp -s cp1.tsv cp2.tsv"
 
 # ---- thickness: against direct runs ----
 check "thickness --within 2%" $ANVIL thickness $D --within 2% --rtol 2% -f tsv -o th.tsv --curve curve.tsv

@@ -530,7 +530,7 @@ static void test_hold(void)
 	gs.omega_max = 2.0;
 	int added = 0, evicted_ok = 1;
 	for (int i = 0; i < ANVIL_CACHE_SLOTS + 6; i++) {
-		struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0 };
+		struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
 		struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3,
 							  4.0, &gs, NULL, NULL, &e);
 		const struct anvil_green *k = anvil_cache_add(c, &key, g);
@@ -539,7 +539,7 @@ static void test_hold(void)
 		double v;
 		evicted_ok &= anvil_halfspace_ramp(hs, 1.0, &v, NULL) == ANVIL_OK && v > 0;
 	}
-	struct anvil_cache_key first = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 0, 0 };
+	struct anvil_cache_key first = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
 	ok(added == ANVIL_CACHE_SLOTS + 6 && evicted_ok && anvil_cache_held(c) == 1 &&
 		   !anvil_cache_probe(c, &first) &&
 		   anvil_cache_halfspace(c, 0.3, 1e-6, &e) == hs,
@@ -549,11 +549,11 @@ static void test_hold(void)
 	anvil_cache_release(c, hs);
 	/* hold every slot: the next insertion is refused, nothing evicted */
 	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
-		struct anvil_cache_key key = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0 };
+		struct anvil_cache_key key = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
 		anvil_cache_add(c, &key, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0, 0.3,
 							   4.0, &gs, NULL, NULL, &e));
 	}
-	struct anvil_cache_key more = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, 99, 0 };
+	struct anvil_cache_key more = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, 99, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
 	ok(anvil_cache_held(c) == ANVIL_CACHE_SLOTS &&
 		   !anvil_cache_add(c, &more, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0,
 								0.3, 4.0, &gs, NULL, NULL, &e)),
@@ -673,7 +673,7 @@ static void test_disk(void)
 	struct anvil_green_settings gs;
 	struct anvil_green_samples x, y;
 	struct anvil_err e;
-	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 3, 0 };
+	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 3, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
 	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
 	gs.omega_max = anvil_cache_grid(key.omega_idx);
 	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3, 20.0, &gs,
@@ -809,6 +809,131 @@ static void test_environment(void)
 	anvil_solver_free(s);
 }
 
+/* ---- the physical contact's corrections in the cache, sharing (plan.h) ---- */
+
+static struct anvil_scene phys_scene(const char *v)
+{
+	struct anvil_scene sc = scene((const char *[]){ "impact.velocity", v, "solver.accuracy",
+							"draft", NULL });
+	sc.effects.contact = ANVIL_CONTACT_PHYSICAL;
+	return sc;
+}
+
+static unsigned long computed(const struct anvil_solver *s)
+{
+	struct anvil_solver_stats st;
+	anvil_solver_stats(s, &st);
+	return st.layer_computed;
+}
+
+static void test_physical_cache(void)
+{
+	struct anvil_solver *s = memory_solver(), *d1 = anvil_solver_alloc(),
+			    *d2 = anvil_solver_alloc();
+	struct anvil_result a, b, c, x, y;
+	struct anvil_scene sc = phys_scene("10 m/s"), near = phys_scene("9.5 m/s");
+	char dir[128];
+	snprintf(dir, sizeof dir, "%s/phys", tmpdir);
+	scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, &a, NULL);
+	unsigned long made = computed(s);
+	scene_run(s, &sc, ANVIL_MODEL_LAYER, 0, &b, NULL);
+	/* point load and patch at the bandwidth, the patch below, the point
+	 * load at half the bandwidth */
+	ok(a.contact == ANVIL_CONTACT_PHYSICAL && made == 4 && computed(s) == 4 &&
+		   same_results(&a, &b),
+	   "physical contact: 4 corrections made once, the same scene again from memory, the same bits");
+	scene_run(s, &near, ANVIL_MODEL_LAYER, 0, &c, NULL);
+	ok(computed(s) == 4 && c.ts.val > a.ts.val,
+	   "9.5 m/s: the same window, bandwidth and patch grid points: corrections reused");
+	anvil_solver_set_cache_dir(d1, dir, NULL);
+	anvil_solver_set_cache_dir(d2, dir, NULL);
+	scene_run(d1, &sc, ANVIL_MODEL_LAYER, 0, &x, NULL);
+	scene_run(d2, &sc, ANVIL_MODEL_LAYER, 0, &y, NULL);
+	ok(computed(d2) == 0 && same_results(&x, &y) && same_results(&a, &x) &&
+		   count_files(dir, "^phys-draft-") == 4,
+	   "on disk (4 phys- files): a fresh solver reads them, the same bits as cold");
+	anvil_result_free(&a);
+	anvil_result_free(&b);
+	anvil_result_free(&c);
+	anvil_result_free(&x);
+	anvil_result_free(&y);
+	anvil_solver_free(s);
+	anvil_solver_free(d1);
+	anvil_solver_free(d2);
+	int grid = 1;
+	for (double v = 0.013; v < 1.2; v *= 1.37) {
+		double p = anvil_plan_patch(v), q = anvil_plan_patch_below(p);
+		grid &= v < 1 ? p >= v && q < v && p == anvil_plan_patch(p) && q == anvil_plan_patch(q)
+			      : p == 1.0;
+	}
+	ok(grid && anvil_plan_patch(0) == 0 && anvil_plan_patch(0.5) == 0.5,
+	   "the patch grid: the half-octave point at or above a_max/r0, the one below under it");
+}
+
+/* Plans of three velocities on one envelope, run on one solver: the
+ * responses counted, each row against its scene alone. */
+static void share_sweep(enum anvil_contact contact, unsigned long want)
+{
+	const char *v[3] = { "0.5 m/s", "2 m/s", "8 m/s" };
+	struct anvil_plan pl[3], alone;
+	struct anvil_plan_share sh = { 0 };
+	struct anvil_solver *s = memory_solver(), *cold = memory_solver();
+	struct anvil_result r[3], a, w;
+	const char *name = contact == ANVIL_CONTACT_PHYSICAL ? "physical" : "paper";
+	int within = 1;
+	for (int i = 0; i < 3; i++) {
+		struct anvil_scene sc = phys_scene(v[i]);
+		sc.effects.contact = contact;
+		scene_plan(&sc, &pl[i], NULL);
+		anvil_plan_share_add(&sh, &pl[i]);
+	}
+	for (int i = 0; i < 3; i++) {
+		struct anvil_scene sc = phys_scene(v[i]);
+		sc.effects.contact = contact;
+		scene_plan(&sc, &alone, NULL);
+		anvil_plan_share_apply(&pl[i], &sh);
+		anvil_solver_run(s, &pl[i], ANVIL_MODEL_LAYER, 0, &r[i], NULL);
+		anvil_solver_run(cold, &alone, ANVIL_MODEL_LAYER, 0, &a, NULL);
+		/* both within their error of the truth: within the sum of each other */
+		within &= fabs(r[i].ts.val - a.ts.val) <= r[i].ts.err + a.ts.err &&
+			  fabs(r[i].Pmax.val - a.Pmax.val) <= r[i].Pmax.err + a.Pmax.err &&
+			  fabs(r[i].Rf.val - a.Rf.val) <= r[i].Rf.err + a.Rf.err;
+		diag("  %s %s: t_s %.9g (shared) %.9g (alone) +- %.2g us", name, v[i],
+		     r[i].ts.val * 1e6, a.ts.val * 1e6, r[i].ts.err * 1e6);
+		anvil_result_free(&a);
+	}
+	ok(computed(s) == want && pl[0].row[ANVIL_MODEL_LAYER].job.omega_idx ==
+					  pl[2].row[ANVIL_MODEL_LAYER].job.omega_idx,
+	   "%s contact: three velocities on one envelope make %lu responses (alone: %lu)", name,
+	   computed(s), computed(cold));
+	ok(within, "  each row is its scene's alone within the sum of their error estimates");
+	anvil_solver_free(cold);
+	cold = memory_solver();
+	anvil_solver_run(cold, &pl[1], ANVIL_MODEL_LAYER, 0, &w, NULL);
+	ok(same_results(&w, &r[1]), "  a shared row cold (a fresh solver) and warm: the same bits");
+	anvil_result_free(&w);
+	for (int i = 0; i < 3; i++)
+		anvil_result_free(&r[i]);
+	anvil_solver_free(s);
+	anvil_solver_free(cold);
+}
+
+static void test_share(void)
+{
+	share_sweep(ANVIL_CONTACT_PAPER, 1);
+	share_sweep(ANVIL_CONTACT_PHYSICAL, 4);
+	struct anvil_plan_share sh = { 0 }, before;
+	struct anvil_plan pl;
+	struct anvil_scene sc = phys_scene("1 m/s");
+	scene_plan(&sc, &pl, NULL);
+	anvil_plan_share_add(&sh, &pl);
+	before = sh;
+	sc = scene((const char *[]){ "layer.thickness", "2r0", NULL });
+	scene_plan(&sc, &pl, NULL);
+	ok(anvil_plan_share_add(&sh, &pl) == ANVIL_EINVAL && !memcmp(&sh, &before, sizeof sh),
+	   "a plan of another thickness is not of the group: refused, the envelope unchanged");
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
@@ -833,6 +958,8 @@ int main(void)
 	test_disk();
 	test_version();
 	test_environment();
+	test_physical_cache();
+	test_share();
 	char cmd[200];
 	snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
 	if (system(cmd) != 0)

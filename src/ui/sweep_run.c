@@ -7,7 +7,11 @@
  * once and reuses them from that solver's memory; units go to threads as
  * they come free, and a thread left without a unit takes scenes from the
  * back of the longest one left (a thin layer's unit can be most of a
- * sweep's work).  Results are handed back in scene order whatever thread
+ * sweep's work).  Before any runs, every scene of the sweep (not only the
+ * shard's) is planned, and each group of scenes sharing a response runs on
+ * the group's envelope (plan.h, anvil_plan_share): one window, bandwidth
+ * and patch for all, so a velocity sweep makes its responses once, and
+ * every shard, thread count and resumed run makes the same choice.  Results are handed back in scene order whatever thread
  * made them, and each is the same bits whichever solver ran it (exact
  * cache lookups), so the output does not depend on the thread count. */
 #include <errno.h>
@@ -47,8 +51,16 @@ static int key_cmp(const void *a, const void *b)
 	return x->s < y->s ? -1 : x->s > y->s;
 }
 
+/* A scene's group (what a layer response depends on, the plan's own h/r0
+ * bits) and its envelope, for sorting. */
+struct share_key {
+	struct anvil_plan_share sh;
+	size_t s;
+};
+
 struct pool {
 	const struct sweep *sw;
+	struct anvil_plan_share *share; /* by scene - s0: its group's envelope */
 	size_t s0, s1;
 	const unsigned char *skip;
 	struct unit_key *order; /* scenes by unit */
@@ -95,7 +107,8 @@ static void note_unphysical(struct anvil_result *r)
 			 "still moving in: re-contact not modelled");
 }
 
-static void run_scene(struct anvil_solver *s, const struct sweep *sw, size_t idx, struct sweep_done *d)
+static void run_scene(struct anvil_solver *s, const struct sweep *sw,
+		      const struct anvil_plan_share *share, size_t idx, struct sweep_done *d)
 {
 	struct anvil_scene sc;
 	struct anvil_err err = {0};
@@ -104,6 +117,8 @@ static void run_scene(struct anvil_solver *s, const struct sweep *sw, size_t idx
 	d->st = sweep_scene(sw, idx, &sc, &err);
 	if (!d->st)
 		d->st = cli_plan(&sc, anvil_solver_cache(s), &pl, &err);
+	if (!d->st && share)
+		anvil_plan_share_apply(&pl, share);
 	if (!d->st && !anvil_scene_models(&sc))
 		d->st = anvil_err_set(&err, ANVIL_EINVAL, "no model to run");
 	if (d->st) {
@@ -161,7 +176,7 @@ static void *worker(void *arg)
 		pthread_mutex_unlock(&p->mu);
 		struct sweep_done *d = calloc(1, sizeof *d);
 		if (d)
-			run_scene(s, p->sw, idx, d);
+			run_scene(s, p->sw, p->share ? &p->share[idx - p->s0] : NULL, idx, d);
 		pthread_mutex_lock(&p->mu);
 		if (!d)
 			p->halt = 1;
@@ -186,6 +201,51 @@ static void *worker(void *arg)
 	pthread_mutex_unlock(&p->mu);
 	anvil_solver_free(s);
 	return NULL;
+}
+
+static int share_cmp(const void *a, const void *b)
+{
+	const struct share_key *x = a, *y = b;
+	if (x->sh.acc != y->sh.acc)
+		return x->sh.acc < y->sh.acc ? -1 : 1;
+	if (x->sh.nu != y->sh.nu)
+		return x->sh.nu < y->sh.nu ? -1 : 1;
+	if (x->sh.hh != y->sh.hh)
+		return x->sh.hh < y->sh.hh ? -1 : 1;
+	return x->s < y->s ? -1 : x->s > y->s;
+}
+
+/* The envelope of each scene's group over the whole sweep (every shard's
+ * scenes: the same choice in every shard), for the scenes [s0, s1).  A
+ * scene that cannot be planned adds nothing (its row says why). */
+static int pool_shares(struct pool *p)
+{
+	size_t n = p->sw->nscenes, n1 = p->s1 - p->s0;
+	struct share_key *k = calloc(n + 1, sizeof *k);
+	p->share = calloc(n1 + 1, sizeof *p->share);
+	if (!k || !p->share) {
+		free(k);
+		return ANVIL_ENOMEM;
+	}
+	for (size_t i = 0; i < n; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		k[i].s = i;
+		if (!sweep_scene(p->sw, i, &sc, NULL) && !cli_plan(&sc, NULL, &pl, NULL))
+			anvil_plan_share_add(&k[i].sh, &pl);
+	}
+	qsort(k, n, sizeof *k, share_cmp);
+	for (size_t i = 0, j; i < n; i = j) {
+		struct anvil_plan_share env = k[i].sh;
+		for (j = i + 1; j < n && !share_cmp(&(struct share_key){ k[i].sh, 0 },
+						    &(struct share_key){ k[j].sh, 0 }); j++)
+			anvil_plan_share_merge(&env, &k[j].sh);
+		for (size_t m = i; m < j; m++)
+			if (k[m].s >= p->s0 && k[m].s < p->s1)
+				p->share[k[m].s - p->s0] = env;
+	}
+	free(k);
+	return ANVIL_OK;
 }
 
 /* Units: the scenes sorted by response key, cut where the key changes. */
@@ -278,6 +338,7 @@ static void pool_free(struct pool *p)
 				free(p->slot[i]);
 			}
 	free(p->slot);
+	free(p->share);
 	free(p->order);
 	free(p->front);
 	free(p->end);
@@ -295,7 +356,7 @@ int sweep_run(const struct sweep *sw, size_t s0, size_t s1, const unsigned char 
 	int st;
 	pthread_mutex_init(&p.mu, NULL);
 	pthread_cond_init(&p.cv, NULL);
-	if ((st = pool_units(&p))) {
+	if ((st = pool_units(&p)) || (st = pool_shares(&p))) {
 		pool_free(&p);
 		return st;
 	}

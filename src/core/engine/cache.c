@@ -223,7 +223,8 @@ const struct anvil_halfspace *anvil_cache_halfspace(struct anvil_cache *c, doubl
 static int same_key(const struct anvil_cache_key *a, const struct anvil_cache_key *b)
 {
 	return a->hh == b->hh && a->nu == b->nu && a->acc == b->acc &&
-	       a->omega_idx == b->omega_idx && a->tau_idx == b->tau_idx && a->twin == b->twin;
+	       a->omega_idx == b->omega_idx && a->tau_idx == b->tau_idx && a->twin == b->twin &&
+	       a->load == b->load && a->patch == b->patch;
 }
 
 /* The memory slot of key: the same window and bandwidth exactly, so that
@@ -274,8 +275,12 @@ int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *b
 	h = fnv1a(h, &key->tau_idx, sizeof key->tau_idx);
 	if (key->twin) /* a main response's name as before */
 		h = fnv1a(h, &key->twin, sizeof key->twin);
-	int len = snprintf(buf, n, "%s/corr-%s-%016llx.bin", dir, anvil_accuracy_name(key->acc),
-			   (unsigned long long)h);
+	if (key->load) { /* the physical contact's: its own prefix, the patch hashed */
+		h = fnv1a(h, &key->load, sizeof key->load);
+		h = fnv1a(h, &key->patch, sizeof key->patch);
+	}
+	int len = snprintf(buf, n, "%s/%s-%s-%016llx.bin", dir, key->load ? "phys" : "corr",
+			   anvil_accuracy_name(key->acc), (unsigned long long)h);
 	return len > 0 && (size_t)len < n ? ANVIL_OK : ANVIL_EINVAL;
 }
 
@@ -310,6 +315,8 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->acc = (uint32_t)key->acc;
 	hd->omega_idx = key->omega_idx;
 	hd->tau_idx = key->tau_idx;
+	hd->load = (uint32_t)key->load;
+	hd->patch = key->patch;
 	hd->hh = key->hh;
 	hd->nu = key->nu;
 	hd->omega = anvil_cache_grid(key->omega_idx);
@@ -395,7 +402,8 @@ static int header_match(const struct anvil_cache_header *hd, const char *path,
 				     version, PACKAGE_VERSION);
 	if (hd->hh != key->hh || hd->nu != key->nu || hd->acc != (uint32_t)key->acc ||
 	    hd->omega_idx != key->omega_idx || hd->tau_idx != key->tau_idx || hd->mode != ANVIL_GREEN_LAYER_CORRECTION ||
-	    hd->twin != (uint16_t)(key->twin != 0))
+	    hd->twin != (uint16_t)(key->twin != 0) || hd->load != (uint32_t)key->load ||
+	    hd->patch != key->patch || hd->reserved != 0)
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: holds another response", path);
 	return ANVIL_OK;
 }

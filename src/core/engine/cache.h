@@ -28,9 +28,11 @@
  *           replaced; one from another format or anvil version is ignored
  *           quietly and replaced.
  *
- * The file: a 112-byte header (struct in cache.c: magic "ANVILRSP", format
+ * The file: a 128-byte header (struct below: magic "ANVILRSP", format
  * version, byte-order mark, anvil version, the mode and twin flag, the key h/r0, nu, level, omega
- * and its grid index, the window's grid index, the window tau_end, the sample step, the error
+ * and its grid index, the window's grid index, the load and patch radius (format 4:
+ * the physical contact's corrections are kept too; a file of format 3 or older
+ * is ignored quietly and replaced), the window tau_end, the sample step, the error
  * estimate, the sample count and an FNV-1a 64-bit checksum of header and
  * samples), then the ramp samples as native doubles.  A file is only read
  * on a machine with the same byte order and double format.
@@ -49,8 +51,8 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 3 /* disk format version (2: the window index in the key;
-				 3: the twin flag) */
+#define ANVIL_CACHE_FORMAT 4 /* disk format version (2: the window index in the key;
+				 3: the twin flag; 4: the load and patch radius) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -67,7 +69,16 @@ struct anvil_cache_key {
 				    omega_idx + ANVIL_CACHE_STEPS (green.h's
 				    anvil_green_alloc_twin: the first terms of
 				    that one's spectrum), 0: a response made alone */
+	int load;                /* ANVIL_CACHE_LOAD_R0 (0): the paper's contact, a
+				    Hertz patch of radius r0 made with its twin;
+				    ANVIL_CACHE_LOAD_PATCH: the physical contact's
+				    correction for a Hertz patch of radius patch r0
+				    (green.h anvil_green_alloc_patch; 0 a point load),
+				    no twin (twin 0) */
+	double patch;            /* LOAD_PATCH: the radius / r0, in [0, 1]; else 0 */
 };
+
+enum { ANVIL_CACHE_LOAD_R0 = 0, ANVIL_CACHE_LOAD_PATCH = 1 };
 
 /* Where a response came from. */
 enum anvil_cache_where { ANVIL_CACHE_NONE, ANVIL_CACHE_MEMORY, ANVIL_CACHE_DISK };
@@ -145,12 +156,15 @@ struct anvil_cache_header {
 	uint32_t acc;
 	int32_t omega_idx;
 	int32_t tau_idx;
-	double hh, nu, omega, tau_end, dtau, abserr;
+	uint32_t load;       /* the key's load (format 4) */
+	uint32_t reserved;   /* 0 */
+	double hh, nu, patch, omega, tau_end, dtau, abserr;
 	uint64_t n, checksum;
 };
-_Static_assert(sizeof(struct anvil_cache_header) == 112, "cache header has padding");
+_Static_assert(sizeof(struct anvil_cache_header) == 128, "cache header has padding");
 
-/* The file for key in dir ("DIR/corr-LEVEL-HASH.bin") into buf; ANVIL_EINVAL
+/* The file for key in dir ("DIR/corr-LEVEL-HASH.bin", "DIR/phys-..." for
+ * the physical contact's) into buf; ANVIL_EINVAL
  * when it does not fit. */
 int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *buf, size_t n);
 /* Write g for key to path atomically (a temporary file beside it, flushed

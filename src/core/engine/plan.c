@@ -70,6 +70,37 @@ double anvil_wave_window(const struct anvil_wave_job *j, int attempt)
 	return 1.4 * j->tau_s * (double)(1 << attempt) + 2.0;
 }
 
+int anvil_wave_tau_idx(const struct anvil_wave_job *j, double tau_end)
+{
+	int idx = anvil_cache_grid_up(tau_end);
+	return idx > j->tau_idx_min ? idx : j->tau_idx_min;
+}
+
+/* The half-octave grid of patches: 2^(k/2), k <= 0, exactly as exp2 gives
+ * it (the cache key compares the bits). */
+double anvil_plan_patch(double x)
+{
+	if (!(x > 0))
+		return 0.0;
+	if (!(x < 1))
+		return 1.0;
+	int k = (int)ceil(2.0 * log2(x));
+	if (k < -200)
+		k = -200; /* 2^-100 r0: far below any contact */
+	while (exp2(0.5 * (k - 1)) >= x)
+		k--;
+	while (exp2(0.5 * k) < x)
+		k++;
+	return exp2(0.5 * k);
+}
+
+double anvil_plan_patch_below(double patch)
+{
+	if (!(patch > 0))
+		return 0.0;
+	return exp2(0.5 * (round(2.0 * log2(patch)) - 1));
+}
+
 int anvil_wave_needs_corr(const struct anvil_params *p, const struct anvil_wave_job *j,
 			  double tau_end)
 {
@@ -81,7 +112,8 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
 		      struct anvil_err *err)
 {
 	double steps = tau_end * p->r0 / p->c2 / j->dt;
-	double terms = omega * 2.0 * anvil_plan_inversion_window(j->hh, tau_end) / M_PI;
+	double tq = anvil_cache_grid(anvil_wave_tau_idx(j, tau_end)); /* the response's */
+	double terms = omega * 2.0 * anvil_plan_inversion_window(j->hh, tq) / M_PI;
 	if (scene_dt > 0.25 * j->ts)
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
@@ -353,12 +385,14 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 {
 	const struct anvil_params *p = &e->p;
 	double tau_end = anvil_wave_window(&e->lay, 0);
-	int tau_idx = anvil_cache_grid_up(tau_end);
+	int tau_idx = anvil_wave_tau_idx(&e->lay, tau_end);
 	double om = anvil_cache_grid(e->lay.omega_idx), tau_q = anvil_cache_grid(tau_idx);
 	/* the response and its coarse twin (half the bandwidth, solver.c), made
 	 * together from one spectrum: the main one's evaluations pay for both */
-	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx, 0 };
-	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx, 1 };
+	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx, 0,
+				       ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx, 1,
+					ANVIL_CACHE_LOAD_R0, 0.0 };
 	enum anvil_cache_where wm = ANVIL_CACHE_NONE, wt = ANVIL_CACHE_NONE;
 	if (cache) {
 		wm = anvil_cache_probe(cache, &key);
@@ -682,6 +716,9 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
 		small ? d_hs : 0.0, cost);
 	r->cost_full = cost;
 	r->job = layer ? e->lay : e->hs;
+	/* the Hertz radius as figures() has it, on the patch grid */
+	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);
+	r->job.patch = anvil_plan_patch(fmin(1.0, a / e->p.r0));
 	row_fig(r, ANVIL_FIG_RADIATED);
 	row_fig(r, ANVIL_FIG_A_HERTZ);
 	if (layer)
@@ -731,6 +768,107 @@ const struct anvil_plan_row *anvil_plan_row_of(const struct anvil_plan *pl, enum
 	return pl->paper[m].contact == c ? &pl->paper[m] : NULL;
 }
 /* --- end contactB --- */
+
+/* ---- sharing responses (plan.h) ---- */
+
+static int share_group(const struct anvil_plan_share *sh, const struct anvil_plan *pl)
+{
+	return sh->hh == pl->pb.hh && sh->nu == pl->pb.p.nu && sh->acc == pl->pb.accuracy;
+}
+
+/* Whether job j of a row asks for a layer response at all. */
+static int share_job_uses(const struct anvil_wave_job *j)
+{
+	return isfinite(j->hh);
+}
+
+static void share_widen(struct anvil_plan_share *sh, const struct anvil_wave_job *j)
+{
+	int t = anvil_cache_grid_up(anvil_wave_window(j, 0));
+	if (!share_job_uses(j))
+		return;
+	if (!sh->used++ || j->omega_idx > sh->omega_idx)
+		sh->omega_idx = j->omega_idx;
+	if (sh->used == 1 || t > sh->tau_idx)
+		sh->tau_idx = t;
+	sh->patch = fmax(sh->patch, j->patch);
+}
+
+static void share_add_row(struct anvil_plan_share *sh, const struct anvil_plan_row *r)
+{
+	if (r->status || (r->method != ANVIL_METHOD_LAYER && !r->fallback))
+		return;
+	share_widen(sh, r->method == ANVIL_METHOD_LAYER ? &r->job : &r->fallback_job);
+}
+
+int anvil_plan_share_add(struct anvil_plan_share *sh, const struct anvil_plan *pl)
+{
+	if (!sh->used && !sh->hh) {
+		*sh = (struct anvil_plan_share){ .hh = pl->pb.hh, .nu = pl->pb.p.nu,
+						 .acc = pl->pb.accuracy };
+	} else if (!share_group(sh, pl)) {
+		return ANVIL_EINVAL;
+	}
+	share_add_row(sh, &pl->row[ANVIL_MODEL_LAYER]);
+	share_add_row(sh, &pl->paper[ANVIL_MODEL_LAYER]);
+	return ANVIL_OK;
+}
+
+int anvil_plan_share_merge(struct anvil_plan_share *a, const struct anvil_plan_share *b)
+{
+	if (a->hh != b->hh || a->nu != b->nu || a->acc != b->acc)
+		return ANVIL_EINVAL;
+	if (!b->used)
+		return ANVIL_OK;
+	if (!a->used || b->omega_idx > a->omega_idx)
+		a->omega_idx = b->omega_idx;
+	if (!a->used || b->tau_idx > a->tau_idx)
+		a->tau_idx = b->tau_idx;
+	a->patch = fmax(a->patch, b->patch);
+	a->used += b->used;
+	return ANVIL_OK;
+}
+
+/* Job j on the envelope, unless the envelope would be refused where j is
+ * not (more terms than the solver takes). */
+static void share_job(struct anvil_wave_job *j, const struct anvil_plan_share *sh,
+		      const struct anvil_plan *pl, enum anvil_model m, int physical)
+{
+	struct anvil_wave_job w = *j;
+	if (!share_job_uses(j))
+		return;
+	if (sh->omega_idx > w.omega_idx) {
+		w.omega_idx = sh->omega_idx;
+		w.omega = anvil_cache_grid(w.omega_idx);
+		w.twin_idx = w.omega_idx - ANVIL_CACHE_STEPS;
+	}
+	w.tau_idx_min = sh->tau_idx;
+	if (physical)
+		w.patch = fmax(w.patch, sh->patch);
+	if (!anvil_wave_refuse(&pl->pb.p, pl->pb.dt, m, &w, anvil_wave_window(&w, 0), w.omega,
+			       NULL))
+		*j = w;
+}
+
+static void share_row(struct anvil_plan_row *r, const struct anvil_plan_share *sh,
+		      const struct anvil_plan *pl)
+{
+	int phys = r->contact == ANVIL_CONTACT_PHYSICAL;
+	if (r->status)
+		return;
+	if (r->method == ANVIL_METHOD_LAYER)
+		share_job(&r->job, sh, pl, ANVIL_MODEL_LAYER, phys);
+	if (r->fallback)
+		share_job(&r->fallback_job, sh, pl, ANVIL_MODEL_LAYER, phys);
+}
+
+void anvil_plan_share_apply(struct anvil_plan *pl, const struct anvil_plan_share *sh)
+{
+	if (!sh->used || !share_group(sh, pl))
+		return;
+	share_row(&pl->row[ANVIL_MODEL_LAYER], sh, pl);
+	share_row(&pl->paper[ANVIL_MODEL_LAYER], sh, pl);
+}
 
 static void rows(const struct anvil_problem *pb, const struct est *e,
 		 const struct anvil_cache *cache, struct anvil_plan *pl)

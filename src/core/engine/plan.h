@@ -86,10 +86,18 @@ struct anvil_wave_job {
 	double stat;     /* static compliance of the quasi-static anvil (STATIC), else 0 */
 	int refine_max;  /* bandwidth doublings allowed (0 for the paper's scheme) */
 	int attempts;    /* window doublings allowed */
+	int tau_idx_min; /* the responses' window covers at least anvil_cache_grid(this):
+			    a sweep's shared window (anvil_plan_share); 0 for none */
+	double patch;    /* physical contact: the patch radius / r0 whose correction
+			    gives the true contact radius (anvil_plan_patch of a_max/r0,
+			    or a sweep's wider one), 0 when a_max is 0 */
 };
 
 /* The response window of attempt a (0, 1, ...): 1.4 tau_s 2^a + 2. */
 double anvil_wave_window(const struct anvil_wave_job *j, int attempt);
+/* The cache grid index of the layer response used over window tau_end:
+ * the window rounded up to the grid, and not below j->tau_idx_min. */
+int anvil_wave_tau_idx(const struct anvil_wave_job *j, double tau_end);
 /* The one refusal rule, for the planner (attempt 0) and the solver (every
  * window it grows to): a wave run of model m with job j over window tau_end
  * at bandwidth omega is refused with ANVIL_EINVAL (the scene's dt longer
@@ -103,6 +111,50 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
  * reflection (2h/c1) returns inside it. */
 int anvil_wave_needs_corr(const struct anvil_params *p, const struct anvil_wave_job *j,
 			  double tau_end);
+
+/* The physical contact's patch for a largest contact radius of x r0: the
+ * half-octave grid point 2^(k/2) >= x, at most 1 (0 for x <= 0), so that a
+ * velocity or mass change that stays under it reuses the cached
+ * corrections; and the grid point below patch (patch / sqrt(2), the error
+ * estimate's fit: solver.c). */
+double anvil_plan_patch(double x);
+double anvil_plan_patch_below(double patch);
+
+/* ---- sharing responses between scenes (a sweep) ----
+ *
+ * The scenes of a sweep that differ only in velocity, mass or impactor
+ * (the same layer nu, h/r0 and accuracy) would each ask for the layer
+ * response of their own window, bandwidth (and, with the physical contact,
+ * patch): a 25-point velocity sweep made 8 responses with the paper's
+ * contact and 150 corrections with the physical one.  A sweep instead
+ * plans all its scenes first and runs each group's on the envelope: the
+ * widest bandwidth, the longest first window, the largest patch of the
+ * group (a function of the sweep's scenes alone, so every shard and
+ * thread makes the same choice, and a row is the same bits cold or warm).
+ * A response over a longer window and a wider band than a scene asked for
+ * is as accurate on the scene's window, so a sweep row differs from `anvil
+ * run` of its scene within the stated error estimates (its own are
+ * computed with the shared responses). */
+struct anvil_plan_share {
+	int used;          /* scenes added */
+	double hh, nu;     /* the group: h/r0, layer nu, accuracy */
+	enum anvil_accuracy acc;
+	int omega_idx;     /* the widest bandwidth's grid index */
+	int tau_idx;       /* the longest first window's grid index */
+	double patch;      /* the largest physical patch (anvil_plan_patch) */
+};
+/* Widen sh to cover plan pl's layer row (its own job, as planned alone);
+ * the first plan added sets the group.  ANVIL_EINVAL (sh unchanged) for a
+ * plan of another group; a row refused or without the layer response adds
+ * nothing. */
+int anvil_plan_share_add(struct anvil_plan_share *sh, const struct anvil_plan *pl);
+/* Widen a to cover b too (both of one group: ANVIL_EINVAL otherwise, a
+ * unchanged; b empty changes nothing). */
+int anvil_plan_share_merge(struct anvil_plan_share *a, const struct anvil_plan_share *b);
+/* Run plan pl's layer rows on sh's envelope (sh of pl's group; nothing
+ * changes otherwise, nor for a row the envelope would make the solver
+ * refuse: that row keeps its own job). */
+void anvil_plan_share_apply(struct anvil_plan *pl, const struct anvil_plan_share *sh);
 
 /* ---- decisions ---- */
 

@@ -265,7 +265,8 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 			return st;
 		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
 			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
-						       anvil_cache_grid_up(tau_end), twin };
+						       anvil_wave_tau_idx(wv->job, tau_end), twin,
+						       ANVIL_CACHE_LOAD_R0, 0.0 };
 			wv->rs.corr = get_corr(s, &key, &wv->held, err);
 			if (!wv->rs.corr)
 				return err ? err->status : ANVIL_ENUM;
@@ -371,35 +372,46 @@ static void contacts_note(struct anvil_result *r)
 
 /* --- contactB: the physical contact (issue 10; impact.h, doc/contact-model.md) --- */
 
-/* The layer correction of a Hertz load of radius patch r0 (0: a point)
- * at bandwidth omega over [0, tau_end], made for one run (not cached:
- * green.h). */
-static struct anvil_green *physical_corr(struct anvil_solver *s, const struct anvil_problem *pb,
-					 double hh, double patch, double omega, double tau_end,
-					 struct anvil_err *err)
+/* The physical contact's layer correction of a Hertz load of radius patch
+ * r0 (0: a point load) at bandwidth grid index omega_idx over the window of
+ * grid index tau_idx (the grids of cache.h, as the paper's responses), from
+ * the cache or made and kept there: a velocity or mass change, or the scenes
+ * of a sweep that share the job's window, bandwidth and patch (plan.h,
+ * anvil_plan_share), reuse it.  Held for this run (in held). */
+static const struct anvil_green *physical_corr(struct anvil_solver *s, const struct anvil_problem *pb,
+					       double hh, double patch, int omega_idx, int tau_idx,
+					       struct held *held, struct anvil_err *err)
 {
+	struct anvil_cache_key key = { hh, pb->p.nu, pb->accuracy, omega_idx, tau_idx, 0,
+				       ANVIL_CACHE_LOAD_PATCH, patch };
+	const struct anvil_green *c = anvil_cache_find(s->cache, &key, NULL);
+	if (c)
+		return held_add(held, c);
 	struct anvil_green_settings gs;
 	anvil_green_settings(pb->accuracy, &gs);
-	gs.omega_max = omega;
+	gs.omega_max = anvil_cache_grid(omega_idx);
 	struct anvil_green *g = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, pb->p.nu,
-							patch, tau_end, &gs, s->progress,
-							s->progress_ctx, err);
-	if (g) {
-		s->layer_computed++;
-		s->layer_evals += anvil_green_evals(g);
-	}
-	return g;
+							patch, anvil_cache_grid(tau_idx), &gs,
+							s->progress, s->progress_ctx, err);
+	if (!g)
+		return NULL;
+	s->layer_computed++;
+	s->layer_evals += anvil_green_evals(g);
+	if (!(c = held_add(held, anvil_cache_add(s->cache, &key, g))))
+		anvil_err_set(err, ANVIL_ENOMEM, "cache: every slot is held");
+	return c;
 }
 
-/* What one physical run takes: the bandwidth, and the patch (radius
- * patch r0) whose correction gives the true contact radius (0: a point
- * load throughout). */
+/* What one physical run takes: the bandwidth's grid index, and the patch
+ * (radius patch r0) whose correction gives the true contact radius (0: a
+ * point load throughout). */
 struct phys_load {
-	double omega, patch;
+	int omega_idx;
+	double patch;
 };
 
 /* One physical impact of job j, the window grown as in waves_impact; the
- * corrections are made for each window in which the bottom reflection
+ * corrections are taken for each window in which the bottom reflection
  * returns.  *corr says whether they were. */
 static int physical_impact(struct anvil_solver *s, const struct anvil_problem *pb,
 			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
@@ -410,82 +422,90 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 	struct anvil_impact_opts io = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
 					.dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
 					.nhist = nhist, .physical = 1, .beta = beta };
+	struct held held = { .n = 0 };
 	int st = ANVIL_ETOL;
 	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
 		double tau_end = anvil_wave_window(j, attempt);
-		struct anvil_green *g = NULL, *g2 = NULL;
-		st = anvil_wave_refuse(p, pb->dt, r->model, j, tau_end, ld.omega, err);
+		int tau_idx = anvil_wave_tau_idx(j, tau_end);
+		held_release(s->cache, &held); /* the shorter window's are done with */
+		rs.corr = rs2.corr = NULL;
+		st = anvil_wave_refuse(p, pb->dt, r->model, j, tau_end, anvil_cache_grid(ld.omega_idx),
+				       err);
 		if (st)
-			return st;
+			break;
 		*corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, tau_end);
 		io.alpha_ref = 0;
 		if (*corr) {
-			g = physical_corr(s, pb, j->hh, 0.0, ld.omega, tau_end, err);
-			if (g && ld.patch > 0) {
-				g2 = physical_corr(s, pb, j->hh, ld.patch, ld.omega, tau_end, err);
+			rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &held, err);
+			if (rs.corr && ld.patch > 0) {
+				rs2.corr = physical_corr(s, pb, j->hh, ld.patch, ld.omega_idx, tau_idx,
+							 &held, err);
 				/* a^2 = R alpha with R = r0 */
 				io = (struct anvil_impact_opts){ .scheme = io.scheme, .dt = io.dt,
 					.dt_auto = io.dt_auto, .max_steps = io.max_steps, .nhist = nhist,
 					.physical = 1, .beta = beta, .ramp2 = response_ramp,
 					.ramp2_ctx = &rs2, .alpha_ref = ld.patch * ld.patch * p->r0 };
 			}
-			if (!g || (ld.patch > 0 && !g2)) {
-				anvil_green_free(g);
-				return err ? err->status : ANVIL_ENUM;
+			if (!rs.corr || (ld.patch > 0 && !rs2.corr)) {
+				st = err ? err->status : ANVIL_ENUM;
+				break;
 			}
 		}
-		rs.corr = g;
-		rs2.corr = g2;
 		enum anvil_model m = r->model;
 		anvil_result_free(r);
 		anvil_result_init(r, m);
 		st = anvil_impact_run(p, response_ramp, &rs, tau_end, &io, r, err);
-		anvil_green_free(g);
-		anvil_green_free(g2);
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
 			break;
 	}
+	held_release(s->cache, &held);
 	return st;
 }
 
-/* Add |a - b| of each value to r's error estimates. */
+/* Add f |a - b| of each value to r's error estimates. */
 static void add_diff_error(struct anvil_result *r, const struct anvil_result *a,
-			   const struct anvil_result *b)
+			   const struct anvil_result *b, double f)
 {
-	r->ts.err += fabs(a->ts.val - b->ts.val);
-	r->tmax.err += fabs(a->tmax.val - b->tmax.val);
-	r->Pmax.err += fabs(a->Pmax.val - b->Pmax.val);
-	r->Vs.err += fabs(a->Vs.val - b->Vs.val);
-	r->Rf.err += fabs(a->Rf.val - b->Rf.val);
-	r->Ea.err += fabs(a->Ea.val - b->Ea.val);
+	r->ts.err += f * fabs(a->ts.val - b->ts.val);
+	r->tmax.err += f * fabs(a->tmax.val - b->tmax.val);
+	r->Pmax.err += f * fabs(a->Pmax.val - b->Pmax.val);
+	r->Vs.err += f * fabs(a->Vs.val - b->Vs.val);
+	r->Rf.err += f * fabs(a->Rf.val - b->Rf.val);
+	r->Ea.err += f * fabs(a->Ea.val - b->Ea.val);
 }
 
 /* The errors of the layer correction (solver.c's run_physical): the
- * O(a^4) remainder of the true radius, measured as the change when the
- * a^2 term comes from the patch of a_max/sqrt(2) instead of a_max (it
- * bounds the remainder about twice over: w(a) = w0 + a^2 w2 + a^4 w4, the
- * two fits differ by a^2 a_max^2 w4 / 2, the error of the first is at
- * most a_max^4 w4 / 4), and the correction's own, by halving the
- * bandwidth (point loads, as run_waves does). */
+ * O(a^4) remainder of the true radius, and the correction's own, by
+ * halving the bandwidth (point loads, as run_waves does).
+ * The remainder: with w(a) = w0 + a^2 w2 + a^4 w4 and the a^2 term fitted
+ * on the patch P >= a_max (the job's: plan.h), the run's w0 + a^2 (w(P) -
+ * w0) / P^2 is off by a^2 (P^2 - a^2) w4, at most a_max^2 P^2 w4 (and
+ * P^4 w4 / 4 when a_max^2 >= P^2 / 2); the fit on P' = P/sqrt(2) differs
+ * from it by a^2 P^2 w4 / 2, at most a_max^2 P^2 w4 / 2.  So that
+ * difference bounds the remainder when P <= sqrt(2) a_max (the patch on
+ * its half-octave grid, a run alone: 1 to 2 times over), and 2 (1 -
+ * a_max^2 / P^2) times it does for a sweep's wider patch. */
 static int physical_errors(struct anvil_solver *s, const struct anvil_problem *pb,
 			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
-			   struct anvil_result *r, struct anvil_err *err)
+			   double a_max_r0, struct anvil_result *r, struct anvil_err *err)
 {
 	struct anvil_result q[2];
-	struct phys_load alt[3] = { { ld.omega, ld.patch / M_SQRT2 }, { ld.omega, 0.0 },
-				    { 0.5 * ld.omega, 0.0 } };
+	struct phys_load alt[3] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch) },
+				    { ld.omega_idx, 0.0 },
+				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+	double x = a_max_r0 / ld.patch, f = fmax(1.0, 2.0 * (1.0 - x * x));
 	int c, st = ANVIL_OK;
 	anvil_result_init(&q[0], r->model);
 	anvil_result_init(&q[1], r->model);
 	st = physical_impact(s, pb, j, beta, alt[0], 0, &q[0], &c, err);
 	if (!st)
-		add_diff_error(r, r, &q[0]);
+		add_diff_error(r, r, &q[0], f);
 	if (!st)
 		st = physical_impact(s, pb, j, beta, alt[1], 0, &q[0], &c, err);
 	if (!st)
 		st = physical_impact(s, pb, j, beta, alt[2], 0, &q[1], &c, err);
 	if (!st)
-		add_diff_error(r, &q[0], &q[1]);
+		add_diff_error(r, &q[0], &q[1], 1.0);
 	anvil_result_free(&q[0]);
 	anvil_result_free(&q[1]);
 	return st;
@@ -508,11 +528,11 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	const struct anvil_params *p = &pl->pb.p;
 	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
-	struct phys_load ld = { row->job.omega, fmin(1.0, a / p->r0) };
+	struct phys_load ld = { row->job.omega_idx, row->job.patch };
 	int corr = 0;
 	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
 	if (!st && corr)
-		st = physical_errors(s, &pl->pb, &row->job, beta, ld, r, err);
+		st = physical_errors(s, &pl->pb, &row->job, beta, ld, fmin(1.0, a / p->r0), r, err);
 	if (st)
 		return st;
 	/* the radiation lag's next term: relative pi a / (c2 t_s) of the wave
