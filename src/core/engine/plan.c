@@ -125,9 +125,10 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
 				     ANVIL_MAX_STEPS, j->dt * 1e6,
 				     p->lambda_star > 3 ? "the thin-plate model 'zener' applies here" :
 				     "set a larger solver.dt or a coarser solver.accuracy");
-	/* the window and bandwidth as the solver rounds them (cache grid) */
-	double tq = anvil_cache_grid(anvil_cache_grid_up(tau_end));
-	double oq = anvil_cache_grid(anvil_cache_grid_up(omega));
+	/* the bandwidth as the solver rounds it (cache grid; a sweep's shared
+	 * one may be wider) */
+	double oq = fmax(anvil_cache_grid(anvil_cache_grid_up(omega)),
+			 anvil_cache_grid(j->omega_idx));
 	if (anvil_wave_needs_corr(p, j, tau_end) && terms <= ANVIL_MAX_TERMS &&
 	    !anvil_green_fits(ANVIL_GREEN_LAYER_CORRECTION, j->hh, tq, oq))
 		return anvil_err_set(err, ANVIL_ETOL,
