@@ -523,6 +523,21 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
 	return g;
 }
 
+/* The samples are uniform (tau_j = j dtau): the interval is known without
+ * GSL's bisection (a third of a warm run's time went there).  Handed to
+ * gsl_interp_eval as a local accelerator whose cache is that interval, so
+ * the lookup is a hit and the value the same bits; a local one, because a
+ * response is shared read-only between threads. */
+static gsl_interp_accel uniform_hint(const struct anvil_green *g, double tau)
+{
+	gsl_interp_accel acc = {0};
+	double j = floor(tau / g->dtau);
+	size_t last = g->n - 2;
+	acc.cache = j < 0 ? 0 : j > (double)last ? last : (size_t)j;
+	/* rounding of tau / dtau: let GSL's own check settle the neighbour */
+	return acc;
+}
+
 int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
 {
 	if (tau <= 0) {
@@ -531,7 +546,8 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
 	}
 	if (tau > g->tau_end)
 		return ANVIL_EINVAL;
-	*val = gsl_interp_eval(g->interp, g->tau, g->ramp, tau, NULL);
+	gsl_interp_accel acc = uniform_hint(g, tau);
+	*val = gsl_interp_eval(g->interp, g->tau, g->ramp, tau, &acc);
 	return ANVIL_OK;
 }
 
@@ -543,7 +559,8 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 	}
 	if (tau > g->tau_end)
 		return ANVIL_EINVAL;
-	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, NULL);
+	gsl_interp_accel acc = uniform_hint(g, tau);
+	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, &acc);
 	return ANVIL_OK;
 }
 
