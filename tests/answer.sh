@@ -72,4 +72,53 @@ check_exit 1 "thickness: a range where nothing is within" \
 assert "...names the contact and writes nothing" \
 	sh -c 'grep -q "paper contact: even h = 1 r0 is not within" "$0" && [ ! -e none.tsv ]' "$tmp/err"
 
+check "thickness --range 16..64 (an integer LO: not read as 16. and .64)" \
+	$ANVIL thickness $D -s effects.contact=paper --range 16..64 -f tsv -o r16.tsv
+assert "...the bottom of that range answers, no miss below" \
+	sh -c '[ "$(cut -f1,3 r16.tsv | sed -n 2p)" = "$(printf "16\tnan")" ]'
+
+# ---- fit: the contact named, and honoured ----
+for c in physical paper; do
+	check "fit ts=55us -s effects.contact=$c" $ANVIL fit $D ts=55us -s effects.contact=$c -f tsv -o "fit-$c.tsv"
+	assert "...its row says contact $c" [ "$(cell "fit-$c.tsv" 2 contact)" = $c ]
+	x=$(cell "fit-$c.tsv" 2 value)
+	assert "...a direct run with the $c contact at h = $x r0 gives 55 us (to 0.01 us)" \
+		awk -v t="$($ANVIL run $D -m layer -s "layer.thickness=${x}r0" -s effects.contact=$c -f tsv 2>/dev/null |
+			awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { print $c["ts_us"] }')" \
+		'BEGIN { d = t - 55; exit !(d < 0.01 && d > -0.01) }'
+done
+check "fit, both contacts" $ANVIL fit $D ts=55us -s effects.contact=both -f tsv -o fit-both.tsv
+assert "...a row each, the same as alone" \
+	sh -c '[ "$(sed -n 2p fit-both.tsv)" = "$(sed -n 2p fit-paper.tsv)" ] &&
+	       [ "$(sed -n 3p fit-both.tsv)" = "$(sed -n 2p fit-physical.tsv)" ]'
+check "fit, the table says the model and the contact" $ANVIL fit $D ts=55us
+assert "...(layer model, physical contact)" grep -q '^layer.thickness = .* gives ts = 55 us (layer model, physical contact)$' "$tmp/out"
+check "fit -m zener: a model with its own contact" $ANVIL fit $D Rf=0.5 --for impact.velocity -m zener -f tsv -o fz.tsv
+assert "...its contact column is -" [ "$(cell fz.tsv 2 contact)" = - ]
+# Runs that fail (solver.dt too long above about 30 m/s: a velocity's
+# contact shorter than 4 dt) are skipped; the fit goes on with the others.
+check "fit with failing runs in the range" \
+	$ANVIL fit $D Rf=0.85 --for impact.velocity --range 0.1..100 -s layer.thickness=2r0 -s solver.dt=11us -f tsv -o ff.tsv
+assert "...finds the velocity below them" awk -v v="$(cell ff.tsv 2 value)" 'BEGIN { exit !(v > 0.1 && v < 30) }'
+check_exit 1 "fit: no answer where every run fails" \
+	$ANVIL fit $D Rf=0.5 --for impact.velocity --range 50..100 -s layer.thickness=2r0 -s solver.dt=11us
+assert "...says why" grep -q 'every run failed (solver.dt = 11 us is too long' "$tmp/err"
+
+# ---- dem: contact column; a failing velocity keeps its row ----
+check_exit 1 "dem with a velocity that fails" \
+	$ANVIL dem $D -s layer.thickness=2r0 -s solver.dt=11us --velocities 1m/s,100m/s -o dem.csv
+assert "...both rows, the header naming contact and message" \
+	sh -c '[ "$(head -1 dem.csv)" = "velocity_m_s,restitution,contact_time_s,restitution_err,contact_time_err_s,status,contact,message" ] && [ $(wc -l <dem.csv) -eq 3 ]'
+assert "...1 m/s has its values, status 0, the physical contact" \
+	awk -F, 'NR == 2 { exit !($1 == 1 && $2 > 0 && $2 < 1 && $3 > 0 && $6 == 0 && $7 == "physical" && $8 == "") }' dem.csv
+assert "...100 m/s: nan, status < 0 and why" \
+	awk -F, 'NR == 3 { exit !($1 == 100 && $2 == "nan" && $6 < 0 && $0 ~ /solver.dt = 11 us is too long/) }' dem.csv
+assert "...named on stderr too" grep -q 'dem: V0 = 100 m/s: no values: solver.dt' "$tmp/err"
+check "dem -s effects.contact=paper" $ANVIL dem $D -s effects.contact=paper --velocities 2m/s -o dp.csv
+assert "...its rows say paper, with anvil run's R_f" \
+	[ "$(awk -F, 'NR == 2 { printf "%s %.9g", $7, $2 }' dp.csv)" = "paper $($ANVIL run $D -m layer -s effects.contact=paper \
+		-s impact.velocity=2m/s -f tsv 2>/dev/null | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%.9g", $c["Rf"] }')" ]
+check_exit 2 "dem refuses both contacts in one table" $ANVIL dem $D -s effects.contact=both --velocities 2m/s
+assert "...saying so" grep -q 'a DEM table has one contact model' "$tmp/err"
+
 done_testing

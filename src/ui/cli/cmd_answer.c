@@ -82,11 +82,17 @@ static int parse_fraction(const char *s, double *x)
 
 static int parse_range(const char *s, double *lo, double *hi)
 {
-	char *end;
-	*lo = strtod(s, &end);
-	if (strncmp(end, "..", 2))
+	/* LO ends at the first "..": strtod alone reads "50..100" as 50. and .100 */
+	const char *dots = strstr(s, "..");
+	char buf[64], *end;
+	if (!dots || dots == s || (size_t)(dots - s) >= sizeof buf)
 		return -1;
-	const char *p = end + 2;
+	memcpy(buf, s, (size_t)(dots - s));
+	buf[dots - s] = '\0';
+	*lo = strtod(buf, &end);
+	if (*end)
+		return -1;
+	const char *p = dots + 2;
 	*hi = strtod(p, &end);
 	if (end == p || (*end && strcasecmp(end, "r0")))
 		return -1;
