@@ -158,6 +158,11 @@ for bad in 'copper/' '/steel' 'unobtainium' 'copper/steel/glass' 'steel,' \
 	assert "...naming the list or item, no script" sh -c 'grep -q -- "--materials" "$1" && [ ! -e "$2" ]' \
 		sh "$tmp/err" "$tmp/no.gp"
 done
+check "restitution-velocity --materials with a ball (its mass follows its material)" \
+	$rvm -s impactor.shape=ball -s impactor.diameter=10mm --materials copper/steel,steel/steel --script "$tmp/rvb.gp"
+assert "...the masses in the key, not one mass in the subtitle" sh -c '
+	grep -q "title .copper on steel, 4.69 g." "$1" && grep -q "title .steel on steel, 4.1 g." "$1" &&
+	grep -q "^set label 1002 .impactor, r₀ = 5 mm, .* and masses in the key" "$1"' sh "$tmp/rvb.gp"
 check_exit 2 "--materials on another chart is refused" "$ANVIL" plot force --materials steel --script -
 check_exit 2 "--velocities with a bad range is refused" $rvm --velocities 1..10m/s:0 --script "$tmp/no.gp"
 check "restitution-velocity per thickness: the contact in the footnote" \

@@ -791,9 +791,7 @@ static int plot_scene(struct plot_args *a)
 		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY ||
 			     (!a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
 					      a->kind == PLOT_RESTITUTION_LAMBDA));
-		if (a->materials)
-			plot_chart_subtitle_materials(&c, &sc);
-		else
+		if (!a->materials) /* with them, plot_sweep.c wrote it */
 			plot_chart_subtitle(&c, &sc, vary_h, vary_v);
 		code = render(&c, a);
 	} else if (st == ANVIL_EPARSE) {

@@ -117,7 +117,7 @@ static int rfv_pair(struct anvil_scene *sc, const char *item, char *label, size_
  * the mass added to each label when the pairs' masses differ (a ball's
  * mass follows its material). */
 static int rfv_pairs(const struct anvil_scene *sc, const char *list, struct anvil_scene *pair,
-		     char label[][RFV_LABEL], int *np, struct anvil_err *err)
+		     char label[][RFV_LABEL], int *np, int *same_mass, struct anvil_err *err)
 {
 	char buf[1024], *save = NULL;
 	int st = ANVIL_OK, same = 1;
@@ -140,6 +140,7 @@ static int rfv_pairs(const struct anvil_scene *sc, const char *list, struct anvi
 		size_t k = strlen(label[i]);
 		snprintf(label[i] + k, RFV_LABEL - k, ", %.3g g", pair[i].mass * 1e3);
 	}
+	*same_mass = same;
 	return st;
 }
 
@@ -151,9 +152,9 @@ int plot_sweep_rf_velocity(struct plot_chart *c, const struct anvil_scene *sc, i
 	struct anvil_scene pair[PLOT_MAX_GROUPS];
 	char axis[512], label[PLOT_MAX_GROUPS][RFV_LABEL];
 	const char *labels[PLOT_MAX_GROUPS];
-	int st = ANVIL_OK, code = EXIT_FAIL, np = 0;
+	int st = ANVIL_OK, code = EXIT_FAIL, np = 0, same_mass = 1;
 	snprintf(axis, sizeof axis, "impact.velocity=%s", velocities ? velocities : PLOT_SWEEP_V);
-	if (materials && (st = rfv_pairs(sc, materials, pair, label, &np, &err)))
+	if (materials && (st = rfv_pairs(sc, materials, pair, label, &np, &same_mass, &err)))
 		goto out;
 	if (materials)
 		for (int g = 0; g < np && !st; g++) {
@@ -171,10 +172,12 @@ int plot_sweep_rf_velocity(struct plot_chart *c, const struct anvil_scene *sc, i
 		cli_error("plot: %d of %d runs failed and are left out (anvil sweep shows why)", failed, v.n);
 	st = materials ? plot_chart_rf_velocity_groups(c, v.runs, v.n, v.group, labels, np)
 		       : plot_chart_rf_velocity(c, v.runs, v.n);
+	if (!st && materials)
+		plot_chart_subtitle_materials(c, sc, !same_mass);
 	if (!st && v.contact)
 		snprintf(c->footnote, sizeof c->footnote, "layer and half-space with the %s contact "
 			 "(effects.contact)", anvil_contact_name(v.contact));
-	code = st ? EXIT_FAIL : EXIT_OK; /* the caller writes the subtitle */
+	code = st ? EXIT_FAIL : EXIT_OK; /* per thickness, the caller writes the subtitle */
 out:
 	if (st == ANVIL_EPARSE)
 		cli_error("plot: %s", err.msg);

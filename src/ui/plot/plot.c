@@ -343,9 +343,10 @@ void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 		c->subtitle[sizeof c->subtitle - 1] = '\0';
 }
 
-void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc)
+void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc,
+				   int mass_in_key)
 {
-	char r0[32], h[128], hh[24];
+	char r0[32], h[128], hh[24], m[32] = "";
 	double hm = anvil_scene_h(sc);
 	put_mm(r0, sizeof r0, sc->radius);
 	put_mm(hh, sizeof hh, hm);
@@ -354,8 +355,10 @@ void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scen
 	else
 		snprintf(h, sizeof h, "on a half-space");
 	/* Not the scene's title: it names the scene's own materials. */
-	snprintf(c->subtitle, sizeof c->subtitle, "%.4g g impactor, r₀ = %s, %s; "
-		 "materials (impactor on layer) in the key", sc->mass * 1e3, r0, h);
+	if (!mass_in_key)
+		snprintf(m, sizeof m, "%.4g g ", sc->mass * 1e3);
+	snprintf(c->subtitle, sizeof c->subtitle, "%simpactor, r₀ = %s, %s; materials (impactor on layer)%s "
+		 "in the key", m, r0, h, mass_in_key ? " and masses" : "");
 }
 
 /* ------------------------------------------------------------- builders */

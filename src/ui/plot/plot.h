@@ -298,10 +298,12 @@ int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, in
 int plot_chart_rf_velocity_groups(struct plot_chart *c, const struct plot_run *runs, int n,
 				  const int *group, const char *const *label, int ngroups);
 /* The subtitle of a chart whose curves differ in their materials: the
- * scene without them, nor its title, which names them ("impactor m =
+ * scene without them, nor its title, which names them, nor the mass when
+ * mass_in_key (a ball's follows its material) ("impactor m =
  * 12.2 g, r₀ = 4 mm, on a layer, h = 4 mm = 1 r₀; materials (impactor on
  * layer) in the key"). */
-void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc);
+void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc,
+				   int mass_in_key);
 
 struct plot_opts;
 /* R_f over V0 x h/r0 (PLOT_RESTITUTION_MAP): a heat map on log axes with
