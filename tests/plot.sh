@@ -124,9 +124,55 @@ check "restitution-lambda without the paper's table" env ANVIL_PAPER_TABLES=/non
 assert "paper values not found: said" grep -q "paper values not found" "$tmp/err"
 assert "paper values not found: the rest drawn" grep -q "Zener''s ODE" "$tmp/out"
 
+# --- restitution-velocity: a curve per material pair (issue 12) --------------
+rvm="$ANVIL plot restitution-velocity $draft --velocities 1m/s,3m/s,10m/s"
+check "restitution-velocity --materials: script written" \
+	$rvm --materials copper/steel,steel/steel,glass --script "$tmp/rvm.gp"
+assert "...a key entry per pair, in the palette's first colours" sh -c '
+	grep -q "#0072b2'"'"' title '"'"'copper on steel'"'"'" "$1" &&
+	grep -q "#d55e00'"'"' title '"'"'steel on steel'"'"'" "$1" &&
+	grep -q "#009e73'"'"' title '"'"'copper on glass'"'"'" "$1"' sh "$tmp/rvm.gp"
+assert "...per pair a layer line, its markers, Zener dashed and a tinted half-space band" sh -c '
+	for c in 0072b2 d55e00 009e73; do
+		[ $(grep -c "^.*\$d[0-9]* using 1:2 with lines lw 2 dt 1 lc rgb .#$c. notitle" "$1") -eq 1 ] &&
+		[ $(grep -c "^.*\$d[0-9]* using 1:2 with points ps 1.6 lc rgb .#$c. pt 13 notitle" "$1") -eq 1 ] &&
+		[ $(grep -c "^.*\$d[0-9]* using 1:2 with lines lw 2 dt (9,5) lc rgb .#$c. notitle" "$1") -eq 1 ] || exit 1
+	done
+	[ $(grep -c "with lines lw 6 dt 1 lc rgb .#[0-9a-f]*. notitle" "$1") -eq 3 ]' sh "$tmp/rvm.gp"
+assert "...the bands drawn first (under the curves)" sh -c '
+	awk "/^plot / { p = 1 } p && /notitle/ { n++; if (/lw 6/ && n > 3) exit 1; if (!/lw 6/ && n <= 3) exit 1 }" "$1"' sh "$tmp/rvm.gp"
+assert "...the three velocities of each curve, the axis over them" sh -c '
+	grep -q "^set xrange \[1:10\]$" "$1" && grep -q "^set xtics (1, 2, 5, 10)$" "$1" &&
+	[ $(awk "/^\\\$d4 << EOD/ { p = 1; next } /^EOD/ { p = 0 } p" "$1" | wc -l) -eq 3 ]' sh "$tmp/rvm.gp"
+assert "...a subtitle without the scene's own materials, the contact in the footnote" sh -c '
+	grep -q "^set label 1002 .12.2 g impactor, r₀ = 4 mm, on a layer, h = 4 mm = 1 r₀; materials (impactor on layer) in the key." "$1" &&
+	! grep "^set label 1002" "$1" | grep -q "Copper rod" &&
+	grep -q "^set label 1003 .layer and half-space with the physical contact (effects.contact)." "$1"' sh "$tmp/rvm.gp"
+check "restitution-velocity --materials with the paper's contact" \
+	$rvm --materials steel -s effects.contact=paper --script "$tmp/rvp.gp"
+assert "...LAYER alone keeps the scene's impactor; the footnote says paper" sh -c '
+	grep -q "title .copper on steel." "$1" && grep -q "with the paper contact" "$1"' sh "$tmp/rvp.gp"
+for bad in 'copper/' '/steel' 'unobtainium' 'copper/steel/glass' 'steel,' \
+	'steel,steel,steel,steel,steel,steel,steel'; do
+	check_exit 2 "restitution-velocity --materials '$bad' is refused" $rvm --materials "$bad" --script "$tmp/no.gp"
+	assert "...naming the list or item, no script" sh -c 'grep -q -- "--materials" "$1" && [ ! -e "$2" ]' \
+		sh "$tmp/err" "$tmp/no.gp"
+done
+check "restitution-velocity --materials with a ball (its mass follows its material)" \
+	$rvm -s impactor.shape=ball -s impactor.diameter=10mm --materials copper/steel,steel/steel --script "$tmp/rvb.gp"
+assert "...the masses in the key, not one mass in the subtitle" sh -c '
+	grep -q "title .copper on steel, 4.69 g." "$1" && grep -q "title .steel on steel, 4.1 g." "$1" &&
+	grep -q "^set label 1002 .impactor, r₀ = 5 mm, .* and masses in the key" "$1"' sh "$tmp/rvb.gp"
+check_exit 2 "--materials on another chart is refused" "$ANVIL" plot force --materials steel --script -
+check_exit 2 "--velocities with a bad range is refused" $rvm --velocities 1..10m/s:0 --script "$tmp/no.gp"
+check "restitution-velocity per thickness: the contact in the footnote" \
+	$rvm -s layer.thickness=2r0 --script "$tmp/rvh.gp"
+assert "...physical (auto is not the paper's contact here)" grep -q "with the physical contact" "$tmp/rvh.gp"
+
 if [ "$have_gnuplot" = 0 ]; then
 	for k in force velocity deflection history restitution-thickness restitution-lambda \
-		accuracy formats injection failing-gnuplot killed run-png expected-scripts; do
+		accuracy formats injection failing-gnuplot killed run-png expected-scripts \
+		restitution-velocity-materials; do
 		skip "$k PNG" "gnuplot ($GNUPLOT) not installed"
 	done
 	done_testing
@@ -143,6 +189,12 @@ done
 check "history: taller by default" "$ANVIL" plot history -s solver.models=hertz,zener \
 	-o "$tmp/hist.png"
 assert "history: an 800x1000 PNG" is_png "$tmp/hist.png" 800 1000
+
+# --- restitution-velocity per material pair, as a PNG ------------------------
+mkdir "$tmp/rvmat"
+check "restitution-velocity --materials: exit 0" $rvm --materials copper/steel,steel/steel,glass \
+	-o "$tmp/rvmat/rv.png"
+assert "restitution-velocity --materials: an 800x600 PNG, not blank" is_png "$tmp/rvmat/rv.png" 800 600
 
 # --- SVG and PDF by the extension ----------------------------------------
 check "SVG by extension" "$ANVIL" plot force -s solver.models=hertz,zener -o "$tmp/f.svg"

@@ -225,7 +225,7 @@ check_exit 2 "fit: an unknown unknown" $ANVIL fit ts=62us --for layer.rho
 
 # ---- dem ----
 check "dem table" $ANVIL dem $D -m zener --velocities 0.5..4m/s:4:log -o dem.csv
-assert "header and 4 rows, SI" sh -c '[ "$(head -1 dem.csv)" = "velocity_m_s,restitution,contact_time_s,restitution_err,contact_time_err_s,status" ] && [ $(wc -l <dem.csv) -eq 5 ]'
+assert "header and 4 rows, SI" sh -c '[ "$(head -1 dem.csv)" = "velocity_m_s,restitution,contact_time_s,restitution_err,contact_time_err_s,status,contact,message" ] && [ $(wc -l <dem.csv) -eq 5 ]'
 assert "its R_f and t_s are anvil run's" [ "$(awk -F, 'NR == 3 { printf "%.9g %.9g", $2, $3 * 1e6 }' dem.csv)" = \
 	"$($ANVIL run $D -m zener -s impact.velocity=1m/s -f tsv 2>/dev/null | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%.9g %.9g", $c["Rf"], $c["ts_us"] }')" ]
 check_exit 2 "dem: bad velocities" $ANVIL dem --velocities 1..2m/s:0

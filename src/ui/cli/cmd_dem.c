@@ -12,6 +12,8 @@
 #include "output.h"
 #include "sweep.h"
 
+#define DEM_NCOL 8
+
 struct dem {
 	const char *scene, *out, *velocities;
 	int format, jobs;
@@ -27,31 +29,56 @@ static void dem_usage(FILE *f)
 	fputs("usage: anvil dem [SCENE] --velocities SPEC [-m MODEL] [-s KEY=VALUE]...\n"
 	      "                 [-o FILE] [-f csv|tsv|json] [-j N]\n"
 	      "A restitution table for a DEM code: one row per velocity with\n"
-	      "  velocity_m_s, restitution, contact_time_s, their errors and status (SI).\n"
+	      "  velocity_m_s, restitution, contact_time_s, their errors (SI), status,\n"
+	      "  contact (the contact model: physical, paper; - for hertz and zener)\n"
+	      "  and message.\n"
 	      "  --velocities SPEC  a list (0.5m/s,1m/s) or a range (0.1..10m/s:25:log)\n"
 	      "  -m, --model M      the model (default: layer)\n"
 	      "  -o, --output FILE  the table (default: standard output; CSV unless the\n"
 	      "                     extension or -f says otherwise)\n"
-	      "Velocities whose run fails are left out of the table and named on stderr.\n",
+	      "The contact model is the scene's [effects] contact (auto: physical away\n"
+	      "from the paper's own case; both is refused: one model per table).\n"
+	      "A velocity whose run fails keeps its row: nan values, status < 0 and\n"
+	      "the reason in message (also on stderr); the others go on; exit 1.\n"
+	      "Load the rows with status >= 0 (0: met the accuracy, 1: best values).\n",
 	      f);
 }
 
+/* A row's contact model: PHYSICAL or PAPER for layer and halfspace, "-"
+ * for hertz and zener, which have their own (as anvil run's column). */
+static const char *dem_contact(const struct anvil_result *r)
+{
+	return r && (r->contact == ANVIL_CONTACT_PHYSICAL || r->contact == ANVIL_CONTACT_PAPER)
+		       ? anvil_contact_name(r->contact)
+		       : "-";
+}
+
+/* One row per velocity; a failed run's row keeps its place with nan
+ * values, its status and why (the others go on; the exit status is 1). */
 static int dem_emit(void *ctx, const struct sweep_done *d)
 {
 	struct dem *o = ctx;
 	struct anvil_scene sc;
 	char a[40];
 	const struct anvil_result *r = d->n ? &d->r[0] : NULL;
+	int failed = !r || r->status < 0;
 	sweep_scene(o->sw, d->scene, &sc, NULL);
-	if (!r || r->status < 0) {
-		cli_error("dem: V0 = %g m/s: left out: %s", sc.velocity, r ? r->why : d->why);
+	if (failed) {
+		cli_error("dem: V0 = %g m/s: no values: %s", sc.velocity, r ? r->why : d->why);
 		o->failed++;
-		return ANVIL_OK;
 	}
-	double v[5] = {sc.velocity, r->Rf.val, r->ts.val, r->Rf.err, r->ts.err};
+	double v[5] = {sc.velocity, NAN, NAN, NAN, NAN};
+	if (!failed) {
+		v[1] = r->Rf.val;
+		v[2] = r->ts.val;
+		v[3] = r->Rf.err;
+		v[4] = r->ts.err;
+	}
 	for (int i = 0; i < 5; i++)
 		out_grid_cell(o->g, "%s", out_num(a, v[i], NULL));
-	out_grid_cell(o->g, "%d", r->status);
+	out_grid_cell(o->g, "%d", r ? r->status : d->st);
+	out_grid_cell(o->g, "%s", dem_contact(r));
+	out_grid_cell(o->g, "%s", r ? r->why : d->why);
 	o->rows++;
 	return ANVIL_OK;
 }
@@ -129,6 +156,9 @@ static int dem_go(struct dem *o)
 	int st = cli_scene(&sw.base, o->scene, o->sets.v, o->sets.n);
 	if (st)
 		return cli_exit_code(st);
+	if (sw.base.effects.contact == ANVIL_CONTACT_BOTH)
+		return out_usage("dem", "effects.contact = both: a DEM table has one contact model; "
+			       "give -s effects.contact=physical or paper");
 	snprintf(axis, sizeof axis, "impact.velocity=%s", o->velocities);
 	if ((st = sweep_axis_add(&sw, axis, &err)) || (st = sweep_layout(&sw, &err))) {
 		fprintf(stderr, "anvil dem: --velocities %s\n", err.msg + strlen("impact.velocity="));
@@ -136,10 +166,16 @@ static int dem_go(struct dem *o)
 		return cli_exit_code(st);
 	}
 	o->sw = &sw;
-	static const char *const head[] = {"velocity_m_s", "restitution", "contact_time_s",
-					   "restitution_err", "contact_time_err_s", "status"};
-	o->g = out_grid_alloc(6);
-	for (int i = 0; i < 6; i++)
+	static const char *const head[DEM_NCOL] = {"velocity_m_s", "restitution", "contact_time_s",
+						   "restitution_err", "contact_time_err_s", "status",
+						   "contact", "message"};
+	if (!(o->g = out_grid_alloc(DEM_NCOL))) {
+		sweep_free(&sw);
+		return EXIT_FAIL;
+	}
+	out_grid_text(o->g, DEM_NCOL - 2);
+	out_grid_text(o->g, DEM_NCOL - 1);
+	for (int i = 0; i < DEM_NCOL; i++)
 		out_grid_cell(o->g, "%s", head[i]);
 	st = sweep_run(&sw, 0, sw.nscenes, NULL, o->jobs ? o->jobs : sweep_cores(), dem_emit, NULL, o,
 		       NULL, NULL);

@@ -8,7 +8,12 @@
  * crosses the target brackets the root (so with several roots, the largest
  * x is the answer: for a thickness, the thickest layer), which GSL's Brent solver then
  * finds in log x to FIT_XTOL.  Each evaluation runs the scene through one
- * solver, so layer responses are made once and kept (cache.h). */
+ * solver, so layer responses are made once and kept (cache.h).
+ *
+ * The contact model (layer and halfspace models) is set on every scene
+ * run and checked on every result, as anvil thickness does: auto is the
+ * physical contact (the scenes tried are not the paper's own case), both
+ * gives an answer per contact model, the paper's first. */
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
@@ -49,6 +54,7 @@ struct fit {
 	enum answer_qty q;
 	double target, terr;
 	enum anvil_model model;
+	enum anvil_contact contact; /* of the fit under way; AUTO: the model has its own */
 	int format;
 	struct cli_sets sets;
 	struct anvil_scene sc;
@@ -56,7 +62,7 @@ struct fit {
 	double grid_x[FIT_MAXGRID], grid_v[FIT_MAXGRID];
 	int ngrid;
 	int st;           /* the last evaluation's status */
-	char why[ANVIL_ERR_MSG];
+	char why[ANVIL_ERR_MSG]; /* the last failed evaluation's reason */
 };
 
 static void fit_usage(FILE *f)
@@ -70,7 +76,11 @@ static void fit_usage(FILE *f)
 	      "  --range LO..HI   where to look, in the key's unit (thickness in r0,\n"
 	      "                   default 0.25..64; E in Pa, 1e9..1e12; velocity in m/s,\n"
 	      "                   0.01..100)\n"
-	      "  -m, --model M    the model whose value is matched (default: layer)\n",
+	      "  -m, --model M    the model whose value is matched (default: layer)\n"
+	      "The layer and halfspace models use the scene's contact model, named in\n"
+	      "the answer (-s effects.contact=physical|paper|both; auto is physical\n"
+	      "here; both gives an answer for each).  Runs that fail are skipped and\n"
+	      "the last one's reason given when no answer is found.\n",
 	      f);
 }
 
@@ -81,7 +91,15 @@ static double fit_value(struct fit *f, double x, double *err)
 	char v[64];
 	snprintf(v, sizeof v, "%.17g%s", x, f->k->unit);
 	f->st = answer_eval(f->s, &f->sc, f->k->key, v, f->model, &r);
-	snprintf(f->why, sizeof f->why, "%s", r.why);
+	if (f->st >= 0 && r.contact != f->contact) {
+		/* not the contact asked for (solver.scheme = paper has its own alone) */
+		snprintf(r.why, sizeof r.why, "the %s row has the %s contact, not the %s",
+			 anvil_model_name(f->model), anvil_contact_name(r.contact),
+			 anvil_contact_name(f->contact));
+		f->st = ANVIL_EINVAL;
+	}
+	if (f->st < 0)
+		snprintf(f->why, sizeof f->why, "%s", r.why); /* the last failure's reason */
 	struct anvil_val a = answer_value(&r, f->q);
 	anvil_result_free(&r);
 	if (err)
@@ -193,22 +211,33 @@ static int fit_none(const struct fit *f, double target)
 	fit_show(f, f->lo, lo, sizeof lo);
 	fit_show(f, f->hi, hi, sizeof hi);
 	if (vmin > vmax) {
-		cli_error("fit: no %s in %s .. %s gives a value: every run failed (%s)", f->k->key, lo, hi, f->why);
+		cli_error("fit: no %s in %s .. %s gives a value: every run failed (%s)", f->k->key, lo, hi,
+			  f->why);
 		return EXIT_FAIL;
 	}
 	answer_format(f->q, vmin, a, sizeof a);
 	answer_format(f->q, vmax, b, sizeof b);
-	cli_error("fit: no %s in %s .. %s gives %s = %s with the %s model: %s is %s .. %s there%s%s "
+	cli_error("fit: no %s in %s .. %s gives %s = %s with the %s model%s%s: %s is %s .. %s there%s%s "
 		  "(another --range, model or value?)", f->k->key, lo, hi, answer_qty_name[f->q], t,
-		  anvil_model_name(f->model), answer_qty_name[f->q], a, b, failed ? "; some runs failed: " : "",
-		  failed ? f->why : "");
+		  anvil_model_name(f->model), f->contact ? ", contact " : "",
+		  f->contact ? anvil_contact_name(f->contact) : "", answer_qty_name[f->q], a, b,
+		  failed ? "; some runs failed: " : "", failed ? f->why : "");
 	return EXIT_FAIL;
 }
 
-static int fit_print(struct fit *f, double x, double xlo, double xhi)
+#define FIT_NCOL 10
+
+/* The contact's name for the answer: "-" for a model with its own. */
+static const char *fit_contact_name(const struct fit *f)
 {
-	struct cli_out o;
-	char sx[64], slo[64] = "-", shi[64] = "-", t[64], dt[64], e[64];
+	return f->contact ? anvil_contact_name(f->contact) : "-";
+}
+
+/* The answer of one contact: sentences for people into o, a row for
+ * programs into g (its header made by the caller). */
+static void fit_print(struct fit *f, FILE *o, struct out_grid *g, double x, double xlo, double xhi)
+{
+	char sx[64], slo[64] = "-", shi[64] = "-", t[64], dt[64], e[64], cn[48] = "";
 	double verr = NAN;
 	fit_value(f, x, &verr);
 	/* the solver's error of the value, carried to x by the local slope */
@@ -223,65 +252,106 @@ static int fit_print(struct fit *f, double x, double xlo, double xhi)
 	answer_format(f->q, f->target, t, sizeof t);
 	answer_format(f->q, f->terr, dt, sizeof dt);
 	answer_format(f->q, verr, e, sizeof e);
-	if (cli_out_open(&o, f->out))
-		return EXIT_FAIL;
+	if (f->contact)
+		snprintf(cn, sizeof cn, ", %s contact", anvil_contact_name(f->contact));
 	if (f->format == OUT_TABLE) {
-		fprintf(o.f, "%s = %s gives %s = %s (%s model)\n", f->k->key, sx, answer_qty_name[f->q], t,
-			anvil_model_name(f->model));
+		fprintf(o, "%s = %s gives %s = %s (%s model%s)\n", f->k->key, sx, answer_qty_name[f->q], t,
+			anvil_model_name(f->model), cn);
 		if (f->terr > 0)
-			fprintf(o.f, "%s = %s +- %s allows %s = %s .. %s\n", answer_qty_name[f->q], t, dt, f->k->key,
+			fprintf(o, "%s = %s +- %s allows %s = %s .. %s\n", answer_qty_name[f->q], t, dt, f->k->key,
 				isfinite(xlo) ? slo : "(beyond the range)", isfinite(xhi) ? shi : "(beyond the range)");
-		fprintf(o.f, "accuracy: Brent on log x to %g; the solver's %s +- %s moves x by %.2g %s\n",
+		fprintf(o, "accuracy: Brent on log x to %g; the solver's %s +- %s moves x by %.2g %s\n",
 			FIT_XTOL, answer_qty_name[f->q], e, xerr, f->k->unit);
-	} else {
-		struct out_grid *g = out_grid_alloc(9);
-		char a[40];
-		static const char *const head[] = {"key", "unit", "value", "lo", "hi", "quantity", "target_si",
-						   "target_err_si", "value_err"};
-		for (int k = 0; k < 9; k++)
-			out_grid_cell(g, "%s", head[k]);
-		out_grid_text(g, 1);
-		out_grid_text(g, 5);
-		out_grid_cell(g, "%s", f->k->key);
-		out_grid_cell(g, "%s", f->k->unit);
-		double v[3] = {x, f->terr > 0 ? fmin(xlo, xhi) : NAN, f->terr > 0 ? fmax(xlo, xhi) : NAN};
-		for (int k = 0; k < 3; k++)
-			out_grid_cell(g, "%s", out_num(a, v[k], NULL));
-		out_grid_cell(g, "%s", answer_qty_name[f->q]);
-		out_grid_cell(g, "%s", out_num(a, f->target, NULL));
-		out_grid_cell(g, "%s", out_num(a, f->terr, NULL));
-		out_grid_cell(g, "%s", out_num(a, xerr, NULL));
-		int st = out_grid_print(g, (enum out_format)f->format, o.f);
-		out_grid_free(g);
-		if (st) {
-			cli_out_abort(&o);
-			return EXIT_FAIL;
-		}
+		return;
 	}
-	return cli_out_commit(&o) ? EXIT_FAIL : EXIT_OK;
+	char a[40];
+	out_grid_cell(g, "%s", f->k->key);
+	out_grid_cell(g, "%s", f->k->unit);
+	double v[3] = {x, f->terr > 0 ? fmin(xlo, xhi) : NAN, f->terr > 0 ? fmax(xlo, xhi) : NAN};
+	for (int k = 0; k < 3; k++)
+		out_grid_cell(g, "%s", out_num(a, v[k], NULL));
+	out_grid_cell(g, "%s", answer_qty_name[f->q]);
+	out_grid_cell(g, "%s", out_num(a, f->target, NULL));
+	out_grid_cell(g, "%s", out_num(a, f->terr, NULL));
+	out_grid_cell(g, "%s", out_num(a, xerr, NULL));
+	out_grid_cell(g, "%s", fit_contact_name(f));
 }
 
-static int fit_go(struct fit *f)
+/* The fit of contact f->contact (set on f->sc). */
+static int fit_one(struct fit *f, FILE *o, struct out_grid *g)
 {
 	double x, xlo = NAN, xhi = NAN;
-	int code;
-	if (!(f->s = anvil_solver_alloc()))
-		return EXIT_FAIL;
+	f->why[0] = '\0';
 	fit_grid(f);
 	int st = fit_solve(f, f->target, &x);
-	if (st == ANVIL_ENOTFOUND) {
-		code = fit_none(f, f->target);
-	} else if (st) {
-		cli_error("fit: the root finder failed near the bracket (%s)", f->why);
-		code = EXIT_FAIL;
-	} else {
-		/* ends of the interval: not found is beyond the range (NaN) */
-		if (f->terr > 0 && fit_solve(f, f->target - f->terr, &xlo))
-			xlo = NAN;
-		if (f->terr > 0 && fit_solve(f, f->target + f->terr, &xhi))
-			xhi = NAN;
-		code = fit_print(f, x, xlo, xhi);
+	if (st == ANVIL_ENOTFOUND)
+		return fit_none(f, f->target);
+	if (st) {
+		cli_error("fit: the root finder failed near the bracket%s%s (%s)", f->contact ? ", contact " : "",
+			  f->contact ? anvil_contact_name(f->contact) : "", f->why);
+		return EXIT_FAIL;
 	}
+	/* ends of the interval: not found is beyond the range (NaN) */
+	if (f->terr > 0 && fit_solve(f, f->target - f->terr, &xlo))
+		xlo = NAN;
+	if (f->terr > 0 && fit_solve(f, f->target + f->terr, &xhi))
+		xhi = NAN;
+	fit_print(f, o, g, x, xlo, xhi);
+	return EXIT_OK;
+}
+
+/* The contact models to fit with: none of its own for hertz and zener;
+ * else the scene's (auto: physical; both: the paper's, then physical). */
+static int fit_contacts(const struct fit *f, enum anvil_contact c[2])
+{
+	if (f->model != ANVIL_MODEL_LAYER && f->model != ANVIL_MODEL_HALFSPACE) {
+		c[0] = ANVIL_CONTACT_AUTO;
+		return 1;
+	}
+	c[0] = f->sc.effects.contact == ANVIL_CONTACT_PAPER || f->sc.effects.contact == ANVIL_CONTACT_BOTH
+		       ? ANVIL_CONTACT_PAPER
+		       : ANVIL_CONTACT_PHYSICAL;
+	c[1] = ANVIL_CONTACT_PHYSICAL;
+	return f->sc.effects.contact == ANVIL_CONTACT_BOTH ? 2 : 1;
+}
+
+/* Every contact's fit; one that fails leaves the others (exit 1). */
+static int fit_go(struct fit *f)
+{
+	static const char *const head[FIT_NCOL] = {"key", "unit", "value", "lo", "hi", "quantity",
+						   "target_si", "target_err_si", "value_err", "contact"};
+	enum anvil_contact cs[2];
+	struct cli_out o;
+	struct out_grid *g = f->format == OUT_TABLE ? NULL : out_grid_alloc(FIT_NCOL);
+	int nc = fit_contacts(f, cs), code = EXIT_OK, answered = 0;
+	if ((f->format != OUT_TABLE && !g) || !(f->s = anvil_solver_alloc()) || cli_out_open(&o, f->out)) {
+		out_grid_free(g);
+		anvil_solver_free(f->s);
+		return EXIT_FAIL;
+	}
+	if (g) {
+		out_grid_text(g, 0);
+		out_grid_text(g, 1);
+		out_grid_text(g, 5);
+		out_grid_text(g, FIT_NCOL - 1);
+		for (int k = 0; k < FIT_NCOL; k++)
+			out_grid_cell(g, "%s", head[k]);
+	}
+	for (int k = 0; k < nc; k++) {
+		if (cs[k])
+			f->contact = f->sc.effects.contact = cs[k];
+		int c = fit_one(f, o.f, g);
+		answered += c == EXIT_OK;
+		if (c != EXIT_OK)
+			code = c;
+	}
+	if (!answered || (g && out_grid_print(g, (enum out_format)f->format, o.f))) {
+		cli_out_abort(&o); /* nothing half-written */
+		code = EXIT_FAIL;
+	} else if (cli_out_commit(&o)) {
+		code = EXIT_FAIL;
+	}
+	out_grid_free(g);
 	anvil_solver_free(f->s);
 	return code;
 }
@@ -317,11 +387,17 @@ static int fit_target(struct fit *f, const char *arg)
 
 static int fit_range(struct fit *f, const char *s)
 {
-	char *end;
-	f->lo = strtod(s, &end);
-	if (strncmp(end, "..", 2))
+	/* LO ends at the first "..": strtod alone reads "50..100" as 50. and .100 */
+	const char *dots = strstr(s, "..");
+	char lo[64], *end;
+	if (!dots || dots == s || (size_t)(dots - s) >= sizeof lo)
 		return -1;
-	const char *p = end + 2;
+	memcpy(lo, s, (size_t)(dots - s));
+	lo[dots - s] = '\0';
+	f->lo = strtod(lo, &end);
+	if (*end)
+		return -1;
+	const char *p = dots + 2;
 	f->hi = strtod(p, &end);
 	return end != p && !*end && f->lo > 0 && f->hi > f->lo && isfinite(f->hi) ? 0 : -1;
 }

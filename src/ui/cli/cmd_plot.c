@@ -54,6 +54,7 @@ struct plot_args {
 	const char *out, *script;
 	struct plot_opts opts;
 	const char *paper;     /* --paper FILE: the paper's tables.tsv */
+	const char *materials, *velocities; /* restitution-velocity: --materials, --velocities */
 	int fixed_h, fixed_v;  /* the user chose the thickness / velocity */
 	int sized;             /* --size given */
 };
@@ -73,6 +74,7 @@ static void usage(FILE *f)
 	fputs("usage: anvil plot KIND [SCENE] [-s KEY=VALUE]... -o FILE.png|.svg|.pdf\n"
 	      "                  [--size WxH] [--font NAME,SIZE] [--title TEXT]\n"
 	      "                  [--script FILE] [--paper TABLES.tsv]\n"
+	      "                  [--materials IMP/LAYER,...] [--velocities SPEC]\n"
 	      "charts (KIND):\n", f);
 	for (int k = 0; k < PLOT_KIND_COUNT; k++)
 		fprintf(f, "  %-22s %s\n", plot_kind_name(k), plot_kind_summary(k));
@@ -82,7 +84,12 @@ static void usage(FILE *f)
 	      "--script FILE also writes the gnuplot script ('-': standard output);\n"
 	      "with --script and no -o only the script is written.  The image type\n"
 	      "follows -o's extension.  --paper names the paper's tables.tsv (the\n"
-	      "restitution charts show its printed values).\n", f);
+	      "restitution charts show its printed values).\n"
+	      "restitution-velocity: a curve per thickness (1, 2, 5, 10 r0, or the scene's),\n"
+	      "or with --materials copper/steel,steel/steel,glass (IMPACTOR/LAYER, or\n"
+	      "LAYER with the scene's impactor; at most 6) a curve per material pair at\n"
+	      "the scene's thickness; --velocities as anvil sweep's (default\n"
+	      "1..100m/s:13:log).  Its contact model is the scene's (auto: physical).\n", f);
 }
 
 /* ------------------------------------------------------------- options */
@@ -166,6 +173,10 @@ static int check_args(struct plot_args *a)
 	/* Three stacked panels need the height of three charts, nearly. */
 	if (a->kind == PLOT_HISTORY && !a->sized)
 		a->opts.height = 1000;
+	if ((a->materials || a->velocities) && a->kind != PLOT_RESTITUTION_VELOCITY) {
+		cli_error("plot: %s is for restitution-velocity only", a->materials ? "--materials" : "--velocities");
+		return EXIT_USAGE;
+	}
 	a->fixed_h = a->scene || sets_has(&a->sets, "layer.thickness");
 	a->fixed_v = a->scene || sets_has(&a->sets, "impact.velocity");
 	return -1;
@@ -197,6 +208,12 @@ static int parse_option(struct plot_args *a, int c, char **argv)
 	case 'R':
 		a->paper = optarg;
 		return -1;
+	case 'M':
+		a->materials = optarg;
+		return -1;
+	case 'V':
+		a->velocities = optarg;
+		return -1;
 	case 'h':
 		usage(stdout);
 		return EXIT_OK;
@@ -221,6 +238,8 @@ static int parse_args(struct plot_args *a, int argc, char **argv)
 		{"title", required_argument, NULL, 'T'},
 		{"script", required_argument, NULL, 'P'},
 		{"paper", required_argument, NULL, 'R'},
+		{"materials", required_argument, NULL, 'M'},
+		{"velocities", required_argument, NULL, 'V'},
 		{"help", no_argument, NULL, 'h'},
 		{NULL, 0, NULL, 0},
 	};
@@ -703,7 +722,8 @@ static int build_chart(struct plot_chart *c, struct batch *b,
 	case PLOT_ACCURACY:
 		return chart_accuracy(c, b, sc);
 	case PLOT_RESTITUTION_VELOCITY: /* plot_sweep.c, on every core */
-		return plot_sweep_rf_velocity(c, sc, a->fixed_h) ? ANVIL_EINVAL : ANVIL_OK;
+		st = plot_sweep_rf_velocity(c, sc, a->fixed_h, a->materials, a->velocities);
+		return st == EXIT_USAGE ? ANVIL_EPARSE : st ? ANVIL_EINVAL : ANVIL_OK;
 	case PLOT_MODELS:
 		return chart_models(c, b, sc);
 	default:
@@ -754,7 +774,8 @@ static int plot_scene(struct plot_args *a)
 		return cli_exit_code(st);
 	/* The paper's figures with the paper's values beside them: its contact
 	 * model, unless the scene names one (models draws both). */
-	if (sc.effects.contact == ANVIL_CONTACT_AUTO && a->kind != PLOT_MODELS)
+	if (sc.effects.contact == ANVIL_CONTACT_AUTO && a->kind != PLOT_MODELS &&
+	    a->kind != PLOT_RESTITUTION_VELOCITY) /* not the paper's: auto, physical */
 		sc.effects.contact = ANVIL_CONTACT_PAPER;
 	/* Fail on a missing gnuplot before minutes of layer runs. */
 	if (a->out && plot_gnuplot_check(&err)) {
@@ -770,8 +791,11 @@ static int plot_scene(struct plot_args *a)
 		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY ||
 			     (!a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
 					      a->kind == PLOT_RESTITUTION_LAMBDA));
-		plot_chart_subtitle(&c, &sc, vary_h, vary_v);
+		if (!a->materials) /* with them, plot_sweep.c wrote it */
+			plot_chart_subtitle(&c, &sc, vary_h, vary_v);
 		code = render(&c, a);
+	} else if (st == ANVIL_EPARSE) {
+		code = EXIT_USAGE;
 	}
 	plot_chart_free(&c);
 	batch_free(b);

@@ -8,12 +8,15 @@
 #include "plot_sweep.h"
 #include "sweep.h"
 
-#define PLOT_SWEEP_NV 13 /* 1..100 m/s: a ratio of 1.47 between neighbours */
+#define PLOT_SWEEP_V "1..100m/s:13:log" /* a ratio of 1.47 between neighbours */
 
 struct rfv {
 	struct plot_run *runs;
 	struct anvil_result *res;
+	int *group;                /* each run's curve (material pair) */
 	int n, cap;
+	int group_now;             /* the curve of the sweep under way */
+	enum anvil_contact contact; /* of the first wave row drawn (AUTO: none yet) */
 };
 
 static int rfv_emit(void *ctx, const struct sweep_done *d)
@@ -27,57 +30,165 @@ static int rfv_emit(void *ctx, const struct sweep_done *d)
 		memset(&v->res[v->n].hist, 0, sizeof v->res[v->n].hist); /* no history kept */
 		v->runs[v->n] = (struct plot_run){r->status >= 0 ? &v->res[v->n] : NULL, r->model, NAN, NAN,
 						  r->lambda_star};
+		v->group[v->n] = v->group_now;
+		if (!v->contact && r->status >= 0 && r->contact)
+			v->contact = r->contact;
 		v->n++;
 	}
 	return ANVIL_OK;
 }
 
-int plot_sweep_rf_velocity(struct plot_chart *c, const struct anvil_scene *sc, int fixed_h)
+/* One sweep of base over the axes (a velocity axis, maybe thicknesses)
+ * into v, its runs in group g. */
+static int rfv_sweep(struct rfv *v, const struct anvil_scene *base, const char *h_axis, const char *v_axis,
+		     int g, struct anvil_err *err)
 {
 	struct sweep sw = {0};
-	struct anvil_err err = {0};
-	struct rfv v = {0};
-	char axis[64];
-	int st, code = EXIT_FAIL;
-	sw.base = *sc;
-	if ((st = anvil_scene_set(&sw.base, "solver.models", "zener,layer,halfspace", "plot", 0, &err)))
-		goto out;
-	if (!fixed_h && (st = sweep_axis_add(&sw, "layer.thickness=1r0,2r0,5r0,10r0", &err)))
-		goto out;
-	snprintf(axis, sizeof axis, "impact.velocity=1..100m/s:%d:log", PLOT_SWEEP_NV);
-	if ((st = sweep_axis_add(&sw, axis, &err)) || (st = sweep_layout(&sw, &err)))
-		goto out;
-	v.cap = (int)sw.nrows;
-	v.runs = calloc(sw.nrows + 1, sizeof *v.runs);
-	v.res = calloc(sw.nrows + 1, sizeof *v.res);
-	if (!v.runs || !v.res || (st = sweep_run(&sw, 0, sw.nscenes, NULL, sweep_cores(), rfv_emit, NULL, &v,
-						  NULL, NULL)))
-		goto out;
+	int st;
+	sw.base = *base;
+	if (!(st = anvil_scene_set(&sw.base, "solver.models", "zener,layer,halfspace", "plot", 0, err)) &&
+	    (!h_axis || !(st = sweep_axis_add(&sw, h_axis, err))) && !(st = sweep_axis_add(&sw, v_axis, err)))
+		st = sweep_layout(&sw, err);
+	if (!st && v->n + (int)sw.nrows > v->cap) {
+		int cap = v->n + (int)sw.nrows;
+		struct plot_run *runs = realloc(v->runs, (size_t)(cap + 1) * sizeof *runs);
+		int *group = runs ? realloc(v->group, (size_t)(cap + 1) * sizeof *group) : NULL;
+		struct anvil_result *res = group ? realloc(v->res, (size_t)(cap + 1) * sizeof *res) : NULL;
+		if (runs)
+			v->runs = runs;
+		if (group)
+			v->group = group;
+		if (res) {
+			/* the runs point into res: re-point them after the move */
+			for (int i = 0; i < v->n; i++)
+				if (v->runs[i].r)
+					v->runs[i].r = &res[i];
+			v->res = res;
+			v->cap = cap;
+		}
+		st = res ? ANVIL_OK : ANVIL_ENOMEM;
+	}
+	int n0 = v->n;
+	v->group_now = g;
+	if (!st)
+		st = sweep_run(&sw, 0, sw.nscenes, NULL, sweep_cores(), rfv_emit, NULL, v, NULL, NULL);
 	/* the scene of each row, for h and V0 */
-	for (size_t s = 0, k = 0; s < sw.nscenes; s++) {
+	for (size_t s = 0, k = (size_t)n0; !st && s < sw.nscenes; s++) {
 		struct anvil_scene one;
 		sweep_scene(&sw, s, &one, NULL);
-		for (size_t r = sw.row0[s]; r < sw.row0[s + 1] && k < (size_t)v.n; r++, k++) {
-			v.runs[k].h_r0 = anvil_scene_h(&one) / one.radius;
-			v.runs[k].V0 = one.velocity;
+		for (size_t r = sw.row0[s]; r < sw.row0[s + 1] && k < (size_t)v->n; r++, k++) {
+			v->runs[k].h_r0 = anvil_scene_h(&one) / one.radius;
+			v->runs[k].V0 = one.velocity;
 		}
 	}
+	sweep_free(&sw);
+	return st;
+}
+
+/* "IMPACTOR/LAYER" or "LAYER" (the scene's impactor): the pair set on sc,
+ * its key label in label.  ANVIL_EPARSE with a message naming the item. */
+static int rfv_pair(struct anvil_scene *sc, const char *item, char *label, size_t n, struct anvil_err *err)
+{
+	char imp[64] = "", lay[64];
+	const char *slash = strchr(item, '/');
+	struct anvil_err e = {0};
+	int st = ANVIL_OK;
+	if (slash && (size_t)(slash - item) < sizeof imp)
+		snprintf(imp, sizeof imp, "%.*s", (int)(slash - item), item);
+	snprintf(lay, sizeof lay, "%s", slash ? slash + 1 : item);
+	if ((slash && !imp[0]) || !lay[0] || strchr(lay, '/'))
+		return anvil_err_set(err, ANVIL_EPARSE, "--materials: '%s': expected IMPACTOR/LAYER or LAYER, "
+				     "e.g. copper/steel", item);
+	if (imp[0])
+		st = anvil_scene_set(sc, "impactor.material", imp, "--materials", 0, &e);
+	if (!st)
+		st = anvil_scene_set(sc, "layer.material", lay, "--materials", 0, &e);
+	if (!st)
+		st = anvil_scene_check(sc, &e);
+	if (st) /* e.msg names --materials and the key */
+		return anvil_err_set(err, ANVIL_EPARSE, "%s", e.msg);
+	snprintf(label, n, "%s on %s", sc->impactor.mat.name, sc->layer.mat.name);
+	return ANVIL_OK;
+}
+
+#define RFV_LABEL 64
+
+/* The material pairs of list (comma-separated) on sc: scenes and labels,
+ * the mass added to each label when the pairs' masses differ (a ball's
+ * mass follows its material). */
+static int rfv_pairs(const struct anvil_scene *sc, const char *list, struct anvil_scene *pair,
+		     char label[][RFV_LABEL], int *np, int *same_mass, struct anvil_err *err)
+{
+	char buf[1024], *save = NULL;
+	int st = ANVIL_OK, same = 1;
+	*np = 0;
+	if (snprintf(buf, sizeof buf, "%s", list) >= (int)sizeof buf)
+		return anvil_err_set(err, ANVIL_EPARSE, "--materials: the list is too long");
+	for (char *tok = strtok_r(buf, ",", &save); tok && !st; tok = strtok_r(NULL, ",", &save)) {
+		if (*np == PLOT_MAX_GROUPS)
+			return anvil_err_set(err, ANVIL_EPARSE, "--materials %s: at most %d pairs on one chart",
+					     list, PLOT_MAX_GROUPS);
+		pair[*np] = *sc;
+		st = rfv_pair(&pair[*np], tok, label[*np], RFV_LABEL, err);
+		same &= pair[*np].mass == pair[0].mass;
+		(*np)++;
+	}
+	if (!st && (*np == 0 || list[strlen(list) - 1] == ',' || list[0] == ','))
+		return anvil_err_set(err, ANVIL_EPARSE, "--materials '%s': expected a list such as "
+				     "copper/steel,steel/steel", list);
+	for (int i = 0; !st && !same && i < *np; i++) {
+		size_t k = strlen(label[i]);
+		snprintf(label[i] + k, RFV_LABEL - k, ", %.3g g", pair[i].mass * 1e3);
+	}
+	*same_mass = same;
+	return st;
+}
+
+int plot_sweep_rf_velocity(struct plot_chart *c, const struct anvil_scene *sc, int fixed_h,
+			   const char *materials, const char *velocities)
+{
+	struct anvil_err err = {0};
+	struct rfv v = {0};
+	struct anvil_scene pair[PLOT_MAX_GROUPS];
+	char axis[512], label[PLOT_MAX_GROUPS][RFV_LABEL];
+	const char *labels[PLOT_MAX_GROUPS];
+	int st = ANVIL_OK, code = EXIT_FAIL, np = 0, same_mass = 1;
+	snprintf(axis, sizeof axis, "impact.velocity=%s", velocities ? velocities : PLOT_SWEEP_V);
+	if (materials && (st = rfv_pairs(sc, materials, pair, label, &np, &same_mass, &err)))
+		goto out;
+	if (materials)
+		for (int g = 0; g < np && !st; g++) {
+			labels[g] = label[g];
+			st = rfv_sweep(&v, &pair[g], NULL, axis, g, &err);
+		}
+	else
+		st = rfv_sweep(&v, sc, fixed_h ? NULL : "layer.thickness=1r0,2r0,5r0,10r0", axis, 0, &err);
+	if (st)
+		goto out;
 	int failed = 0;
 	for (int i = 0; i < v.n; i++)
 		failed += !v.runs[i].r;
 	if (failed)
 		cli_error("plot: %d of %d runs failed and are left out (anvil sweep shows why)", failed, v.n);
-	st = plot_chart_rf_velocity(c, v.runs, v.n);
-	code = st ? EXIT_FAIL : EXIT_OK; /* the caller writes the subtitle */
+	st = materials ? plot_chart_rf_velocity_groups(c, v.runs, v.n, v.group, labels, np)
+		       : plot_chart_rf_velocity(c, v.runs, v.n);
+	if (!st && materials)
+		plot_chart_subtitle_materials(c, sc, !same_mass);
+	if (!st && v.contact)
+		snprintf(c->footnote, sizeof c->footnote, "layer and half-space with the %s contact "
+			 "(effects.contact)", anvil_contact_name(v.contact));
+	code = st ? EXIT_FAIL : EXIT_OK; /* per thickness, the caller writes the subtitle */
 out:
-	if (st == ANVIL_EINVAL)
+	if (st == ANVIL_EPARSE)
+		cli_error("plot: %s", err.msg);
+	else if (st == ANVIL_EINVAL)
 		cli_error("plot: restitution-velocity: nothing to draw (every layer run failed)");
 	else if (st)
 		cli_error("plot: %s", err.msg[0] ? err.msg : anvil_strerror(st));
 	free(v.runs);
+	free(v.group);
 	free(v.res);
-	sweep_free(&sw);
-	return code;
+	return st == ANVIL_EPARSE ? EXIT_USAGE : code;
 }
 
 /* ---- the map from a file ---- */

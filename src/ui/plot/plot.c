@@ -47,7 +47,7 @@ static const struct plot_kind_info kinds[PLOT_KIND_COUNT] = {
 	[PLOT_HISTORY] = {"history", "P(t), v(t) and w(t) stacked on one time axis",
 		"t (µs)", "", ""},
 	[PLOT_RESTITUTION_VELOCITY] = {"restitution-velocity",
-		"restitution R_f against V0, one curve per thickness, Zener and half-space",
+		"restitution R_f against V0, a curve per thickness or material pair, Zener, half-space",
 		"impact velocity V_0 (m/s)", "coefficient of restitution R_f",
 		"set logscale x\nset yrange [0:1.05]\nset xtics (0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)\n"},
 	[PLOT_RESTITUTION_MAP] = {"restitution-map",
@@ -343,6 +343,24 @@ void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 		c->subtitle[sizeof c->subtitle - 1] = '\0';
 }
 
+void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc,
+				   int mass_in_key)
+{
+	char r0[32], h[128], hh[24], m[32] = "";
+	double hm = anvil_scene_h(sc);
+	put_mm(r0, sizeof r0, sc->radius);
+	put_mm(hh, sizeof hh, hm);
+	if (isfinite(hm))
+		snprintf(h, sizeof h, "on a layer, h = %s = %.3g r₀", hh, hm / sc->radius);
+	else
+		snprintf(h, sizeof h, "on a half-space");
+	/* Not the scene's title: it names the scene's own materials. */
+	if (!mass_in_key)
+		snprintf(m, sizeof m, "%.4g g ", sc->mass * 1e3);
+	snprintf(c->subtitle, sizeof c->subtitle, "%simpactor, r₀ = %s, %s; materials (impactor on layer)%s "
+		 "in the key", m, r0, h, mass_in_key ? " and masses" : "");
+}
+
 /* ------------------------------------------------------------- builders */
 
 static const char *const model_label[ANVIL_MODEL_COUNT] = {
@@ -626,6 +644,34 @@ int plot_paper_load(struct plot_paper *p, const char *path, struct anvil_err *er
 
 /* ------------------------------------------- R_f against V0 (sweeps) */
 
+/* The V0 axis: the velocities run, end to end (gnuplot would widen a log
+ * axis to whole decades), ticked at 1, 2, 5 times the powers of ten. */
+static void rf_v_axis(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	static const double m[] = {1, 2, 5};
+	double lo = INFINITY, hi = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]) && runs[i].V0 > 0 && isfinite(runs[i].V0)) {
+			lo = fmin(lo, runs[i].V0);
+			hi = fmax(hi, runs[i].V0);
+		}
+	if (!(hi > lo))
+		return; /* one velocity or none: the kind's own axis */
+	int k = snprintf(c->setup, sizeof c->setup, "set xrange [%.6g:%.6g]\nset xtics (", lo, hi);
+	for (int e = (int)floor(log10(lo)), first = 1; e <= (int)ceil(log10(hi)); e++)
+		for (int i = 0; i < 3; i++) {
+			double v = m[i] * pow(10, e);
+			if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9) && k > 0 && (size_t)k + 32 < sizeof c->setup) {
+				k += snprintf(c->setup + k, sizeof c->setup - (size_t)k, "%s%g", first ? "" : ", ", v);
+				first = 0;
+			}
+		}
+	if (k > 0 && (size_t)k + 4 < sizeof c->setup)
+		snprintf(c->setup + k, sizeof c->setup - (size_t)k, ")\n");
+	else
+		c->setup[0] = '\0';
+}
+
 /* The distinct finite thicknesses of the layer runs, sorted. */
 static int rf_v_thicknesses(const struct plot_run *runs, int n, double *h, int max)
 {
@@ -676,6 +722,7 @@ int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, in
 	int st = ANVIL_OK, any = 0;
 	plot_chart_init(c, PLOT_RESTITUTION_VELOCITY);
 	snprintf(c->title, sizeof c->title, "Coefficient of restitution R_f against impact velocity V_0");
+	rf_v_axis(c, runs, n);
 	if (!x || !y) {
 		free(x);
 		free(y);
@@ -710,6 +757,74 @@ int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, in
 	free(x);
 	free(y);
 	return st ? st : any ? ANVIL_OK : ANVIL_EINVAL;
+}
+
+/* The (V0, R_f) of model m in group g, sorted by V0, one point per V0. */
+static size_t rf_g_points(const struct plot_run *runs, const int *group, int n, enum anvil_model m,
+			  int g, double *x, double *y)
+{
+	size_t k = 0;
+	for (int i = 0; i < n; i++) {
+		const struct plot_run *r = &runs[i];
+		if (!ok_run(r) || r->model != m || group[i] != g || !isfinite(r->r->Rf.val))
+			continue;
+		size_t j = 0;
+		while (j < k && x[j] < r->V0)
+			j++;
+		if (j < k && x[j] == r->V0)
+			continue;
+		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
+		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
+		x[j] = r->V0;
+		y[j] = r->r->Rf.val;
+		k++;
+	}
+	return k;
+}
+
+int plot_chart_rf_velocity_groups(struct plot_chart *c, const struct plot_run *runs, int n,
+				  const int *group, const char *const *label, int ngroups)
+{
+	double *x = malloc((size_t)(n + 1) * sizeof *x), *y = malloc((size_t)(n + 1) * sizeof *y);
+	int st = ANVIL_OK, any = 0, hs = 0, zener = 0;
+	plot_chart_init(c, PLOT_RESTITUTION_VELOCITY);
+	snprintf(c->title, sizeof c->title, "Coefficient of restitution R_f against impact velocity V_0");
+	rf_v_axis(c, runs, n);
+	if (!x || !y || ngroups > PLOT_MAX_GROUPS) {
+		free(x);
+		free(y);
+		return ngroups > PLOT_MAX_GROUPS ? ANVIL_EINVAL : ANVIL_ENOMEM;
+	}
+	/* the half-spaces first: bands under the layers that approach them */
+	for (int g = 0; g < ngroups && !st; g++) {
+		size_t k = rf_g_points(runs, group, n, ANVIL_MODEL_HALFSPACE, g, x, y);
+		if (k > 0)
+			st = plot_chart_add(c, "", PLOT_BAND, g, x, y, k, 1, 1, 1);
+		hs |= k > 0;
+	}
+	for (int g = 0; g < ngroups; g++)
+		plot_chart_key(c, label[g], PLOT_LINE, g, 0);
+	for (int g = 0; g < ngroups && !st; g++) {
+		size_t k = rf_g_points(runs, group, n, ANVIL_MODEL_ZENER, g, x, y);
+		if (k > 0)
+			st = plot_chart_add(c, "", PLOT_DASH, g, x, y, k, 1, 1, 1);
+		zener |= k > 0;
+		if (!st && (k = rf_g_points(runs, group, n, ANVIL_MODEL_LAYER, g, x, y)) > 0) {
+			st = plot_chart_add(c, "", PLOT_LINE, g, x, y, k, 1, 1, 1);
+			if (!st)
+				st = plot_chart_add(c, "", PLOT_POINTS, g, x, y, k, 1, 1, 1);
+			any = 1;
+		}
+	}
+	/* the models' styles once, in black (the band in the grey of a band) */
+	plot_chart_key(c, "layer (transform), anvil's points", PLOT_LINESPOINTS, PLOT_BLACK, 0);
+	if (zener)
+		plot_chart_key(c, "Zener's plate", PLOT_DASH, PLOT_BLACK, 0);
+	if (hs)
+		plot_chart_key(c, "half-space (band, the pair's tint)", PLOT_BAND, PLOT_BLACK, 0);
+	free(x);
+	free(y);
+	return st ? st : any || hs ? ANVIL_OK : ANVIL_EINVAL;
 }
 
 /* ------------------------------------------------ R_f over V0 x h */

@@ -288,6 +288,23 @@ int plot_chart_accuracy(struct plot_chart *c,
  * other models are ignored. */
 int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, int n);
 
+/* The same with one curve per group of runs (group[i] of runs[i], 0 .. ngroups-1;
+ * a material pair, at one thickness), labelled label[group] in the key:
+ * colour by group (palette order, not by thickness: the thickness is one),
+ * the layer solid through filled markers, Zener's plate dashed, the
+ * group's half-space a band in a light tint of its colour under them.
+ * At most PLOT_MAX_GROUPS groups (ANVIL_EINVAL beyond). */
+#define PLOT_MAX_GROUPS 6
+int plot_chart_rf_velocity_groups(struct plot_chart *c, const struct plot_run *runs, int n,
+				  const int *group, const char *const *label, int ngroups);
+/* The subtitle of a chart whose curves differ in their materials: the
+ * scene without them, nor its title, which names them, nor the mass when
+ * mass_in_key (a ball's follows its material) ("impactor m =
+ * 12.2 g, r₀ = 4 mm, on a layer, h = 4 mm = 1 r₀; materials (impactor on
+ * layer) in the key"). */
+void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc,
+				   int mass_in_key);
+
 struct plot_opts;
 /* R_f over V0 x h/r0 (PLOT_RESTITUTION_MAP): a heat map on log axes with
  * contours every 0.1, the colours those of the field maps (viridis).

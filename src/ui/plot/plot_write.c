@@ -109,7 +109,21 @@ static const char *style_colour(int colour)
  * terminal has no alpha). */
 static const char *mark_colour(enum plot_mark mark, int colour)
 {
-	return mark == PLOT_BAND && colour == PLOT_BLACK ? "#8c8c8c" : style_colour(colour);
+	static char tint[PLOT_MAX_GROUPS][8];
+	if (mark != PLOT_BAND || colour == PLOT_GREY)
+		return style_colour(colour);
+	if (colour == PLOT_BLACK)
+		return "#8c8c8c";
+	/* A coloured band (a material pair's half-space): its colour mixed
+	 * half and half with white, so the pair's curve in full colour shows
+	 * on it. */
+	unsigned rgb[3];
+	char *t = tint[(unsigned)colour % PLOT_MAX_GROUPS];
+	if (sscanf(style_colour(colour), "#%2x%2x%2x", &rgb[0], &rgb[1], &rgb[2]) != 3)
+		return style_colour(colour);
+	snprintf(t, 8, "#%02x%02x%02x", (rgb[0] % 256 + 255) / 2 % 256, (rgb[1] % 256 + 255) / 2 % 256,
+		 (rgb[2] % 256 + 255) / 2 % 256);
+	return t;
 }
 
 /* "with STYLE lc rgb 'C' [pt N]" of a mark. */
