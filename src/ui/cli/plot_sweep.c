@@ -111,7 +111,7 @@ static int rfv_pair(struct anvil_scene *sc, const char *item, char *label, size_
 	return ANVIL_OK;
 }
 
-#define RFV_LABEL 64
+#define RFV_LABEL (2 * ANVIL_NAME_MAX + 32) /* "IMP on LAYER, M g" */
 
 /* The material pairs of list (comma-separated) on sc: scenes and labels,
  * the mass added to each label when the pairs' masses differ (a ball's
