@@ -11,14 +11,14 @@ check "a 2 x 2 sweep runs" $ANVIL sweep $D -m hertz,zener 'layer.thickness=1r0,2
 	'impact.velocity=1m/s,3m/s' -o s.tsv -q
 assert "one header and 8 rows (2 scenes x 2 x 2 models)" [ "$(wc -l <s.tsv)" -eq 9 ]
 assert "axes in the user's units, scene columns for joining" \
-	grep -q '^row	rows	layer.thickness_r0	impact.velocity_m_s	impactor	layer	mass_kg	r0_m	h_m	h_r0	V0_m_s	model	status	message	ts_us	ts_err_us' s.tsv
+	grep -q '^row	rows	layer.thickness_r0	impact.velocity_m_s	impactor	layer	mass_kg	r0_m	h_m	h_r0	V0_m_s	model	contact	status	message	ts_us	ts_err_us' s.tsv
 assert "last axis varies fastest" \
 	[ "$(awk -F'\t' 'NR > 1 { printf "%s/%s/%s ", $3, $4, $12 }' s.tsv)" = \
 	  "1/1/hertz 1/1/zener 1/3/hertz 1/3/zener 2/1/hertz 2/1/zener 2/3/hertz 2/3/zener " ]
 # the row's values are those of anvil run on the same scene
 $ANVIL run $D -m zener -s layer.thickness=2r0 -s impact.velocity=3m/s -f tsv >run.tsv 2>/dev/null
 assert "a row equals anvil run on its scene (R_f, t_s)" \
-	[ "$(awk -F'\t' '$3 == 2 && $4 == 3 && $12 == "zener" { print $15, $23 }' s.tsv)" = \
+	[ "$(awk -F'\t' '$3 == 2 && $4 == 3 && $12 == "zener" { print $16, $24 }' s.tsv)" = \
 	  "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { print $c["ts_us"], $c["Rf"] }' run.tsv)" ]
 check "a log range, CSV by extension" $ANVIL sweep $D -m hertz 'impact.velocity=0.1..10m/s:3:log' -o r.csv -q
 assert "log range: 0.1, 1, 10 m/s" \
@@ -35,11 +35,34 @@ else
 	skip "the JSON parses" "no python3"
 fi
 
+# ---- the contact model: a column, one model per table, both on request ----
+check "a sweep of the layer and hertz" $ANVIL sweep $D -m hertz,layer 'impact.velocity=5m/s,10m/s' -o c.tsv -q
+assert "a contact column: physical for the layer, - for hertz; one layer row at 10 m/s (auto is physical in a table, the paper's own case too)" \
+	[ "$(awk -F'\t' 'NR > 1 { printf "%s/%s/%s ", $3, $11, $12 }' c.tsv)" = "5/hertz/- 5/layer/physical 10/hertz/- 10/layer/physical " ]
+check "contact = both" $ANVIL sweep $D -m layer -s effects.contact=both 'impact.velocity=5m/s,10m/s' -o both.tsv -q
+assert "...two layer rows a scene, the paper's first (as anvil run)" \
+	[ "$(awk -F'\t' 'NR > 1 { printf "%s/%s ", $3, $12 }' both.tsv)" = "5/paper 5/physical 10/paper 10/physical " ]
+$ANVIL run $D -m layer -s effects.contact=both -s impact.velocity=5m/s -f tsv 2>/dev/null |
+	awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR > 1 { print $c["Rf"], $c["Rf_err"] }' >both.run
+check "a both sweep of one scene" $ANVIL sweep $D -m layer -s effects.contact=both 'impact.velocity=5m/s' -o both1.tsv -q
+assert "...its rows are anvil run's, to the bit (R_f)" \
+	[ "$(awk -F'\t' 'NR > 1 { printf "%s ", $23 }' both1.tsv)" = "$(awk '{ printf "%s ", $1 }' both.run)" ]
+assert "...in a longer sweep (a shared, wider response) within the summed error estimates" \
+	awk -F'\t' 'NR == FNR { r[FNR] = $1; e[FNR] = $2; next }
+		FNR > 1 && $3 == 5 { k++; d = $23 - r[k]; if (d < 0) d = -d; if (d > $24 + e[k]) bad = 1 }
+		END { exit bad || k != 2 }' both.run both.tsv
+head -n 3 both.tsv >bothcut.tsv # killed between a scene's two rows
+check "--resume of a both sweep cut between a scene's rows" $ANVIL sweep $D -m layer -s effects.contact=both \
+	'impact.velocity=5m/s,10m/s' -o bothcut.tsv --resume -q
+assert "...= uninterrupted" cmp -s bothcut.tsv both.tsv
+check "a list's unit written once, on its last value" $ANVIL sweep $D -m hertz,layer 'impact.velocity=5,10m/s' -o c1.tsv -q
+assert "...the same table as with every unit written" cmp -s c1.tsv c.tsv
+
 # a row that fails says why, and the others print
 # (a layer 1e-4 r0 thin: the planner refuses it before any work)
 check_exit 1 "a refused row: exit 1" $ANVIL sweep $D -m layer 'layer.thickness=0.0001r0,2r0' -o f.tsv -q
 assert "the refused row has status < 0 and a message, the other its values" \
-	[ "$(awk -F'\t' 'NR > 1 { printf "%s:%s:%s ", ($12 < 0), ($13 != ""), ($22 != "nan") }' f.tsv)" = "1:1:0 0:0:1 " ]
+	[ "$(awk -F'\t' 'NR > 1 { printf "%s:%s:%s ", ($13 < 0), ($14 != ""), ($23 != "nan") }' f.tsv)" = "1:1:0 0:0:1 " ]
 
 # ---- bad specs: one line naming the argument, exit 2 ----
 for spec in 'impact.velocity=0.1..10m/s:0' 'layer.thickness=1mm,' 'foo.bar=1,2' \
@@ -238,6 +261,10 @@ check "a V0 x h sweep for the map" $ANVIL sweep $D -m layer impact.velocity=1..1
 check "plot restitution-map FILE (script)" $ANVIL plot restitution-map map.tsv --script rm.gp
 assert "...a heat map with contours over the 3 x 3 grid" \
 	sh -c 'grep -q "set contour base" rm.gp && grep -q "with pm3d" rm.gp && [ $(grep -c "^[0-9.e+-]* [0-9.e+-]* [0-9.e+-]*$" rm.gp) -eq 9 ]'
+check "a V0 x h sweep with both contacts" $ANVIL sweep $D -m layer -s effects.contact=both impact.velocity=1..10m/s:3:log layer.thickness=1r0,2r0 -o mapb.tsv -q
+check "...its map" $ANVIL plot restitution-map mapb.tsv --script rmb.gp
+assert "...is the physical contact's, named in the title, 3 x 2 cells" \
+	sh -c 'grep -q "physical contact" rmb.gp && [ $(grep -c "^[0-9.e+-]* [0-9.e+-]* [0-9.e+-]*$" rmb.gp) -eq 6 ]'
 check_exit 2 "restitution-map: a file that is not a sweep's" $ANVIL plot restitution-map dem.csv --script x.gp
 if [ -n "${GNUPLOT:-}" ] && command -v "$GNUPLOT" >/dev/null 2>&1; then
 	check "restitution-map as PNG" $ANVIL plot restitution-map map.tsv -o rm.png

@@ -127,6 +127,22 @@ static int axis_check(struct sweep_axis *a, const struct anvil_scene *base, cons
 	int nnum = 0;
 	if (!(a->num = malloc((size_t)a->n * sizeof *a->num)))
 		return anvil_err_set(err, ANVIL_ENOMEM, "out of memory");
+	/* "5,10,20m/s": the last value's unit, written once as in a range,
+	 * holds for the bare numbers before it */
+	char last[64];
+	double x;
+	if (split_number(a->val[a->n - 1], &x, last, sizeof last) && last[0])
+		for (int i = 0; i < a->n - 1; i++) {
+			char unit[64], *v;
+			if (!split_number(a->val[i], &x, unit, sizeof unit) || unit[0] || isinf(x))
+				continue;
+			size_t n = strlen(a->val[i]) + strlen(last) + 1;
+			if (!(v = malloc(n)))
+				return anvil_err_set(err, ANVIL_ENOMEM, "out of memory");
+			snprintf(v, n, "%s%s", a->val[i], last);
+			free(a->val[i]);
+			a->val[i] = v;
+		}
 	for (int i = 0; i < a->n; i++) {
 		char unit[64];
 		if (!split_number(a->val[i], &a->num[i], unit, sizeof unit))
@@ -212,17 +228,46 @@ int sweep_scene(const struct sweep *sw, size_t s, struct anvil_scene *sc, struct
 		if (st)
 			return st;
 	}
+	/* contact = auto shows both models on the paper's own case (anvil
+	 * run); a table keeps one contact model for every scene: the
+	 * physical one, unless both or paper is asked for */
+	if (sc->effects.contact == ANVIL_CONTACT_AUTO)
+		sc->effects.contact = ANVIL_CONTACT_PHYSICAL;
 	return anvil_scene_check(sc, err);
 }
 
-/* Rows a scene gives: one per model, or one saying there is none. */
-static size_t scene_rows(const struct anvil_scene *sc)
+/* [effects] contact as the problem resolves it (problem.c; a sweep's
+ * scenes have no auto left, sweep_scene); the paper's scheme is the
+ * paper's contact alone. */
+static enum anvil_contact scene_contact(const struct anvil_scene *sc)
+{
+	enum anvil_contact c = sc->effects.contact;
+	if (sc->scheme == ANVIL_SCHEME_PAPER)
+		return ANVIL_CONTACT_PAPER;
+	if (c == ANVIL_CONTACT_AUTO)
+		c = anvil_scene_is_paper_case(sc) ? ANVIL_CONTACT_BOTH : ANVIL_CONTACT_PHYSICAL;
+	return c;
+}
+
+int sweep_scene_rows(const struct anvil_scene *sc, struct sweep_rowkey *k)
 {
 	unsigned m = anvil_scene_models(sc);
-	size_t n = 0;
-	for (int i = 0; i < ANVIL_MODEL_COUNT; i++)
-		n += (m >> i) & 1u;
-	return n ? n : 1;
+	enum anvil_contact c = scene_contact(sc);
+	int n = 0;
+	for (int i = 0; i < ANVIL_MODEL_COUNT; i++) {
+		if (!((m >> i) & 1u))
+			continue;
+		int wave = i == ANVIL_MODEL_LAYER || i == ANVIL_MODEL_HALFSPACE;
+		if (wave && c == ANVIL_CONTACT_BOTH)
+			k[n++] = (struct sweep_rowkey){(enum anvil_model)i, ANVIL_CONTACT_PAPER};
+		k[n++] = (struct sweep_rowkey){(enum anvil_model)i,
+					       !wave ? ANVIL_CONTACT_AUTO
+					       : c == ANVIL_CONTACT_PAPER ? ANVIL_CONTACT_PAPER
+									  : ANVIL_CONTACT_PHYSICAL};
+	}
+	if (!n)
+		k[n++] = (struct sweep_rowkey){ANVIL_MODEL_COUNT, ANVIL_CONTACT_AUTO};
+	return n;
 }
 
 int sweep_layout(struct sweep *sw, struct anvil_err *err)
@@ -243,8 +288,9 @@ int sweep_layout(struct sweep *sw, struct anvil_err *err)
 	sw->row0[0] = 0;
 	for (size_t s = 0; s < n; s++) {
 		struct anvil_scene sc;
+		struct sweep_rowkey k[SWEEP_MAXROWS];
 		sweep_scene(sw, s, &sc, NULL); /* a failing scene still has models */
-		sw->row0[s + 1] = sw->row0[s] + scene_rows(&sc);
+		sw->row0[s + 1] = sw->row0[s] + (size_t)sweep_scene_rows(&sc, k);
 	}
 	sw->nrows = sw->row0[n];
 	return ANVIL_OK;
@@ -358,7 +404,7 @@ static void axis_name(const struct sweep_axis *a, char *buf, size_t n)
 }
 
 static const char *const scene_cols[] = {"impactor", "layer", "mass_kg", "r0_m", "h_m", "h_r0", "V0_m_s",
-					 "model"};
+					 "model", "contact"};
 
 /* The outputs: name, field, scale from SI, error name. */
 struct out_col {
@@ -414,7 +460,7 @@ static size_t row_scene(const struct sweep *sw, size_t row)
 }
 
 static void row_id(struct line *l, const struct sweep *sw, size_t row, const struct anvil_scene *sc,
-		   enum anvil_model m)
+		   const struct sweep_rowkey *k)
 {
 	int idx[SWEEP_MAXAXIS];
 	char name[96];
@@ -437,27 +483,28 @@ static void row_id(struct line *l, const struct sweep *sw, size_t row, const str
 	cell_num(l, "h_m", h);
 	cell_num(l, "h_r0", h / sc->radius);
 	cell_num(l, "V0_m_s", sc->velocity);
-	cell_text(l, "model", m < ANVIL_MODEL_COUNT ? anvil_model_name(m) : "none");
+	cell_text(l, "model", k->model < ANVIL_MODEL_COUNT ? anvil_model_name(k->model) : "none");
+	cell_text(l, "contact", k->contact == ANVIL_CONTACT_AUTO ? "-" : anvil_contact_name(k->contact));
 }
 
 char *sweep_row_id(const struct sweep *sw, enum out_format fmt, size_t row,
-		   const struct anvil_scene *sc, enum anvil_model m)
+		   const struct anvil_scene *sc, const struct sweep_rowkey *k)
 {
 	struct line l;
 	if (line_open(&l, fmt))
 		return NULL;
-	row_id(&l, sw, row, sc, m);
+	row_id(&l, sw, row, sc, k);
 	return line_close(&l, 0);
 }
 
 char *sweep_row(const struct sweep *sw, enum out_format fmt, size_t row, const struct anvil_scene *sc,
-		enum anvil_model m, const struct anvil_result *res, int st, const char *why)
+		const struct sweep_rowkey *k, const struct anvil_result *res, int st, const char *why)
 {
 	struct line l;
 	char stbuf[16];
 	if (line_open(&l, fmt))
 		return NULL;
-	row_id(&l, sw, row, sc, m);
+	row_id(&l, sw, row, sc, k);
 	if (res) {
 		st = res->status;
 		why = res->why;

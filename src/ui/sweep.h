@@ -65,26 +65,40 @@ int sweep_scene(const struct sweep *sw, size_t s, struct anvil_scene *sc, struct
 /* The scenes [*s0, *s1) of shard k of n (k from 1). */
 void sweep_shard(const struct sweep *sw, int k, int n, size_t *s0, size_t *s1);
 
+/* One row of a scene: its model and contact model.  With [effects]
+ * contact = both (or auto on the paper's own case) the layer and
+ * halfspace models have two rows, the paper's contact first, as anvil run
+ * prints them; hertz and zener have contact AUTO (their own). */
+struct sweep_rowkey {
+	enum anvil_model model; /* ANVIL_MODEL_COUNT: a scene with no model */
+	enum anvil_contact contact;
+};
+#define SWEEP_MAXROWS (2 * ANVIL_MODEL_COUNT)
+/* The rows scene sc gives, in order, into k[SWEEP_MAXROWS]: their number,
+ * at least 1 (a scene with no model has one row saying so).  A function
+ * of the scene alone: the layout, --resume and merge depend on it. */
+int sweep_scene_rows(const struct anvil_scene *sc, struct sweep_rowkey *k);
+
 /* The text written for the sweep, per format (TSV, CSV, JSON: the table
  * format is written as TSV).  Each function returns a malloc'd string
  * without its newline, NULL when out of memory. */
 char *sweep_header(const struct sweep *sw, enum out_format fmt);
-/* Row number row (0-based) of scene sc: res is the model's result, or
+/* Row number row (0-based) of scene sc, row k: res is its result, or
  * NULL when the scene failed before any model ran (then st and why). */
 char *sweep_row(const struct sweep *sw, enum out_format fmt, size_t row, const struct anvil_scene *sc,
-		enum anvil_model m, const struct anvil_result *res, int st, const char *why);
+		const struct sweep_rowkey *k, const struct anvil_result *res, int st, const char *why);
 /* The start of that row which says which row it is (number, axes, scene,
- * model): what --resume and merge compare. */
+ * model, contact): what --resume and merge compare. */
 char *sweep_row_id(const struct sweep *sw, enum out_format fmt, size_t row,
-		   const struct anvil_scene *sc, enum anvil_model m);
+		   const struct anvil_scene *sc, const struct sweep_rowkey *k);
 
 /* One scene's outcome, handed to the writer in scene order. */
 struct sweep_done {
 	size_t scene;
 	int st;                   /* the scene's own status (check, plan) */
 	char why[ANVIL_ERR_MSG];
-	int n;                    /* results, in model order */
-	struct anvil_result r[ANVIL_MODEL_COUNT];
+	int n;                    /* results, in the order of sweep_scene_rows */
+	struct anvil_result r[SWEEP_MAXROWS];
 };
 
 /* Run scenes [s0, s1) of sw with nthreads threads (one solver each),

@@ -125,10 +125,10 @@ static void run_scene(struct anvil_solver *s, const struct sweep *sw,
 		snprintf(d->why, sizeof d->why, "%s", err.msg[0] ? err.msg : anvil_strerror(d->st));
 		return;
 	}
-	for (int m = 0; m < ANVIL_MODEL_COUNT; m++) {
-		if (!(anvil_scene_models(&sc) & (1u << m)))
-			continue;
-		anvil_solver_run(s, &pl, (enum anvil_model)m, 0, &d->r[d->n], NULL);
+	struct sweep_rowkey k[SWEEP_MAXROWS];
+	int nk = sweep_scene_rows(&sc, k);
+	for (int i = 0; i < nk && k[i].model < ANVIL_MODEL_COUNT; i++) {
+		anvil_solver_run_contact(s, &pl, k[i].model, k[i].contact, 0, &d->r[d->n], NULL);
 		note_unphysical(&d->r[d->n]);
 		d->n++;
 	}

@@ -206,10 +206,10 @@ static int put_line(struct writer *w, const char *s)
 	return ferror(w->out.f) ? ANVIL_EIO : ANVIL_OK;
 }
 
-static int emit_row(struct writer *w, size_t row, const struct anvil_scene *sc, enum anvil_model m,
+static int emit_row(struct writer *w, size_t row, const struct anvil_scene *sc, const struct sweep_rowkey *k,
 		    const struct anvil_result *r, int st, const char *why)
 {
-	char *s = sweep_row(w->sw, (enum out_format)w->o->format, row, sc, m, r, st, why);
+	char *s = sweep_row(w->sw, (enum out_format)w->o->format, row, sc, k, r, st, why);
 	if (!s)
 		return ANVIL_ENOMEM;
 	int code = r ? r->status : st;
@@ -226,17 +226,13 @@ static int emit(void *ctx, const struct sweep_done *d)
 	struct anvil_scene sc;
 	size_t row = w->sw->row0[d->scene];
 	int st = ANVIL_OK;
+	struct sweep_rowkey k[SWEEP_MAXROWS];
 	sweep_scene(w->sw, d->scene, &sc, NULL);
-	if (d->st || d->n == 0) {
-		unsigned m = anvil_scene_models(&sc);
-		for (int i = 0; i < ANVIL_MODEL_COUNT && !st; i++)
-			if (m & (1u << i))
-				st = emit_row(w, row++, &sc, (enum anvil_model)i, NULL, d->st, d->why);
-		if (!m && !st)
-			st = emit_row(w, row, &sc, ANVIL_MODEL_COUNT, NULL, d->st, d->why);
-	}
-	for (int i = 0; i < d->n && !st; i++)
-		st = emit_row(w, row++, &sc, d->r[i].model, &d->r[i], 0, NULL);
+	int nk = sweep_scene_rows(&sc, k);
+	/* the results come in the order of k (sweep_run) */
+	for (int i = 0; i < nk && !st; i++)
+		st = d->st || i >= d->n ? emit_row(w, row++, &sc, &k[i], NULL, d->st, d->why)
+					: emit_row(w, row++, &sc, &k[i], &d->r[i], 0, NULL);
 	/* on disk as it completes: an interruption keeps it */
 	if (!st && fflush(w->out.f) != 0)
 		st = ANVIL_EIO;
@@ -304,13 +300,11 @@ static int resume_read(struct writer *w, size_t s0, size_t s1, unsigned char *sk
 		if (f->nrow - r < need)
 			break;
 		struct anvil_scene sc;
+		struct sweep_rowkey k[SWEEP_MAXROWS];
 		sweep_scene(w->sw, s, &sc, NULL);
-		unsigned m = anvil_scene_models(&sc);
-		for (size_t i = 0, k = 0; i < need; i++, k++) {
-			while (k < ANVIL_MODEL_COUNT && m && !(m & (1u << k)))
-				k++;
-			char *id = sweep_row_id(w->sw, fmt, w->sw->row0[s] + i, &sc,
-						m ? (enum anvil_model)k : ANVIL_MODEL_COUNT);
+		sweep_scene_rows(&sc, k); /* need of them (sweep_layout) */
+		for (size_t i = 0; i < need; i++) {
+			char *id = sweep_row_id(w->sw, fmt, w->sw->row0[s] + i, &sc, &k[i]);
 			int same = id && !strncmp(f->row[r + i], id, strlen(id));
 			free(id);
 			if (!same) {

@@ -276,13 +276,27 @@ static size_t index_in(const double *a, size_t n, double x)
 struct map_rows {
 	double *v, *h, *rf;
 	size_t n;
+	char contact[16]; /* the contact model of the rows taken, "" when the file has none */
 };
 
+/* The contact cell of row i ("" without the column: an older file). */
+static void map_contact(const struct sweep_file *f, enum out_format fmt, size_t i, int col, char *buf,
+			size_t n)
+{
+	buf[0] = '\0';
+	if (fmt == OUT_JSON ? !json_at(f->row[i], "contact", buf, n)
+			    : col < 0 || !cell_at(f->row[i], fmt, col, buf, n))
+		buf[0] = '\0';
+}
+
+/* The layer rows' V0, h and R_f.  A sweep with contact = both has a
+ * layer row of each contact model per cell: the map is the physical
+ * one's (the subtitle says which). */
 static int map_rows(const struct sweep_file *f, enum out_format fmt, const char *file, struct map_rows *r)
 {
 	static const char *const names[] = {"V0_m_s", "h_r0", "model", "Rf"};
-	int col[4];
-	char buf[4][128];
+	int col[4], ccol = fmt == OUT_JSON ? -1 : col_of(f->header, fmt, "contact");
+	char buf[4][128], c[16];
 	for (int k = 0; k < 4 && fmt != OUT_JSON; k++)
 		if ((col[k] = col_of(f->header, fmt, names[k])) < 0) {
 			cli_error("plot: %s: no column %s (not anvil sweep's rows?)", file, names[k]);
@@ -294,6 +308,11 @@ static int map_rows(const struct sweep_file *f, enum out_format fmt, const char 
 	if (!r->v || !r->h || !r->rf)
 		return EXIT_FAIL;
 	for (size_t i = 0; i < f->nrow; i++) {
+		map_contact(f, fmt, i, ccol, c, sizeof c);
+		if (!r->contact[0] || !strcmp(c, "physical"))
+			snprintf(r->contact, sizeof r->contact, "%s", c);
+	}
+	for (size_t i = 0; i < f->nrow; i++) {
 		int got = 1;
 		for (int k = 0; k < 4; k++)
 			got &= fmt == OUT_JSON ? json_at(f->row[i], names[k], buf[k], sizeof buf[k])
@@ -302,8 +321,9 @@ static int map_rows(const struct sweep_file *f, enum out_format fmt, const char 
 			cli_error("plot: %s: row %zu: missing cells", file, i + 1);
 			return EXIT_USAGE;
 		}
-		if (strcmp(buf[2], "layer"))
-			continue; /* the layer model's map */
+		map_contact(f, fmt, i, ccol, c, sizeof c);
+		if (strcmp(buf[2], "layer") || strcmp(c, r->contact))
+			continue; /* the layer model's map, one contact model */
 		r->v[r->n] = strtod(buf[0], NULL);
 		r->h[r->n] = strtod(buf[1], NULL);
 		r->rf[r->n] = strcmp(buf[3], "null") ? strtod(buf[3], NULL) : NAN;
@@ -356,7 +376,8 @@ int plot_sweep_rf_map(const char *file, const struct plot_opts *o, const char *p
 	}
 	if (code < 0) {
 		m = (struct plot_rf_map){.nv = nv, .nh = nh, .v0 = vs, .h_r0 = hs, .rf = grid};
-		snprintf(m.title, sizeof m.title, "Coefficient of restitution R_f over V_0 and h (layer model)");
+		snprintf(m.title, sizeof m.title, "Coefficient of restitution R_f over V_0 and h (layer model%s%s%s)",
+			 r.contact[0] ? ", " : "", r.contact, r.contact[0] ? " contact" : "");
 		snprintf(m.subtitle, sizeof m.subtitle, "from %s: %zu runs", file, r.n);
 		st = plot_rf_map_save(&m, o, path, script, &err);
 		if (st)
