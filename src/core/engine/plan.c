@@ -281,10 +281,16 @@ static double bending(const struct anvil_params *p)
  *   COST_EVAL      one layer-kernel evaluation (green.c's integrand with
  *                  its share of the quadrature's bookkeeping): 0.4-0.8 us;
  *   IMPACT_*       one coupled run (passes at dt and dt/2) over a window of
- *                  n steps: linear (weights, the exact contact end) plus
- *                  quadratic (the convolution) in n; a run on the layer
- *                  response costs more per step than one on the half-space
- *                  or the static anvil (interpolation in the sampled ramp);
+ *                  n steps: linear (weights, the exact contact end) plus,
+ *                  on a layer, the online convolution's n log2(n)^2
+ *                  (fastconv.h; it was quadratic before, and the planner
+ *                  priced a 10^5-step contact 15-40 times too dear: fitted
+ *                  again on 24 physical-contact runs, h/r0 0.25-3, 12 g-1 kg,
+ *                  1-10 m/s, 600-10^5 steps, within a factor of 2 but for
+ *                  repeated contacts on h/r0 = 0.25, up to 3 times dearer);
+ *                  a run on the layer response costs more per step than one
+ *                  on the half-space or the static anvil (interpolation in
+ *                  the sampled ramp);
  *   COST_HALFSPACE the exact half-space response (0.03-0.1 ms).
  * The count of kernel evaluations mirrors green.c's k_integral: the
  * starting panels (of width min(1, 2/hh) over the band that holds the
@@ -298,8 +304,8 @@ static double bending(const struct anvil_params *p)
 #define COST_HALFSPACE 1.0e-4
 #define IMPACT_LIN_HS 5.0e-7
 #define IMPACT_SQ_HS 1.1e-9
-#define IMPACT_LIN_LAYER 1.0e-5
-#define IMPACT_SQ_LAYER 3.0e-9
+#define IMPACT_LIN_LAYER 1.5e-6
+#define IMPACT_FFT_LAYER 2.5e-8
 
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
 			 enum anvil_accuracy acc);
@@ -367,7 +373,8 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 static double impact_cost(double window_s, double dt, int layer)
 {
 	double n = window_s / dt;
-	return layer ? IMPACT_LIN_LAYER * n + IMPACT_SQ_LAYER * n * n
+	double l2 = log2(fmax(n, 2.0));
+	return layer ? n * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2)
 		     : IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
 }
 
@@ -572,6 +579,43 @@ static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j
 	return COST_HALFSPACE + impact_cost(window, j->dt, 0);
 }
 
+/* The physical contact's layer row (solver.c physical_impact and
+ * physical_errors): four corrections (the point load and the Hertz patch at
+ * the job's bandwidth, the patch below, the point load at half the band),
+ * each a little dearer than the r0 patch's response (the point load's
+ * integrand does not decay with k: PHYS_EVAL_F, fitted on 30 scenes, h/r0
+ * 0.3-9, 3 g-0.3 kg, 0.3-30 m/s: predicted/actual evaluations 0.8-1.15;
+ * the price of the r0 response alone was 3.6-5.2 times short), and three
+ * runs' worth of impact steps (measured against warm runs).  Corrections
+ * already in the cache cost nothing. */
+#define PHYS_EVAL_F 1.3
+#define PHYS_RUNS 3.0
+static double physical_cost(const struct est *e, const struct anvil_cache *cache, double patch,
+			    enum anvil_cache_where *where)
+{
+	const struct anvil_params *p = &e->p;
+	const struct anvil_wave_job *j = &e->lay;
+	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
+	double tq = anvil_cache_grid(tau_idx), evals = 0;
+	struct { int omega_idx; double patch; } load[4] = {
+		{ j->omega_idx, 0.0 }, { j->omega_idx, patch },
+		{ j->omega_idx, anvil_plan_patch_below(patch) },
+		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+	*where = ANVIL_CACHE_MEMORY;
+	for (int i = 0; i < 4; i++) {
+		struct anvil_cache_key key = { j->hh, p->nu, e->pb->accuracy, load[i].omega_idx, tau_idx,
+					       0, ANVIL_CACHE_LOAD_PATCH, load[i].patch };
+		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
+		if (w == ANVIL_CACHE_NONE)
+			evals += PHYS_EVAL_F * corr_evals(j->hh, p->nu, p->cR / p->c2,
+							  anvil_cache_grid(load[i].omega_idx), tq,
+							  e->pb->accuracy);
+		if (w == ANVIL_CACHE_NONE || (w == ANVIL_CACHE_DISK && *where == ANVIL_CACHE_MEMORY))
+			*where = w;
+	}
+	return COST_HALFSPACE + evals * COST_EVAL + PHYS_RUNS * impact_cost(e->window_lay, j->dt, 1);
+}
+
 /* The layer row: what the full model costs, and whether it needs the
  * layer correction at all (the solver skips it when the reflection
  * returns after the first window: exact, as before the planner). */
@@ -681,11 +725,11 @@ static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_r
 /* The physical row of a wave model m (solver.c's run_physical): no
  * approximation to choose, its own model is cheap.  A finite layer gets the
  * layer job (the solver adds the point load's correction when the bottom
- * reflection returns inside the window: causality), computed three times
- * (point load, the Hertz radius' patch for the patch-size error, half the
- * bandwidth for the correction's own error) and never cached; a half-space
+ * reflection returns inside the window: causality) with the corrections
+ * physical_cost prices (cached like the paper's responses); a half-space
  * needs no response at all (the radiation lag is beta dP/dt). */
-static void physical_row(const struct est *e, enum anvil_model m, struct anvil_plan_row *r)
+static void physical_row(const struct est *e, const struct anvil_cache *cache, enum anvil_model m,
+			 struct anvil_plan_row *r)
 {
 	struct anvil_err err;
 	/* effects.waves = halfspace: no reflections, as for the paper's rows */
@@ -703,9 +747,11 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
 		    ANVIL_PLAN_SAFETY * d_hs <= e->target;
 	layer = layer && !small;
 	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0);
-	enum anvil_cache_where where;
-	/* layer_cost prices a response and its twin: three responses are 1.5 of it */
-	double cost = layer ? 1.5 * layer_full_cost(e, NULL, e->pb->accuracy, &where) : hs_cost;
+	enum anvil_cache_where where = ANVIL_CACHE_NONE;
+	/* the Hertz radius as figures() has it, on the patch grid */
+	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);
+	double patch = anvil_plan_patch(fmin(1.0, a / e->p.r0));
+	double cost = layer ? physical_cost(e, cache, patch, &where) : hs_cost;
 	int run = r->run;
 	enum anvil_plan_why off = r->off;
 	memset(r, 0, sizeof *r);
@@ -717,9 +763,8 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
 		small ? d_hs : 0.0, cost);
 	r->cost_full = cost;
 	r->job = layer ? e->lay : e->hs;
-	/* the Hertz radius as figures() has it, on the patch grid */
-	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);
-	r->job.patch = anvil_plan_patch(fmin(1.0, a / e->p.r0));
+	r->job.patch = patch;
+	r->cached = layer ? where : ANVIL_CACHE_NONE;
 	row_fig(r, ANVIL_FIG_RADIATED);
 	row_fig(r, ANVIL_FIG_A_HERTZ);
 	if (layer)
@@ -734,7 +779,7 @@ static void physical_row(const struct est *e, enum anvil_model m, struct anvil_p
  * for, it moves to paper[] (run only for BOTH) and row[] gets the physical
  * rows.  solver.scheme = paper is the paper's model: its contact alone. */
 static void contact_rows(const struct anvil_problem *pb, const struct est *e,
-			 struct anvil_plan *pl)
+			 const struct anvil_cache *cache, struct anvil_plan *pl)
 {
 	enum anvil_contact c = pb->effects.contact;
 	if (c == ANVIL_CONTACT_AUTO || (unsigned)c >= ANVIL_CONTACT_COUNT)
@@ -750,7 +795,7 @@ static void contact_rows(const struct anvil_problem *pb, const struct est *e,
 		pl->paper[m].run = pl->row[m].run && c == ANVIL_CONTACT_BOTH;
 		if (pl->row[m].run)
 			pl->cost -= pl->row[m].cost;
-		physical_row(e, (enum anvil_model)m, &pl->row[m]);
+		physical_row(e, cache, (enum anvil_model)m, &pl->row[m]);
 		if (pl->row[m].run)
 			pl->cost += pl->row[m].cost;
 		if (pl->paper[m].run)
@@ -938,7 +983,7 @@ int anvil_plan_make(const struct anvil_problem *pb, const struct anvil_cache *ca
 	figures(&e, pl);
 	rows(&pl->pb, &e, cache, pl);
 	warnings(&pl->pb, &e, pl); /* of the layer model's choices: the paper's rows */
-	contact_rows(&pl->pb, &e, pl);
+	contact_rows(&pl->pb, &e, cache, pl);
 	/* the one verdict (verdict.h), quasi-static: a plan runs nothing */
 	return anvil_verdict_make(&pl->pb, NULL, &pl->verdict, err);
 }
