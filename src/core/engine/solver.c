@@ -402,12 +402,14 @@ static const struct anvil_green *physical_corr(struct anvil_solver *s, const str
 	return c;
 }
 
-/* What one physical run takes: the bandwidth's grid index, and the patch
+/* What one physical run takes: the bandwidth's grid index, the patch
  * (radius patch r0) whose correction gives the true contact radius (0: a
- * point load throughout). */
+ * point load throughout), and the radiation lag's low-pass time (impact.h,
+ * tau_lag; a_max / c2). */
 struct phys_load {
 	int omega_idx;
 	double patch;
+	double tau_lag;
 };
 
 /* One physical impact of job j, the window grown as in waves_impact; the
@@ -421,7 +423,7 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 	struct response rs = { 0 }, rs2 = { 0 }; /* no half-space, no static part: Hertz's */
 	struct anvil_impact_opts io = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
 					.dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
-					.nhist = nhist, .physical = 1, .beta = beta };
+					.nhist = nhist, .physical = 1, .beta = beta, .tau_lag = ld.tau_lag };
 	struct held held = { .n = 0 };
 	int st = ANVIL_ETOL;
 	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
@@ -443,7 +445,7 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 				/* a^2 = R alpha with R = r0 */
 				io = (struct anvil_impact_opts){ .scheme = io.scheme, .dt = io.dt,
 					.dt_auto = io.dt_auto, .max_steps = io.max_steps, .nhist = nhist,
-					.physical = 1, .beta = beta, .ramp2 = response_ramp,
+					.physical = 1, .beta = beta, .tau_lag = ld.tau_lag, .ramp2 = response_ramp,
 					.ramp2_ctx = &rs2, .alpha_ref = ld.patch * ld.patch * p->r0 };
 			}
 			if (!rs.corr || (ld.patch > 0 && !rs2.corr)) {
@@ -490,9 +492,10 @@ static int physical_errors(struct anvil_solver *s, const struct anvil_problem *p
 			   double a_max_r0, struct anvil_result *r, struct anvil_err *err)
 {
 	struct anvil_result q[2];
-	struct phys_load alt[3] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch) },
-				    { ld.omega_idx, 0.0 },
-				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+	struct phys_load alt[4] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag },
+				    { ld.omega_idx, 0.0, ld.tau_lag },
+				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag },
+				    { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag } };
 	double x = a_max_r0 / ld.patch, f = fmax(1.0, 2.0 * (1.0 - x * x));
 	int c, st = ANVIL_OK;
 	anvil_result_init(&q[0], r->model);
@@ -506,6 +509,10 @@ static int physical_errors(struct anvil_solver *s, const struct anvil_problem *p
 		st = physical_impact(s, pb, j, beta, alt[2], 0, &q[1], &c, err);
 	if (!st)
 		add_diff_error(r, &q[0], &q[1], 1.0);
+	if (!st)
+		st = physical_impact(s, pb, j, beta, alt[3], 0, &q[0], &c, err);
+	if (!st)
+		add_diff_error(r, r, &q[0], 1.0);
 	anvil_result_free(&q[0]);
 	anvil_result_free(&q[1]);
 	return st;
@@ -528,7 +535,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	const struct anvil_params *p = &pl->pb.p;
 	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
-	struct phys_load ld = { row->job.omega_idx, row->job.patch };
+	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2 };
 	int corr = 0;
 	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
 	if (!st && corr)

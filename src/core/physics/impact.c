@@ -45,6 +45,7 @@ struct ctx {
 	anvil_ramp_fn ramp2; /* the correction of the patch of radius a_ref (opts) */
 	void *rctx2;
 	double alpha_ref;
+	double tau_lag; /* the lag's low-pass (opts), s; 0: none */
 	double *dg;     /* its weights less g's, when ramp2 is given */
 	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
 	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
@@ -539,7 +540,10 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  *   G(x) = b D x^4 + B x^3 + k0 x^2 - b u0 x - A = 0,  b = 1.5 beta / k0,
  * u0 and D the parts of v_n - dw_c/dt(t_n) free of and linear in P_n.
  * Every piece is second order in dt, so the scheme is (tests/test_physical.c
- * measures it).  The contact ends where A = 0: alpha = 0 takes the lag
+ * measures it).  With tau_lag > 0 (impact.h) dw_c/dt is that of w_c
+ * low-passed, y = (w_c - z)/tau_lag, z' = (w_c - z)/tau_lag by the
+ * trapezoidal rule (r = dt/(2 tau_lag)): bounded gain up to Nyquist, so
+ * the lag cannot feed a derivative of the delayed load back into P.  The contact ends where A = 0: alpha = 0 takes the lag
  * with it, and finish_exact's alpha_end is W - w_c there (its far past,
  * Q's through ramp2 - ramp included, by far_exact/far_cubic as for the
  * paper's contact).  The march goes on through repeated contacts as in
@@ -551,6 +555,7 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
 	double dt = s->dt, b = 1.5 * beta / p->k0;
+	double tl = c->tau_lag, rl = 0.5 * dt / tl, zl = 0; /* the lag's filter */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
 	int in = 1;
@@ -586,9 +591,13 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		if (st)
 			return st;
 		in = A > 0;
-		/* dw_c/dt(t_n) = wd0 + e0 P_n (BDF2; Euler at the first step) */
+		/* dw_c/dt(t_n) = wd0 + e0 P_n: low-passed at tau_lag (see above),
+		 * else BDF2 (Euler at the first step) */
 		double wd0, e0;
-		if (n >= 2) {
+		if (tl > 0) {
+			wd0 = (conv - (1.0 - rl) * zl - rl * s->wc[n - 1]) / ((1.0 + rl) * tl);
+			e0 = g0 / ((1.0 + rl) * tl);
+		} else if (n >= 2) {
 			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
 			e0 = 1.5 * g0 / dt;
 		} else {
@@ -606,6 +615,8 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		s->P[n] = P;
 		s->Q[n] = c->dg ? P * p->k0 * x * x / c->alpha_ref : 0.0;
 		s->wc[n] = conv + P * g0;
+		if (tl > 0) /* the filter's state, trapezoidal (Tustin) */
+			zl = ((1.0 - rl) * zl + rl * (s->wc[n] + s->wc[n - 1])) / (1.0 + rl);
 		impulse += 0.5 * dt * (s->P[n - 1] + P);
 		s->v[n] = p->V0 - impulse / p->m1;
 		if (in)
@@ -803,7 +814,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	struct ctx c = { .p = p, .ramp = ramp, .rctx = rctx, .tau_avail = tau_avail,
 			 .physical = o->physical, .beta = o->beta,
 			 .ramp2 = o->physical && o->alpha_ref > 0 ? o->ramp2 : NULL,
-			 .rctx2 = o->ramp2_ctx, .alpha_ref = o->alpha_ref };
+			 .rctx2 = o->ramp2_ctx, .alpha_ref = o->alpha_ref,
+			 .tau_lag = o->physical && o->tau_lag > 0 ? o->tau_lag : 0.0 };
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");

@@ -80,6 +80,25 @@ struct anvil_impact_opts {
 	anvil_ramp_fn ramp2;
 	void *ramp2_ctx;
 	double alpha_ref;
+	/* The radiation lag's derivative of the layer correction, low-passed
+	 * (physical only; s; 0: the plain BDF2 derivative).  Q holds dw_c/dt,
+	 * and w_c follows P through the correction's sharp first arrival, so
+	 * -beta Q feeds a delayed derivative of P back into the contact: a
+	 * neutral delay equation whose gain grows like omega without bound
+	 * (beta k^2 |omega G(omega)|, k = dP/dalpha, G the correction's
+	 * transfer function), reached in the scheme at the Nyquist frequency
+	 * through BDF2's 4/dt: P alternates and blows up (thin layers,
+	 * h = 0.35 r0 at 10 m/s).  The lag -beta dP/dt is itself only the
+	 * low-frequency term of the half-space's remainder, valid for
+	 * omega a/c2 << 1 (radiation.h: the next term is relative O(omega
+	 * a/c2)); the true remainder saturates above c2/a.  So dw_c/dt enters
+	 * Q through the first-order low-pass 1/(1 + i omega tau_lag), tau_lag =
+	 * a_max/c2 (the caller's), discretised by the trapezoidal rule, whose
+	 * gain is at most 1/tau_lag at every frequency up to Nyquist: the loop
+	 * gain is then at most beta k^2 sup|G| / tau_lag, of order 0.01 a/h,
+	 * whatever dt.  The change is of the order the lag's own next term;
+	 * the caller measures it by halving tau_lag (solver.c). */
+	double tau_lag;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
