@@ -654,6 +654,9 @@ int anvil_solver_run_contact(struct anvil_solver *s, const struct anvil_plan *pl
 	int st = run_row(s, pl, m, c, nhist, r, &e);
 	const struct anvil_plan_row *row = anvil_plan_row_of(pl, m, c);
 	r->contact = row ? row->contact : ANVIL_CONTACT_AUTO; /* runs re-init r: set last */
+	const struct anvil_params *p = &pl->pb.p;
+	if (st >= 0 && (m == ANVIL_MODEL_LAYER || m == ANVIL_MODEL_ZENER))
+		anvil_result_reach(r, p->h, p->E, p->nu, p->rho, p->c1);
 	r->seconds = wall_seconds() - t0;
 	if (!st)
 		anvil_err_clear(&e); /* no stale message from a retried window */

@@ -10,6 +10,18 @@ void anvil_result_init(struct anvil_result *r, enum anvil_model model)
 	r->model = model;
 	r->ts.err = r->tmax.err = r->Pmax.err = NAN;
 	r->Vs.err = r->Rf.err = r->Ea.err = NAN;
+	r->reach_p = r->reach_bend = NAN;
+}
+
+void anvil_result_reach(struct anvil_result *r, double h, double E, double nu, double rho, double c1)
+{
+	double t = r->ts.val;
+	r->reach_p = r->reach_bend = NAN;
+	if (!(t > 0) || !isfinite(t) || !(h > 0) || !isfinite(h))
+		return;
+	double beta = h * sqrt(E / (12.0 * rho * (1.0 - nu * nu)));
+	r->reach_p = c1 * t;
+	r->reach_bend = 2.0 * sqrt(beta * t);
 }
 
 int anvil_history_alloc(struct anvil_history *h, size_t n)

@@ -41,6 +41,12 @@ struct anvil_result {
 	size_t ncontacts;
 	double contact_on[ANVIL_MAX_CONTACTS], contact_off[ANVIL_MAX_CONTACTS];
 	double t_free;       /* s: the free motion after the last contact was followed to here */
+	/* How far the layer's motion reaches during the contact (a finite
+	 * layer's layer and zener rows; NaN otherwise), m: the P wave's front
+	 * c1 t_s, and the bending's spread 2 sqrt(beta t_s) (anvil_result_reach).
+	 * The model's layer is unbounded: a plate narrower than twice these, or
+	 * supported within them, answers otherwise. */
+	double reach_p, reach_bend;
 	double seconds;      /* wall time spent on this model */
 	char note[320];      /* what the model left out, or "" */
 	/* How the run ended: ANVIL_OK; a warning (> 0, e.g. ANVIL_WTOL: the
@@ -53,6 +59,13 @@ struct anvil_result {
 
 /* Zero r, set every error estimate to NaN and the model. */
 void anvil_result_init(struct anvil_result *r, enum anvil_model model);
+/* Set r->reach_p and r->reach_bend for a layer of thickness h (m, finite),
+ * Young's modulus E, Poisson's ratio nu, density rho and P-wave speed c1,
+ * from r->ts.  The bending: a Kirchhoff plate's centre impulse spreads as
+ * w(r, t) ~ pi/2 - Si(r^2 / (4 beta t)), beta = sqrt(D/(rho h)) =
+ * h sqrt(E / (12 rho (1 - nu^2))), so by t it has moved the plate out to
+ * about r = 2 sqrt(beta t) (the argument 1).  NaN without a contact time. */
+void anvil_result_reach(struct anvil_result *r, double h, double E, double nu, double rho, double c1);
 /* Allocate n samples for the history (all six arrays); ANVIL_ENOMEM. */
 int anvil_history_alloc(struct anvil_history *h, size_t n);
 /* Free the history; the result itself is the caller's. NULL is a no-op. */

@@ -324,6 +324,25 @@ static int run_unphysical(struct anvil_result *res, int n)
 	return any;
 }
 
+/* The model's layer is unbounded: when its bending spreads over more than
+ * RUN_REACH_WARN thicknesses during the contact, a real plate's size and
+ * supports are likely to matter; one line on stderr (not with -q).  The
+ * paper's own case spreads over 8.6 h. */
+#define RUN_REACH_WARN 10.0
+static void run_reach(const struct anvil_scene *sc, const struct anvil_result *res, int n,
+		      const struct run_opts *o)
+{
+	const struct anvil_result *r = out_reach_row(res, n);
+	double h = anvil_scene_h(sc);
+	if (o->quiet || !r || !(r->reach_bend > RUN_REACH_WARN * h))
+		return;
+	cli_error("warning: %s: during the %.3g us contact the bending spreads over %.3g mm "
+		  "(%.3g h): the result is an unbounded layer's; a plate narrower than %.3g mm, or "
+		  "supported within %.3g mm of the impact, answers otherwise",
+		  anvil_model_name(r->model), r->ts.val * 1e6, r->reach_bend * 1e3,
+		  r->reach_bend / h, 2e3 * r->reach_bend, r->reach_bend * 1e3);
+}
+
 /* The scene's [output] for what the command line leaves unset. */
 static void run_output(struct run_opts *o, const struct anvil_scene *sc)
 {
@@ -390,8 +409,10 @@ static int run_scene(struct run_opts *o)
 	if (!code)
 		run_verdict(s, &pl, o);
 	anvil_solver_free(s);
-	if (!code)
+	if (!code) {
 		tol |= run_unphysical(res, n);
+		run_reach(&sc, res, n, o);
+	}
 	if (code) {
 		cli_out_abort(&hist);
 		cli_out_abort(&out);

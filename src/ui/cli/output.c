@@ -439,6 +439,8 @@ static void machine_header(struct out_grid *g)
 	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time_s");
 	out_grid_cell(g, "contact");
+	out_grid_cell(g, "reach_P_m");
+	out_grid_cell(g, "reach_bending_m");
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -456,6 +458,8 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", out_num(b, contacts(r), NULL));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
 	out_grid_cell(g, "%s", contact_of(r));
+	out_grid_cell(g, "%s", out_num(b, r->reach_p, NULL));
+	out_grid_cell(g, "%s", out_num(b, r->reach_bend, NULL));
 }
 
 static void table_header(struct out_grid *g)
@@ -486,6 +490,35 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
 }
 
+/* The longest reach (result.h) of the rows: the layer's, else Zener's;
+ * NULL when no row has one. */
+const struct anvil_result *out_reach_row(const struct anvil_result *res, int n)
+{
+	const struct anvil_result *best = NULL;
+	for (int i = 0; i < n; i++)
+		if (isfinite(res[i].reach_bend) &&
+		    (!best || (res[i].model == ANVIL_MODEL_LAYER && best->model != ANVIL_MODEL_LAYER) ||
+		     (res[i].model == best->model && res[i].reach_bend > best->reach_bend)))
+			best = &res[i];
+	return best;
+}
+
+/* How far the layer moves during the contact, below the notes: the
+ * model's layer is unbounded, a user's plate is not. */
+static void table_reach(FILE *f, const struct anvil_scene *sc, const struct anvil_result *res, int n)
+{
+	const struct anvil_result *r = out_reach_row(res, n);
+	if (!r)
+		return;
+	double h = anvil_scene_h(sc);
+	char b[40];
+	fprintf(f, "reach (%s, t_s = %.4g us): the P wave runs %.3g mm, the bending spreads over "
+		"%.3g mm (%.3g h): the layer is unbounded here; a plate narrower than %.3g mm, or "
+		"supported within %.3g mm, answers otherwise\n",
+		row_name(r, b, sizeof b), r->ts.val * 1e6, r->reach_p * 1e3, r->reach_bend * 1e3,
+		r->reach_bend / h, 2e3 * r->reach_bend, r->reach_bend * 1e3);
+}
+
 /* What the table shows below the rows, after the models' notes: the
  * scene in one line, so a pasted table still says what was simulated. */
 static void table_caption(FILE *f, const struct anvil_scene *sc)
@@ -506,7 +539,8 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 {
 	/* model, h_r0, V0 and contact (not in the table: the row name says it),
 	 * values, errors, contacts, seconds */
-	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 - 2 * (fmt == OUT_TABLE);
+	/* (and the reach, in the table a line below) */
+	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 + 2 - 4 * (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)
 		return ANVIL_ENOMEM;
@@ -529,6 +563,7 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 			if (res[i].note[0])
 				fprintf(f, "%s%s: %s\n", any++ ? "" : "\n",
 					row_name(&res[i], b, sizeof b), res[i].note);
+		table_reach(f, sc, res, n);
 		table_caption(f, sc);
 		st = ferror(f) ? ANVIL_EIO : ANVIL_OK;
 	}
@@ -596,6 +631,10 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 	json_string(f, r->note);
 	json_key(f, in, "contact");
 	json_string(f, contact_of(r));
+	json_key(f, in, "reach_P_m");
+	json_number(f, r->reach_p);
+	json_key(f, in, "reach_bending_m");
+	json_number(f, r->reach_bend);
 	fputs("\n    }", f);
 }
 

@@ -91,6 +91,9 @@ void out_json_string(FILE *f, const char *s);
  * (the table shows errors as a "±" column beside each value, and the
  * models' notes and the scene's title below it; JSON wraps the rows with a
  * summary of the scene).  Returns ANVIL_OK, ANVIL_ENOMEM or ANVIL_EIO. */
+/* The row whose reach (result.h) the output reports: the layer's, else
+ * Zener's; NULL when none has one. */
+const struct anvil_result *out_reach_row(const struct anvil_result *res, int n);
 int out_results(FILE *f, enum out_format fmt, const struct anvil_scene *sc,
 		const struct anvil_result *res, int n);
 
