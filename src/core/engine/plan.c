@@ -36,16 +36,6 @@ static double contact_estimate(const struct anvil_params *p, int layer, double t
 	return fmax(3.0 * lam * p->T, t_hertz);
 }
 
-/* When reflections return during the contact, the layer correction's
- * bandwidth holds this many times the reflection frequency 2 pi/(2h/c1)
- * (the first thickness resonance, where the layer's response peaks).  A
- * bandwidth set by the contact time alone can lie below it on long
- * contacts; then the twin (half of it) misses the resonance as well, and
- * the two agree while both are wrong: t_s 3 times its estimate (pmma,
- * copper layers, issue 11).  With the resonance inside the band and
- * outside the twin's, the twin measures it. */
-#define PLAN_REFL_BAND 1.1
-
 /* The job of a wave run: layer (1: the layer correction, when h is
  * finite) or not, for a contact of ts seconds (0: the usual Hertz/Zener
  * estimate). */
@@ -66,25 +56,13 @@ static void wave_job(const struct anvil_problem *pb, int layer, double ts,
 	j->ts = ts;
 	j->tau_s = ts * p->c2 / p->r0;
 	j->omega = fmax(lev->omega_min, lev->cycles / (tchar * p->c2 / p->r0));
+	j->omega_idx = anvil_cache_grid_up(j->omega);
+	j->twin_idx = j->omega_idx - ANVIL_CACHE_STEPS;
 	j->dt = pb->dt > 0 ? pb->dt : tchar / lev->nsteps;
 	j->hs_tol = lev->hs_tol;
 	j->nsteps = lev->nsteps;
 	j->refine_max = pb->scheme == ANVIL_SCHEME_PAPER ? 0 : ANVIL_MAX_REFINE;
 	j->attempts = ANVIL_MAX_ATTEMPTS;
-	/* reflections during the contact: the band holds their resonance,
-	 * unless that alone would refuse a run the contact's band allows */
-	double w_refl = M_PI * p->c1 / (p->c2 * j->hh), om = j->omega;
-	if (lay && 2.0 * j->hh * p->c2 / p->c1 < j->tau_s && PLAN_REFL_BAND * w_refl > om) {
-		double win = anvil_wave_window(j, 0);
-		j->omega_idx = anvil_cache_grid_up(om);
-		int before = anvil_wave_refuse(p, pb->dt, ANVIL_MODEL_LAYER, j, win, om, NULL);
-		j->omega = PLAN_REFL_BAND * w_refl;
-		j->omega_idx = anvil_cache_grid_up(j->omega);
-		if (!before && anvil_wave_refuse(p, pb->dt, ANVIL_MODEL_LAYER, j, win, j->omega, NULL))
-			j->omega = om;
-	}
-	j->omega_idx = anvil_cache_grid_up(j->omega);
-	j->twin_idx = j->omega_idx - ANVIL_CACHE_STEPS;
 }
 
 double anvil_wave_window(const struct anvil_wave_job *j, int attempt)
