@@ -8,7 +8,15 @@
  * run (scripts/coverage does the same against reference on more scenes).
  * Scenes the plan prices above COST_MAX at normal are left out (counted).
  * And a row whose true error misses its level's target must not be
- * ANVIL_OK: it carries ANVIL_WTOL or fails. */
+ * ANVIL_OK: it carries ANVIL_WTOL or fails.
+ *
+ * A second sample holds the paper's contact at normal against reference
+ * on long contacts, where the estimates failed (issue 11): pmma layers
+ * (h/r0 0.7-2.5, reflections returning many times during the contact:
+ * t_max moved by more than its own estimate, 1 miss in 13 before the
+ * solver's shift from P_max's error, solver.c tmax_from_pmax).  NLONG scenes,
+ * those the plan prices above LONG_COST_MAX at reference left out; the
+ * outputs in LONG_HELD held to 95 %. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -22,6 +30,15 @@
 #define SEED 20261123u
 #define NOUT 5
 #define COST_MAX 0.3 /* s, the plan's estimate at normal */
+#define NLONG 32
+#define LONG_COST_MAX 0.8 /* s, the plan's estimate at reference */
+/* Held in the long sample: t_max, R_f, E_a.  P_max (about 80 %) and t_s
+ * (one miss in 19, 1.5 times its estimate, 3e-6 relative) are shown, not
+ * held: there the twin's difference under-states the band's error (it
+ * converges slower than 1/omega on these layers: 0.72, 0.79, 0.25 N as
+ * the band doubles from 1 to 8 on a thick copper layer), a fix still to
+ * make (issue 11). */
+#define LONG_HELD (1u << 1 | 1u << 3 | 1u << 4)
 
 static const char *const mats[] = { "steel", "copper", "aluminium", "titanium", "glass", "pmma",
 				    "tungsten-carbide" };
@@ -55,6 +72,19 @@ static void draw(struct scene_draw *d)
 	d->b = (int)(uniform() * NMAT) % NMAT;
 }
 
+#define PMMA 5 /* mats[PMMA] */
+
+/* The long-contact sample: any impactor but pmma on a pmma layer. */
+static void draw_long(struct scene_draw *d)
+{
+	d->h_r0 = loguni(0.7, 2.5);
+	d->V0 = loguni(1, 30);
+	d->m = loguni(1e-3, 3e-2);
+	d->a = (int)(uniform() * (NMAT - 1)) % (NMAT - 1);
+	d->a += d->a >= PMMA;
+	d->b = PMMA;
+}
+
 static int set(struct anvil_scene *sc, const char *key, const char *fmt, double v)
 {
 	char buf[64];
@@ -66,12 +96,13 @@ static int set(struct anvil_scene *sc, const char *key, const char *fmt, double 
 	return st;
 }
 
-static int make_scene(struct anvil_scene *sc, const struct scene_draw *d, enum anvil_accuracy acc)
+static int make_scene(struct anvil_scene *sc, const struct scene_draw *d, enum anvil_accuracy acc,
+		      const char *contact)
 {
 	struct anvil_err e;
 	anvil_scene_default(sc);
 	sc->accuracy = acc;
-	int st = set(sc, "impact.velocity", "%.6g m/s", d->V0) || set(sc, "impactor.mass", "%.6g kg", d->m);
+	int st = anvil_scene_set(sc, "effects.contact", contact, "test", 0, &e) || set(sc, "impact.velocity", "%.6g m/s", d->V0) || set(sc, "impactor.mass", "%.6g kg", d->m);
 	st = st || anvil_scene_set(sc, "impactor.material", mats[d->a], "test", 0, &e) ||
 	     anvil_scene_set(sc, "layer.material", mats[d->b], "test", 0, &e);
 	if (isinf(d->h_r0))
@@ -97,35 +128,47 @@ static int misses(const struct anvil_result *lo, const struct anvil_result *hi, 
 	       fabs(lo->Rf.val - hi->Rf.val) > tgt * fmax(fabs(hi->Rf.val), 0.1);
 }
 
-int main(void)
+/* One sample: n scenes drawn by draw, the layer (or half-space) row with
+ * the contact model named, at lo against hi; those the plan prices above
+ * cost_max at hi are left out (counted).  Asserts each output's coverage
+ * (>= 95 %; a failed lo row is a miss) and that no lo row missing its
+ * target is ANVIL_OK. */
+struct sample {
+	const char *name;
+	void (*draw)(struct scene_draw *);
+	int n;
+	enum anvil_accuracy lo, hi;
+	const char *contact;
+	double cost_max;
+	unsigned held; /* bit k: output k is held to 95 % (else its coverage is only shown) */
+};
+
+static void run_sample(struct anvil_solver *s, const struct sample *sp)
 {
-	gsl_set_error_handler_off();
-	struct anvil_solver *s = anvil_solver_alloc();
-	anvil_solver_set_cache_dir(s, NULL, NULL); /* in memory: nothing on disk */
 	int covered[NOUT] = { 0 }, n = 0, silent = 0, slow = 0;
 	double worst[NOUT] = { 0 };
-	for (int i = 0; i < NSCENE; i++) {
+	const char *lo_name = anvil_accuracy_name(sp->lo), *hi_name = anvil_accuracy_name(sp->hi);
+	for (int i = 0; i < sp->n; i++) {
 		struct scene_draw d;
 		struct anvil_scene sc;
 		struct anvil_result lo, hi;
 		struct anvil_err e;
-		draw(&d);
+		struct anvil_plan pl;
+		sp->draw(&d);
 		enum anvil_model m = isinf(d.h_r0) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
-		if (make_scene(&sc, &d, ANVIL_ACC_DRAFT))
+		if (make_scene(&sc, &d, sp->hi, sp->contact))
 			continue;
 		/* long contacts (thin, slow, heavy) cost minutes today (issue 11,
 		 * reach): the plan's predicted cost keeps the test short, and the
 		 * scenes it leaves out are counted */
-		struct anvil_plan pl;
-		make_scene(&sc, &d, ANVIL_ACC_NORMAL);
-		if (!scene_plan(&sc, &pl, &e) && pl.row[m].cost > COST_MAX) {
+		if (!scene_plan(&sc, &pl, &e) && pl.row[m].cost > sp->cost_max) {
 			slow++;
 			continue;
 		}
 		int sh = scene_run(s, &sc, m, 0, &hi, &e);
-		make_scene(&sc, &d, ANVIL_ACC_DRAFT);
+		make_scene(&sc, &d, sp->lo, sp->contact);
 		int sl = scene_run(s, &sc, m, 0, &lo, &e);
-		if (sl < 0 || sh < 0) { /* refused or failed: not an estimate to check */
+		if (sh < 0) { /* the truth refused or failed: nothing to check against */
 			anvil_result_free(&lo);
 			anvil_result_free(&hi);
 			continue;
@@ -137,26 +180,49 @@ int main(void)
 		for (int k = 0; k < NOUT; k++) {
 			double err = fabs(a[k]->val - b[k]->val), est = a[k]->err + b[k]->err;
 			double ratio = est > 0 ? err / est : (err > 0 ? INFINITY : 0);
-			covered[k] += err <= est;
-			if (ratio > 1)
-				diag("h %.4g r0, V0 %.4g m/s, m %.4g kg, %s on %s: %s error %.3e, estimate %.3e",
-				     d.h_r0, d.V0, d.m, mats[d.a], mats[d.b], names[k], err, est);
+			if (sl < 0)
+				ratio = INFINITY;
+			covered[k] += ratio <= 1;
+			if (!(ratio <= 1))
+				diag("%s: h %.4g r0, V0 %.4g m/s, m %.4g kg, %s on %s: %s error %.3e, estimate %.3e",
+				     sp->name, d.h_r0, d.V0, d.m, mats[d.a], mats[d.b], names[k], err, est);
 			worst[k] = fmax(worst[k], ratio);
 		}
-		if (sl == ANVIL_OK && misses(&lo, &hi, anvil_accuracy_target(ANVIL_ACC_DRAFT))) {
+		if (sl == ANVIL_OK && misses(&lo, &hi, anvil_accuracy_target(sp->lo))) {
 			silent++;
-			diag("h %.4g r0, V0 %.4g m/s: draft missed its target with ANVIL_OK", d.h_r0, d.V0);
+			diag("%s: h %.4g r0, V0 %.4g m/s: %s missed its target with ANVIL_OK", sp->name,
+			     d.h_r0, d.V0, lo_name);
 		}
 		anvil_result_free(&lo);
 		anvil_result_free(&hi);
 	}
-	diag("%d scenes left out by their planned cost", slow);
-	ok(n >= NSCENE / 2, "%d of %d scenes run at both levels", n, NSCENE);
+	diag("%s: %d scenes left out by their planned cost", sp->name, slow);
+	ok(n >= sp->n / 2, "%s: %d of %d scenes run at both levels", sp->name, n, sp->n);
 	for (int k = 0; k < NOUT; k++)
-		ok(n > 0 && covered[k] >= 0.95 * n,
-		   "%s: draft's estimate (plus normal's) covers |draft - normal| in %.1f %% of %d scenes (worst ratio %.2f)",
-		   names[k], n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
-	ok(silent == 0, "no draft row that misses its target is ANVIL_OK (%d did)", silent);
+		if (!(sp->held >> k & 1u))
+			diag("%s: %s's coverage of %s not held yet: %.1f %% of %d scenes (worst ratio %.2f)",
+			     sp->name, lo_name, names[k], n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
+		else
+			ok(n > 0 && covered[k] >= 0.95 * n,
+			   "%s: %s's estimate (plus %s's) covers |%s - %s| of %s in %.1f %% of %d scenes (worst ratio %.2f)",
+			   sp->name, lo_name, hi_name, lo_name, hi_name, names[k],
+			   n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
+	ok(silent == 0, "%s: no %s row that misses its target is ANVIL_OK (%d did)", sp->name,
+	   lo_name, silent);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	struct anvil_solver *s = anvil_solver_alloc();
+	anvil_solver_set_cache_dir(s, NULL, NULL); /* in memory: nothing on disk */
+	const struct sample grid = { "grid", draw, NSCENE, ANVIL_ACC_DRAFT, ANVIL_ACC_NORMAL,
+				     "auto", COST_MAX, 0x1f };
+	const struct sample longc = { "long contacts, paper's contact", draw_long, NLONG,
+				      ANVIL_ACC_NORMAL, ANVIL_ACC_REFERENCE, "paper", LONG_COST_MAX,
+				      LONG_HELD };
+	run_sample(s, &grid);
+	run_sample(s, &longc);
 	anvil_solver_free(s);
 	plan(tap_n);
 	return done_testing();

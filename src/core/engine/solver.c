@@ -213,6 +213,29 @@ static void add_model_error(struct anvil_result *r, const struct anvil_params *p
 	r->Ea.err += d * p->m1 * fmax(r->Vs.val * r->Vs.val, d * p->V0 * p->V0);
 }
 
+/* t_max is the arg-max of a flat peak: an error e(t) in the force, small
+ * as it is (P_max's estimate dP), moves it by much more than the time
+ * step.  Near the peak P = P_max - c (t - t_max)^2 / 2, c = |P''|; P + e
+ * peaks where c (t - t_max) = e', so an error of slope e' moves t_max by
+ * e'/c.  The slope is dP times the error's frequency: the layer
+ * correction's error (a band cut at omega) oscillates at the band's top,
+ * omega c2/r0 (band, 1/s; the twin's difference alone, at half of it, was
+ * 3-6 times too small on thick layers: issue 11); without the correction
+ * (band 0) the error is smooth on the pulse's own time scale T =
+ * sqrt(P_max / c) (the half-sine's t_s/pi).  Whatever its shape, an error
+ * |e| <= dP cannot move the peak beyond where P has fallen by 2 dP: the
+ * cap 2 sqrt(dP / c).  t_max's estimate is at least that shift, once every
+ * term of P_max's is in. */
+static void tmax_from_pmax(struct anvil_result *r, double band)
+{
+	double c = r->Pmax_curv, dP = r->Pmax.err;
+	if (!(c > 0) || !(dP > 0) || !(r->Pmax.val > 0))
+		return;
+	double rate = fmax(band, sqrt(c / r->Pmax.val)); /* 1/s */
+	double shift = fmin(dP * rate / c, 2.0 * sqrt(dP / c));
+	r->tmax.err = fmax(r->tmax.err, shift);
+}
+
 /* The accuracy target against the error estimates: P_max and t_s
  * relative, R_f relative to max(R_f, 0.1) (a nearly dead rebound has no
  * meaningful relative error).  ANVIL_WTOL (a warning: the values stand)
@@ -287,7 +310,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
  * estimate when it is used. */
 static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		     const struct anvil_wave_job *j, int method, size_t nhist,
-		     struct anvil_result *r, int *used_corr, struct anvil_err *err)
+		     struct anvil_result *r, int *used_corr, double *band, struct anvil_err *err)
 {
 	struct waves wv = { .pb = pb, .job = j };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
@@ -309,6 +332,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		wv.io.nhist = nhist;
 		st = waves_impact(s, &wv, omega, idx, 0, r, err);
 		*used_corr = wv.rs.corr != NULL;
+		*band = *used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
 		if (st || !wv.rs.corr)
 			break;
 		struct anvil_result coarse;
@@ -559,6 +583,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	}
 	if (row->model_err > 0) /* the layer's reflections left out (plan.c) */
 		add_model_error(r, p, row->model_err);
+	tmax_from_pmax(r, corr ? anvil_cache_grid(ld.omega_idx) * p->c2 / p->r0 : 0.0);
 	if (corr)
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the layer's remainder with the true contact radius (a_max = %.3g mm), reflections from 2h/c1 = %.3g us",
@@ -586,7 +611,8 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 	int corr = 0;
 	if (row.contact == ANVIL_CONTACT_PHYSICAL)
 		return run_physical(s, pl, planned, nhist, r, err);
-	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
+	double band = 0;
+	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
 	if (!st && row.fallback && !(r->ts.val < 2.0 * p->h / p->c1)) {
@@ -595,12 +621,13 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		row.exact = 1;
 		row.model_err = 0;
 		row.job = row.fallback_job;
-		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, err);
+		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, err);
 	}
 	if (st)
 		return st;
 	if (!row.exact && row.why != ANVIL_WHY_FORCED)
 		add_model_error(r, p, row.model_err);
+	tmax_from_pmax(r, band);
 	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h)) {
 		/* Zener's plate parameter has no meaning for a half-space */
 		r->lambda_star = 0.0;

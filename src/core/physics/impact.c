@@ -27,6 +27,7 @@ struct pass {
 	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
 	double ts, tmax, Pmax, Vs;
 	double tmax_ie;  /* the peak interpolation's own error (peak) */
+	double curv;     /* |P''| at the peak (N/s^2, peak), 0 when unknown */
 	/* repeated contacts: the count, each one's start and end (s) */
 	size_t ncont;
 	double on[ANVIL_MAX_CONTACTS], off[ANVIL_MAX_CONTACTS];
@@ -200,12 +201,14 @@ static void peak(struct pass *s)
 	s->tmax = (double)k * s->dt;
 	s->Pmax = s->P[k];
 	s->tmax_ie = s->dt;
+	s->curv = 0;
 	if (k == 0 || k + 1 >= s->n)
 		return;
 	double a = s->P[k - 1], b = s->P[k], c = s->P[k + 1];
 	double den = a - 2.0 * b + c;
 	if (den < 0) {
 		double x = 0.5 * (a - c) / den, xc;
+		s->curv = -den / (s->dt * s->dt);
 		s->tmax = ((double)k + x) * s->dt;
 		s->Pmax = b - 0.25 * (a - c) * x;
 		/* the fourth node on the vertex's side, else the other */
@@ -796,6 +799,7 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 	r->Ea.err = ea_err(p, r);
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
+	r->Pmax_curv = b->curv > 0 ? b->curv : a->curv;
 	fill_contacts(r, p, a, b);
 }
 

@@ -34,6 +34,10 @@ struct anvil_result {
 	struct anvil_val Pmax;     /* peak force, N */
 	struct anvil_val Vs, Rf, Ea; /* rebound speed m/s, restitution, absorbed energy J */
 	double lambda_star, Rf_star; /* Zener's parameter for this scene */
+	/* |P''| at the peak, N/s^2 (a wave run's, from the finer pass's
+	 * parabola through the largest sample; 0 when not known): how far an
+	 * error in P(t) can move t_max (solver.c) */
+	double Pmax_curv;
 	/* Repeated contacts (impact.h): how many (1 for a single impact, 0
 	 * when not computed), the start and end of the first
 	 * ANVIL_MAX_CONTACTS, s.  t_s is the end of the last; V_s, R_f, E_a
