@@ -10,7 +10,8 @@
  *  - a slowly applied load on a half-space approaches Johnson's static
  *    stresses on the axis; a short pulse's first motion at depth z on the
  *    axis arrives at z/c1;
- *  - the yield check; the accuracy levels against each other; every error
+ *  - the yield check, the true contact's peak search against the
+ *    exhaustive one and Huber's closed form; the accuracy levels against each other; every error
  *    status. */
 #include <complex.h>
 #include <math.h>
@@ -449,6 +450,46 @@ static void test_yield_halfspace(void)
 	impact_free(&m);
 }
 
+/* The true contact's peak search (anvil_field_peak: the contact first,
+ * the rest bounded) against the exhaustive one: where the contact's peak
+ * is the larger, the same point and value (the bound below it); else
+ * within the sum of their error estimates.  On the half-space the peak is
+ * Huber's closed form at the peak force, 0.620 p0 at 0.481 a (nu = 0.3,
+ * hertz_field.h), within the dynamic remainder (about 1 %: VM_TOL of
+ * test_verdict.c). */
+static void test_peak_search(const char *thick)
+{
+	struct impact m;
+	struct anvil_field_peak fast, ex;
+	if (impact_make(&m, thick, "normal")) {
+		ok(0, "h = %s: the impact with a history", thick);
+		return;
+	}
+	anvil_field_set_contact(m.f, 1);
+	int st = anvil_field_peak(m.f, 0, &fast, NULL);
+	int st2 = anvil_field_peak_exhaustive(m.f, 0, &ex, NULL);
+	double tol = fast.vm_err + ex.vm_err;
+	ok(!st && !st2 && fabs(fast.vm - ex.vm) <= tol,
+	   "h = %s: fast peak %.6g MPa (+- %.2g) at r = %.3g mm, z = %.4g mm, t = %.4g us; exhaustive %.6g (+- %.2g) at %.3g, %.4g mm, %.4g us",
+	   thick, fast.vm * 1e-6, fast.vm_err * 1e-6, fast.r * 1e3, fast.z * 1e3, fast.t * 1e6,
+	   ex.vm * 1e-6, ex.vm_err * 1e-6, ex.r * 1e3, ex.z * 1e3, ex.t * 1e6);
+	ok(isfinite(fast.elsewhere) && isnan(ex.elsewhere),
+	   "  the bound elsewhere %.4g MPa is reported (%s the contact's peak)",
+	   fast.elsewhere * 1e-6, fast.elsewhere <= fast.vm ? "below" : "above");
+	if (fast.elsewhere <= fast.vm)
+		ok(fast.vm == ex.vm && fast.r == ex.r && fast.z == ex.z && fast.t == ex.t,
+		   "  below it: the exhaustive search's own point");
+	if (isinf(m.h)) {
+		double P = m.r.Pmax.val, Es = anvil_field_contact_radius(m.f, 1.0);
+		double a = Es * cbrt(P), p0 = 1.5 * P / (M_PI * a * a);
+		ok(fabs(fast.vm / p0 - 0.620041) < 0.015 * 0.620041 &&
+		   fabs(fast.z / a - 0.480864) < 2.0 / 16 / 6 && fast.r <= 0.1 * a,
+		   "  half-space: %.4f p0 at %.4f a (Huber: 0.6200 at 0.4809)", fast.vm / p0,
+		   fast.z / a);
+	}
+	impact_free(&m);
+}
+
 /* normal against reference at a few points: within both estimates */
 static void test_levels(struct impact *m)
 {
@@ -556,6 +597,10 @@ int main(void)
 		ok(0, "the paper's impact with a history");
 	}
 	test_yield_halfspace();
+	test_peak_search("inf");
+	test_peak_search("1r0");
+	test_peak_search("0.5r0");
+	test_peak_search("0.35r0");
 	test_slow_load();
 	first_motion("inf", 4);
 	first_motion("5r0", 2);

@@ -158,15 +158,39 @@ struct anvil_field_peak {
 	double r, z, t;    /* where and when: m, m, s */
 	double yield;      /* the layer's yield stress, Pa; 0: unknown */
 	int exceeded;      /* 1 when yield > 0 and vm > yield */
+	double elsewhere;  /* true contact: the bound on von Mises over the whole
+			    * layer and load (the global pass's largest value plus
+			    * its error estimate), Pa; NaN for the exhaustive search */
 };
 
 /* Search r in [0, 3 r0], z in [0, h] (half-space: [0, 3 r0]), t in
- * (0, end of the load]: a coarse space-time grid (with the true contact,
- * and one over the top 2 a around the peak force), then a finer one around
- * its maximum.  yield (Pa, 0 = unknown) is copied into pk for the verdict.
- * Statuses as anvil_field_map. */
+ * (0, end of the load].  yield (Pa, 0 = unknown) is copied into pk for the
+ * verdict.  Statuses as anvil_field_map.
+ *
+ * The paper's patch: anvil_field_peak_exhaustive.  The true contact
+ * (anvil_field_set_contact), whose peak is at the contact: a grid over
+ * the top 2 a around the peak force, refined at the field's settings; then
+ * a coarse grid over the whole layer and load at draft settings with at
+ * most 128 Durbin terms at normal (64 draft, 256 fine, 512 reference),
+ * whose largest von Mises plus error estimate is pk->elsewhere.  When that
+ * bound is at most the contact's peak, nothing else can beat it and the
+ * search stops (the common case: it costs the contact's instants, not the
+ * whole load's); else the coarse grid's best point is refined as well and
+ * the larger peak kept.  Against the exhaustive search: the same point
+ * when the contact's peak is the larger (the same bits at loads under the
+ * cap), and within the sum of the two error estimates otherwise
+ * (tests/test_field.c). */
 int anvil_field_peak(struct anvil_field *f, double yield,
 		     struct anvil_field_peak *pk, struct anvil_err *err);
+
+/* The exhaustive search: the coarse grid over the whole layer and load at
+ * draft settings (no cap), with the true contact the grid over its top
+ * 2 a, then a finer grid one coarse cell around the best point at the
+ * field's own settings, whose best point is the answer.  Its cost grows
+ * like the square of the load's length (h = 0.35 r0: 11 s).  Statuses as
+ * anvil_field_peak. */
+int anvil_field_peak_exhaustive(struct anvil_field *f, double yield,
+				struct anvil_field_peak *pk, struct anvil_err *err);
 
 /* The yield check as one call (run the impact, make its field, find the
  * peak) is the engine's: anvil_solver_yield in solver.h. */
