@@ -7,7 +7,7 @@
 . "$top_srcdir/tests/setup.sh"
 
 M=-mhertz,zener
-HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	contact'
+HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	reach_P_m	reach_bending_m	contact'
 
 # Conditions that take more than one command.
 lines() { wc -l <"$1" | tr -d ' '; }
@@ -48,8 +48,8 @@ check_exit 1 'missing scene file exits 1' "$ANVIL" run "$M" "$tmp/no-such.scene"
 check 'run -f tsv exits 0' "$ANVIL" run "$M" -f tsv
 assert 'tsv header is exactly the documented columns' [ "$(head -n 1 "$tmp/out")" = "$HEADER" ]
 assert 'one row per model, in order' [ "$(column1 "$tmp/out")" = 'model hertz zener ' ]
-assert 'tsv rows have 19 fields' \
-	awk -F '\t' 'NF != 19 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
+assert 'tsv rows have 21 fields' \
+	awk -F '\t' 'NF != 21 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
 assert 'hertz: t_s = 3.21807 T = 39.51 us, R_f = 1' \
 	awk -F '\t' 'NR == 2 { exit !($4 > 39.4 && $4 < 39.6 && $8 == 1) }' "$tmp/out"
 
@@ -61,8 +61,8 @@ assert 'h_r0 is inf for a half-space' awk -F '\t' 'NR == 2 { exit $2 != "inf" }'
 
 check 'run -f csv exits 0' "$ANVIL" run "$M" -f csv
 assert 'csv header' [ "$(head -n 1 "$tmp/out")" = "$(printf '%s' "$HEADER" | tr '\t' ',')" ]
-assert 'csv: 3 lines of 19 fields' \
-	awk -F , 'NF != 19 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
+assert 'csv: 3 lines of 21 fields' \
+	awk -F , 'NF != 21 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
 
 check 'run -f json exits 0' "$ANVIL" run "$M" -f json
 if command -v python3 >/dev/null 2>&1; then
@@ -330,5 +330,23 @@ assert 'a refused layer row, table: its note says why' grep -q '^layer: not comp
 check_exit 1 'a refused layer row, json: exit 1' run_tsv -f json
 assert 'a refused layer row, json: status failed' grep -q '"status": "failed"' "$tmp/out"
 assert 'a refused layer row, json: the others ok' [ "$(grep -c '"status": "ok"' "$tmp/out")" -ge 2 ]
+
+# ---- the reach of the layer's motion during the contact (result.h) ----
+check 'run -m hertz,zener -f tsv (reach)' "$ANVIL" run -m hertz,zener -s solver.accuracy=draft -f tsv
+assert 'hertz has no reach; zener: c1 t_s and 2 sqrt(beta t_s) for the steel layer' \
+	awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+		$1 == "hertz" { bad += $c["reach_P_m"] != "nan" }
+		$1 == "zener" { t = $c["ts_us"] * 1e-6; c1 = sqrt(209e9 * 0.7 / (7830 * 1.3 * 0.4));
+			beta = 0.004 * sqrt(209e9 / (12 * 7830 * (1 - 0.09)));
+			d1 = $c["reach_P_m"] / (c1 * t) - 1; d2 = $c["reach_bending_m"] / (2 * sqrt(beta * t)) - 1;
+			bad += d1 * d1 > 1e-4 || d2 * d2 > 1e-4 }
+		END { exit bad }' "$tmp/out"
+check 'the paper case (bending over 8.6 h): no reach warning' "$ANVIL" run -m zener -s solver.accuracy=draft
+assert '...none' sh -c '! grep -q "bending spreads" "$1"' sh "$tmp/err"
+assert '...the table says the reach below the notes' grep -q '^reach (zener, t_s = ' "$tmp/out"
+check 'a 500 g rod on a 1 mm plate' "$ANVIL" run -m zener -s impactor.mass=500g -s layer.thickness=1mm -s impact.velocity=1m/s
+assert '...warns that the bending spreads far beyond h' grep -q 'warning: zener: during the .* contact the bending spreads over .* h): the result is an unbounded layer' "$tmp/err"
+check '...and -q silences it' "$ANVIL" run -q -m zener -s impactor.mass=500g -s layer.thickness=1mm -s impact.velocity=1m/s
+assert '...nothing on stderr' [ ! -s "$tmp/err" ]
 
 done_testing

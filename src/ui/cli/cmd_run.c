@@ -336,11 +336,13 @@ static void run_reach(const struct anvil_scene *sc, const struct anvil_result *r
 	double h = anvil_scene_h(sc);
 	if (o->quiet || !r || !(r->reach_bend > RUN_REACH_WARN * h))
 		return;
-	cli_error("warning: %s: during the %.3g us contact the bending spreads over %.3g mm "
-		  "(%.3g h): the result is an unbounded layer's; a plate narrower than %.3g mm, or "
-		  "supported within %.3g mm of the impact, answers otherwise",
-		  anvil_model_name(r->model), r->ts.val * 1e6, r->reach_bend * 1e3,
-		  r->reach_bend / h, 2e3 * r->reach_bend, r->reach_bend * 1e3);
+	char ts[24], lb[24], l2[24];
+	cli_error("warning: %s: during the %s contact the bending spreads over %s (%.3g h): the "
+		  "result is an unbounded layer's; a plate narrower than %s, or supported within %s "
+		  "of the impact, answers otherwise",
+		  anvil_model_name(r->model), out_duration(ts, sizeof ts, r->ts.val),
+		  out_length(lb, sizeof lb, r->reach_bend), r->reach_bend / h,
+		  out_length(l2, sizeof l2, 2.0 * r->reach_bend), lb);
 }
 
 /* The scene's [output] for what the command line leaves unset. */

@@ -438,9 +438,9 @@ static void machine_header(struct out_grid *g)
 			out_grid_cell(g, "%s", columns[i].err_name);
 	out_grid_cell(g, "contacts");
 	out_grid_cell(g, "time_s");
-	out_grid_cell(g, "contact");
 	out_grid_cell(g, "reach_P_m");
 	out_grid_cell(g, "reach_bending_m");
+	out_grid_cell(g, "contact");
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -457,9 +457,9 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 			out_grid_cell(g, "%s", out_num(b, error(r, &columns[i]), NULL));
 	out_grid_cell(g, "%s", out_num(b, contacts(r), NULL));
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
-	out_grid_cell(g, "%s", contact_of(r));
 	out_grid_cell(g, "%s", out_num(b, r->reach_p, NULL));
 	out_grid_cell(g, "%s", out_num(b, r->reach_bend, NULL));
+	out_grid_cell(g, "%s", contact_of(r));
 }
 
 static void table_header(struct out_grid *g)
@@ -490,6 +490,24 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", out_num(b, r->seconds, "%.3g"));
 }
 
+const char *out_length(char *buf, size_t n, double m)
+{
+	if (fabs(m) >= 1.0)
+		snprintf(buf, n, "%.3g m", m);
+	else
+		snprintf(buf, n, "%.3g mm", m * 1e3);
+	return buf;
+}
+
+const char *out_duration(char *buf, size_t n, double s)
+{
+	if (fabs(s) >= 1e-2)
+		snprintf(buf, n, "%.4g ms", s * 1e3);
+	else
+		snprintf(buf, n, "%.4g us", s * 1e6);
+	return buf;
+}
+
 /* The longest reach (result.h) of the rows: the layer's, else Zener's;
  * NULL when no row has one. */
 const struct anvil_result *out_reach_row(const struct anvil_result *res, int n)
@@ -511,12 +529,13 @@ static void table_reach(FILE *f, const struct anvil_scene *sc, const struct anvi
 	if (!r)
 		return;
 	double h = anvil_scene_h(sc);
-	char b[40];
-	fprintf(f, "reach (%s, t_s = %.4g us): the P wave runs %.3g mm, the bending spreads over "
-		"%.3g mm (%.3g h): the layer is unbounded here; a plate narrower than %.3g mm, or "
-		"supported within %.3g mm, answers otherwise\n",
-		row_name(r, b, sizeof b), r->ts.val * 1e6, r->reach_p * 1e3, r->reach_bend * 1e3,
-		r->reach_bend / h, 2e3 * r->reach_bend, r->reach_bend * 1e3);
+	char b[40], ts[24], lp[24], lb[24], l2[24];
+	fprintf(f, "reach (%s, t_s = %s): the P wave runs %s, the bending spreads over %s (%.3g h): "
+		"the layer is unbounded here; a plate narrower than %s, or supported within %s, "
+		"answers otherwise\n",
+		row_name(r, b, sizeof b), out_duration(ts, sizeof ts, r->ts.val),
+		out_length(lp, sizeof lp, r->reach_p), out_length(lb, sizeof lb, r->reach_bend),
+		r->reach_bend / h, out_length(l2, sizeof l2, 2.0 * r->reach_bend), lb);
 }
 
 /* What the table shows below the rows, after the models' notes: the
@@ -538,8 +557,8 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 			const struct anvil_result *res, int n)
 {
 	/* model, h_r0, V0 and contact (not in the table: the row name says it),
-	 * values, errors, contacts, seconds */
-	/* (and the reach, in the table a line below) */
+	 * values, errors, contacts, seconds, the reach (in the table a line
+	 * below) */
 	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 + 2 - 4 * (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)

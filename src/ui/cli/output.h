@@ -91,6 +91,10 @@ void out_json_string(FILE *f, const char *s);
  * (the table shows errors as a "±" column beside each value, and the
  * models' notes and the scene's title below it; JSON wraps the rows with a
  * summary of the scene).  Returns ANVIL_OK, ANVIL_ENOMEM or ANVIL_EIO. */
+/* A length in m as "12.3 mm" below 1 m, else "1.23 m"; a duration in s
+ * as "46.93 us" below 10 ms, else "16.45 ms".  Return buf. */
+const char *out_length(char *buf, size_t n, double m);
+const char *out_duration(char *buf, size_t n, double s);
 /* The row whose reach (result.h) the output reports: the layer's, else
  * Zener's; NULL when none has one. */
 const struct anvil_result *out_reach_row(const struct anvil_result *res, int n);
