@@ -26,11 +26,12 @@ static void judge(struct anvil_verdict *v)
 		v->fate = v->brittle ? ANVIL_HERTZ_CRACKS : ANVIL_HERTZ_YIELDS;
 }
 
-/* Quasi-static Hertz at its peak: alpha_max = (5/4)^(2/5) T V0, t_s/2. */
-static int quasi_static(const struct anvil_problem *pb, struct anvil_verdict *v)
+/* Quasi-static Hertz under force P at time t: alpha = (P/K)^(2/3),
+ * a = sqrt(r0 alpha). */
+static int hertz_at(const struct anvil_problem *pb, double P, double t, struct anvil_verdict *v)
 {
 	const struct anvil_params *p = &pb->p;
-	double al = anvil_hertz_alpha_max() * p->T * p->V0, P = p->K * pow(al, 1.5);
+	double al = pow(P / p->K, 2.0 / 3.0);
 	double a = sqrt(p->r0 * al), p0 = 1.5 * P / (M_PI * a * a);
 	struct anvil_hertz_verdict hv;
 	int st = anvil_hertz_judge(a, p0, p->nu, NAN, NAN, &hv);
@@ -38,12 +39,20 @@ static int quasi_static(const struct anvil_problem *pb, struct anvil_verdict *v)
 		return st;
 	v->a = a;
 	v->p0 = p0;
-	v->t = 0.5 * anvil_hertz_tau_s() * p->T;
+	v->t = t;
 	v->r = v->brittle ? a : 0;
 	v->z = v->brittle ? 0 : hv.z_vm;
 	v->stress = v->brittle ? hv.tension : hv.vm;
 	v->err = 1e-10 * v->stress;
 	return ANVIL_OK;
+}
+
+/* Quasi-static Hertz at its peak: alpha_max = (5/4)^(2/5) T V0, t_s/2. */
+static int quasi_static(const struct anvil_problem *pb, struct anvil_verdict *v)
+{
+	const struct anvil_params *p = &pb->p;
+	double al = anvil_hertz_alpha_max() * p->T * p->V0;
+	return hertz_at(pb, p->K * pow(al, 1.5), 0.5 * anvil_hertz_tau_s() * p->T, v);
 }
 
 /* The impactor under the layer's contact (a, p0): the Hertz field with
@@ -95,6 +104,16 @@ static int edge_tension(struct anvil_field *f, const struct anvil_field_peak *pk
 	}
 	v->z = 0;
 	return st;
+}
+
+int anvil_verdict_at(const struct anvil_problem *pb, double P, double t, struct anvil_verdict *v)
+{
+	criterion(pb, v);
+	if (!(P > 0) || !isfinite(P))
+		return ANVIL_EINVAL;
+	int st = hertz_at(pb, P, t, v);
+	judge(v);
+	return st ? st : impactor(pb, v);
 }
 
 int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
@@ -158,10 +177,14 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 			 v->a > 0 ? v->z / v->a : 0, v->z * 1e3);
 	else
 		snprintf(where, sizeof where, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
+	char qs[160] = " (quasi-static Hertz)";
+	if (v->qs_ratio > 0)
+		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max: the contact "
+			 "lasts %.2g times 2h/c1; the plate's bending stress not checked)", v->qs_ratio);
 	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s", v->material, what,
 		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
 		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
-		 v->dynamic ? "" : " (quasi-static Hertz)",
+		 v->dynamic ? "" : qs,
 		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "");
 }
 
