@@ -112,6 +112,7 @@ int anvil_verdict_at(const struct anvil_problem *pb, double P, double t, struct 
 	if (!(P > 0) || !isfinite(P))
 		return ANVIL_EINVAL;
 	int st = hertz_at(pb, P, t, v);
+	v->at_row = 1;
 	judge(v);
 	return st ? st : impactor(pb, v);
 }
@@ -178,6 +179,8 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 	else
 		snprintf(where, sizeof where, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
 	char qs[160] = " (quasi-static Hertz)";
+	if (v->at_row)
+		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max)");
 	if (v->qs_ratio > 0)
 		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max: the contact "
 			 "lasts %.2g times 2h/c1; the plate's bending stress not checked)", v->qs_ratio);

@@ -52,6 +52,7 @@ struct anvil_verdict {
 	int known;     /* 0: the layer's Y (brittle: tensile strength) unknown: not judged */
 	int brittle;   /* the criterion: 1 edge tension, 0 von Mises */
 	int dynamic;   /* 1: from an impact's field, 0: quasi-static Hertz */
+	int at_row;    /* 1: quasi-static Hertz at a computed row's peak force (anvil_verdict_at) */
 	double qs_ratio; /* > 0: quasi-static Hertz at the layer row's computed peak
 			    force, the contact this many times 2h/c1 (anvil_solver_verdict) */
 	char material[ANVIL_NAME_MAX]; /* the layer's */

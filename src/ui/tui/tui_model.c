@@ -178,7 +178,17 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
 	}
 	if (!m->have_plan || m->plan_gen != m->gen)
 		return -1;
+	/* The plan's is quasi-static Hertz at the rigid anvil's force; once the
+	 * layer (else half-space) row is in, quasi-static Hertz at its own
+	 * computed peak force: on a thin plate that force is a fraction of
+	 * the rigid anvil's (the CLI's run searches the field instead). */
+	struct anvil_verdict at;
 	const struct anvil_verdict *v = &m->plan.verdict;
+	const struct tui_row *r = isfinite(m->plan.pb.p.h) ? &m->rows[ANVIL_MODEL_LAYER]
+							   : &m->rows[ANVIL_MODEL_HALFSPACE];
+	if (r->state == TUI_ROW_DONE && r->have &&
+	    anvil_verdict_at(&m->plan.pb, r->res.Pmax.val, r->res.tmax.val, &at) == ANVIL_OK)
+		v = &at;
 	anvil_verdict_text(v, layer, n);
 	if (v->imp.fate != ANVIL_HERTZ_ELASTIC)
 		anvil_verdict_impactor_text(v, imp, n);
