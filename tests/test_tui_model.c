@@ -519,6 +519,33 @@ static void deliver_layer(struct tui_model *m, struct anvil_solver *s)
 	tui_model_deliver(m, m->gen, ANVIL_MODEL_LAYER, st, e.msg, &r);
 }
 
+/* The verdict once the layer row is in: quasi-static Hertz at its own
+ * P_max, not the rigid anvil's (a 1 mm plate takes a twelfth of it). */
+static void test_verdict_at_row(void)
+{
+	char lay[320], imp[320], before[320];
+	struct tui_model *m = fresh();
+	struct anvil_solver *s = anvil_solver_alloc();
+	anvil_solver_set_cache_dir(s, NULL, NULL);
+	type(m, ":layer.thickness=1mm\n");
+	type(m, ":solver.accuracy=draft\n");
+	m->sc.models = 1u << ANVIL_MODEL_LAYER;
+	give_plan(m);
+	tui_model_verdict(m, before, imp, sizeof before);
+	deliver_layer(m, s);
+	tui_model_verdict(m, lay, imp, sizeof lay);
+	struct anvil_verdict v;
+	const struct anvil_result *r = &m->rows[ANVIL_MODEL_LAYER].res;
+	ok(anvil_verdict_at(&m->plan.pb, r->Pmax.val, r->tmax.val, &v) == ANVIL_OK &&
+		   v.stress < m->plan.verdict.stress, "the row's P_max (%.4g kN) gives a lower stress",
+	   r->Pmax.val * 1e-3);
+	ok(strstr(lay, "at the layer's computed P_max") && strcmp(lay, before),
+	   "the line says so: %s (was: %s)", lay, before);
+	anvil_solver_free(s);
+	tui_model_free(m);
+	memset(m, 0, sizeof *m);
+}
+
 /* Issue 15: [effects] is part of a result's key (the engine's), so a
  * change of effects.waves through the model gives new rows, not the old
  * layer rows from the TUI's cache. */
@@ -552,7 +579,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(131);
+	plan(133);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
@@ -566,6 +593,7 @@ int main(void)
 	test_keys();
 	test_geometry();
 	test_verdict_mark();
+	test_verdict_at_row();
 	test_models_toggle();
 	test_generations();
 	test_effects_key();
