@@ -529,6 +529,7 @@ static void test_verdict_at_row(void)
 	anvil_solver_set_cache_dir(s, NULL, NULL);
 	type(m, ":layer.thickness=1mm\n");
 	type(m, ":solver.accuracy=draft\n");
+	type(m, ":effects.contact=physical\n"); /* the paper's chatters there for 47 s */
 	m->sc.models = 1u << ANVIL_MODEL_LAYER;
 	give_plan(m);
 	tui_model_verdict(m, before, imp, sizeof before);
