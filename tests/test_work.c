@@ -13,7 +13,9 @@
  * ANVIL_TEST_N and ANVIL_TEST_EMAX widen the run, ANVIL_TEST_DUMP prints
  * every pair); the others are run with effects.waves = layer, so every
  * scene with a reflection inside its window counts, and with the paper's
- * contact, whose r0-patch response (and twin) is what the planner prices. */
+ * contact, whose r0-patch response (and twin) is what the planner prices.
+ * A second sample does the same for the physical contact's row (its four
+ * corrections, anvil_plan_phys_evals) against the solver's own count. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -63,9 +65,82 @@ static int sample_scene(unsigned long long *seed, struct anvil_scene *sc, char *
 	return 0;
 }
 
+/* The physical contact's row: the planner's four corrections
+ * (anvil_plan_phys_evals) against the evaluations the solver makes for the
+ * row (its main run and error-estimate runs), each scene on a fresh
+ * solver with the cache in memory only.  Of PHYS_N scenes drawn (h/r0
+ * 0.3-9, V0 0.3-30 m/s, m 3 g-0.3 kg, the material pairs, draft and
+ * normal), those predicted above PHYS_EVALS_MAX are left out (time). */
+#define PHYS_N 40
+#define PHYS_EVALS_MAX 4.0e5
+static void physical_sample(void)
+{
+	unsigned long long seed = 11;
+	int tried = 0, within = 0;
+	double lo = 1, hi = 1;
+	char worst[300] = "";
+	for (int i = 0; i < PHYS_N; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		struct anvil_err e;
+		char what[200], h[32], v[32], m[32];
+		double hh = exp(log(0.3) + uniform(&seed) * log(30.0));
+		double v0 = exp(log(0.3) + uniform(&seed) * log(100.0));
+		double m1 = exp(log(3e-3) + uniform(&seed) * log(100.0));
+		const char *mi = materials[(int)(uniform(&seed) * 7)];
+		const char *ml = materials[(int)(uniform(&seed) * 7)];
+		const char *lv = levels[(int)(uniform(&seed) * 2)];
+		snprintf(h, sizeof h, "%.4gr0", hh);
+		snprintf(v, sizeof v, "%.4g m/s", v0);
+		snprintf(m, sizeof m, "%.4g kg", m1);
+		snprintf(what, sizeof what, "%s on %s, h %s, V0 %s, m %s, %s", mi, ml, h, v, m, lv);
+		anvil_scene_default(&sc);
+		const char *kv[] = { "layer.thickness", h, "impact.velocity", v, "impactor.mass", m,
+				     "impactor.material", mi, "layer.material", ml, "solver.accuracy", lv,
+				     "effects.waves", "layer", "effects.contact", "physical", NULL };
+		int bad = 0;
+		for (int k = 0; kv[k]; k += 2)
+			bad |= anvil_scene_set(&sc, kv[k], kv[k + 1], "test", 0, &e);
+		if (bad || scene_plan(&sc, &pl, &e))
+			continue;
+		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+		enum anvil_cache_where where;
+		double pred = anvil_plan_phys_evals(&r->job, pl.pb.p.nu, pl.pb.accuracy, NULL, &where);
+		if (r->status || r->method != ANVIL_METHOD_LAYER ||
+		    !anvil_wave_needs_corr(&pl.pb.p, &r->job, anvil_wave_window(&r->job, 0)) ||
+		    !(pred <= PHYS_EVALS_MAX))
+			continue;
+		struct anvil_solver *s = anvil_solver_alloc();
+		struct anvil_result res;
+		struct anvil_solver_stats ss;
+		anvil_solver_set_cache_dir(s, NULL, NULL);
+		int st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &res, &e);
+		anvil_solver_stats(s, &ss);
+		anvil_result_free(&res);
+		anvil_solver_free(s);
+		if (st < 0 || !ss.layer_evals) {
+			diag("%s: %s", what, e.msg);
+			continue;
+		}
+		double q = pred / (double)ss.layer_evals;
+		tried++;
+		within += q >= 0.5 && q <= 2.0;
+		if (q < lo || q > hi)
+			snprintf(worst, sizeof worst, "%s: predicted %.0f, did %zu", what, pred,
+				 ss.layer_evals);
+		lo = fmin(lo, q);
+		hi = fmax(hi, q);
+	}
+	diag("physical contact: %d rows computed; predicted/actual evaluations %.2f-%.2f; worst: %s",
+	     tried, lo, hi, worst);
+	ok(tried >= 15 && within == tried,
+	   "the physical row's corrections priced within 2x of the solver's evaluations on %d of %d",
+	   within, tried);
+}
+
 int main(void)
 {
-	plan(2);
+	plan(3);
 	unsigned long long seed = 7; /* not the fit's (plan.c: refine) */
 	int tried = 0, within = 0, skipped = 0;
 	double worst_lo = 1, worst_hi = 1, hmin = INFINITY, hmax = 0;
@@ -124,5 +199,6 @@ int main(void)
 	ok(tried >= 80, "at least 80 layer responses in the sample (%d)", tried);
 	ok(within == tried, "the planner's kernel evaluations within 2x of green.c's on %d of %d",
 	   within, tried);
+	physical_sample();
 	return done_testing();
 }

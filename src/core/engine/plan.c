@@ -590,30 +590,38 @@ static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j
  * already in the cache cost nothing. */
 #define PHYS_EVAL_F 1.3
 #define PHYS_RUNS 3.0
-static double physical_cost(const struct est *e, const struct anvil_cache *cache, double patch,
-			    enum anvil_cache_where *where)
+double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			     const struct anvil_cache *cache, enum anvil_cache_where *where)
 {
-	const struct anvil_params *p = &e->p;
-	const struct anvil_wave_job *j = &e->lay;
 	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
-	double tq = anvil_cache_grid(tau_idx), evals = 0;
+	double tq = anvil_cache_grid(tau_idx), evals = 0, xr;
 	struct { int omega_idx; double patch; } load[4] = {
-		{ j->omega_idx, 0.0 }, { j->omega_idx, patch },
-		{ j->omega_idx, anvil_plan_patch_below(patch) },
+		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
+		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
 		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
 	*where = ANVIL_CACHE_MEMORY;
+	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
+		return NAN;
 	for (int i = 0; i < 4; i++) {
-		struct anvil_cache_key key = { j->hh, p->nu, e->pb->accuracy, load[i].omega_idx, tau_idx,
-					       0, ANVIL_CACHE_LOAD_PATCH, load[i].patch };
+		struct anvil_cache_key key = { j->hh, nu, acc, load[i].omega_idx, tau_idx, 0,
+					       ANVIL_CACHE_LOAD_PATCH, load[i].patch };
 		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
 		if (w == ANVIL_CACHE_NONE)
-			evals += PHYS_EVAL_F * corr_evals(j->hh, p->nu, p->cR / p->c2,
-							  anvil_cache_grid(load[i].omega_idx), tq,
-							  e->pb->accuracy);
+			evals += PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr),
+							  anvil_cache_grid(load[i].omega_idx), tq, acc);
 		if (w == ANVIL_CACHE_NONE || (w == ANVIL_CACHE_DISK && *where == ANVIL_CACHE_MEMORY))
 			*where = w;
 	}
-	return COST_HALFSPACE + evals * COST_EVAL + PHYS_RUNS * impact_cost(e->window_lay, j->dt, 1);
+	return evals;
+}
+
+static double physical_cost(const struct est *e, const struct anvil_cache *cache, double patch,
+			    enum anvil_cache_where *where)
+{
+	struct anvil_wave_job j = e->lay;
+	j.patch = patch;
+	double evals = anvil_plan_phys_evals(&j, e->p.nu, e->pb->accuracy, cache, where);
+	return COST_HALFSPACE + evals * COST_EVAL + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1);
 }
 
 /* The layer row: what the full model costs, and whether it needs the

@@ -329,6 +329,13 @@ double anvil_plan_inversion_window(double hh, double tau_end);
  * model prices (tests/test_work.c holds it to the real count within 2x). */
 double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
 			     enum anvil_accuracy acc);
+/* The same for the physical contact's layer row (its four corrections:
+ * plan.c physical_cost) of the row's job j, patch j->patch, Poisson ratio
+ * nu, at level acc, those found in cache (may be NULL) left out; *where
+ * says where the responses are (NONE when any is to be made).
+ * tests/test_work.c holds it to the solver's count within 2x. */
+double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			     const struct anvil_cache *cache, enum anvil_cache_where *where);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);
