@@ -60,6 +60,11 @@
  * convolution is O(N log^2 N) (physics/fastconv.h): 1.7 s at 10^6 steps
  * (scripts/bench), so the limit is on memory and time, not the sum. */
 #define ANVIL_MAX_STEPS 1000000
+/* ... or making more contacts than this (impact.h, max_contacts): after
+ * the sub-resolution separations are merged, a thin plate catches the
+ * impactor again a few times (Zener); beyond this the contact chatters
+ * and each end costs a search over the whole past. */
+#define ANVIL_MAX_RUN_CONTACTS 64
 #define ANVIL_MAX_TERMS 20000
 #define ANVIL_MAX_REFINE 2   /* bandwidth doublings when the target is missed */
 #define ANVIL_MAX_ATTEMPTS 6 /* window doublings when the contact outlasts it */

@@ -436,6 +436,17 @@ struct phys_load {
 	double tau_lag;
 };
 
+/* Separations below the resolution of the coarse pass merged (impact.h:
+ * gap within the level's target of alpha_max, two coarse steps), and the
+ * budget of contacts. */
+static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
+		       const struct anvil_wave_job *j)
+{
+	io->merge_gap = anvil_accuracy_target(pb->accuracy);
+	io->merge_time = fmax(2.0 * (pb->dt > 0 ? pb->dt : j->dt), io->merge_gap * j->ts);
+	io->max_contacts = ANVIL_MAX_RUN_CONTACTS;
+}
+
 /* One physical impact of job j, the window grown as in waves_impact; the
  * corrections are taken for each window in which the bottom reflection
  * returns.  *corr says whether they were. */
@@ -450,6 +461,7 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 					.nhist = nhist, .physical = 1, .beta = beta, .tau_lag = ld.tau_lag };
 	struct held held = { .n = 0 };
 	int st = ANVIL_ETOL;
+	merge_opts(&io, pb, j);
 	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
 		double tau_end = anvil_wave_window(j, attempt);
 		int tau_idx = anvil_wave_tau_idx(j, tau_end);
@@ -467,10 +479,9 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 				rs2.corr = physical_corr(s, pb, j->hh, ld.patch, ld.omega_idx, tau_idx,
 							 &held, err);
 				/* a^2 = R alpha with R = r0 */
-				io = (struct anvil_impact_opts){ .scheme = io.scheme, .dt = io.dt,
-					.dt_auto = io.dt_auto, .max_steps = io.max_steps, .nhist = nhist,
-					.physical = 1, .beta = beta, .tau_lag = ld.tau_lag, .ramp2 = response_ramp,
-					.ramp2_ctx = &rs2, .alpha_ref = ld.patch * ld.patch * p->r0 };
+				io.ramp2 = response_ramp;
+				io.ramp2_ctx = &rs2;
+				io.alpha_ref = ld.patch * ld.patch * p->r0;
 			}
 			if (!rs.corr || (ld.patch > 0 && !rs2.corr)) {
 				st = err ? err->status : ANVIL_ENUM;
@@ -542,6 +553,29 @@ static int physical_errors(struct anvil_solver *s, const struct anvil_problem *p
 	return st;
 }
 
+/* The computed contact against the layer's thickness (plan.c's
+ * thin_refuse decides first on Zener's plate): the largest Hertz
+ * compression alpha = k0 P_max^(2/3) gives a = sqrt(r0 alpha); beyond h
+ * the layer is no half-space at the contact's scale and the row is
+ * refused (before its error estimate's runs). */
+static int thin_check(const struct anvil_params *p, const struct anvil_result *r,
+		      struct anvil_err *err)
+{
+	double a = sqrt(p->r0 * p->k0 * pow(r->Pmax.val, 2.0 / 3.0));
+	/* the Hertz spring's energy at the peak is at most the impact's: P_max
+	 * is at most the rigid anvil's (5 % for the lag's approximation) */
+	double ph = p->K * pow(anvil_hertz_alpha_max() * p->T * p->V0, 1.5);
+	if (r->Pmax.val > 1.05 * ph)
+		return anvil_err_set(err, ANVIL_ENUM,
+				     "%s: not computed: the computed P_max = %.3g N exceeds the rigid anvil's %.3g N, which bounds it (energy): the time stepping is unstable for this scene",
+				     anvil_model_name(r->model), r->Pmax.val, ph);
+	if (!(a > p->h))
+		return ANVIL_OK;
+	return anvil_err_set(err, ANVIL_EINVAL,
+			     "%s: not computed: the contact radius a = %.3g mm (from the computed P_max = %.3g N) exceeds h = %.3g mm (a/h = %.2g): Hertz's law for a half-space does not hold",
+			     anvil_model_name(r->model), a * 1e3, r->Pmax.val, p->h * 1e3, a / p->h);
+}
+
 /* The physical row: Hertz's approach plus the layer's remainder, the
  * correction with the true contact radius a(t) (impact.h: point load plus
  * the a^2 term from the Hertz patch of the largest radius a_max).  Its
@@ -562,6 +596,8 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2 };
 	int corr = 0;
 	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
+	if (!st && corr)
+		st = thin_check(p, r, err);
 	if (!st && corr)
 		st = physical_errors(s, &pl->pb, &row->job, beta, ld, fmin(1.0, a / p->r0), r, err);
 	if (st)

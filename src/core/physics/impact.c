@@ -17,6 +17,10 @@
  * end offset d (error O(dt^4) of a smooth sum), so that each Brent
  * iteration costs O(IMPACT_END_NEAR), not O(n). */
 #define IMPACT_END_NEAR 256
+/* A pass's status when it makes more contacts than the budget
+ * (opts.max_contacts): ANVIL_ETOL to the caller, with t_s finite (no
+ * longer window tried) and its own message. */
+#define IMPACT_BUDGET (-100)
 
 /* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
 struct pass {
@@ -31,7 +35,14 @@ struct pass {
 	/* repeated contacts: the count, each one's start and end (s) */
 	size_t ncont;
 	double on[ANVIL_MAX_CONTACTS], off[ANVIL_MAX_CONTACTS];
-	int parted;      /* 1: parted for good by the rule; 2: at the window's end */
+	int parted;      /* 1: parted for good by the rule; 2: at the window's end;
+			  * 3: moving together at the window's end (co_moving) */
+	/* a separation not yet decided (merge_sep): the last node in contact
+	 * (0: none), the impulse up to it, A at the next node, the largest gap */
+	size_t pend_k;
+	double pend_imp, pend_a, sep_gap;
+	size_t nmerged;  /* separations merged into their contact */
+	double Pmax_run; /* the largest P so far (co_moving) */
 };
 
 struct ctx {
@@ -50,6 +61,8 @@ struct ctx {
 	double *dg;     /* its weights less g's, when ramp2 is given */
 	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
 	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
+	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
+	size_t max_contacts;          /* the budget (opts); 0: none */
 };
 
 static void pass_free(struct pass *s)
@@ -410,25 +423,69 @@ static int finish_exact(const struct ctx *c, const struct pass *s, double impuls
 	return ANVIL_OK;
 }
 
-/* The end of a contact between nodes n-1 and n (a_n = A_n <= 0): its time
- * and the impulse up to it, exactly for the scheme when there are nodes
- * enough, else from the parabola through alpha_H (finish). */
-static int contact_end(const struct ctx *c, struct pass *s, double a_n, double impulse,
+/* The end of the contact whose last node in contact is k (a_n = A_{k+1}
+ * <= 0): its time and the impulse up to it, exactly for the scheme when
+ * there are nodes enough, else from the parabola through alpha_H (finish).
+ * Decided late (merge_sep), it sees the pass as it was at node k + 1: the
+ * same bits as at once. */
+static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n, double impulse,
 		       double *ioff)
 {
+	struct pass v = *s; /* the pass up to node k (the arrays shared) */
 	double toff = NAN;
 	int st = ANVIL_OK;
-	if (s->n >= 3) {
-		st = finish_exact(c, s, impulse, &toff, ioff);
+	v.n = k + 1;
+	if (v.n >= 3) {
+		st = finish_exact(c, &v, impulse, &toff, ioff);
 	} else {
-		finish(s, c->p, a_n, impulse);
-		toff = s->ts;
-		*ioff = c->p->m1 * (c->p->V0 + s->Vs);
+		finish(&v, c->p, a_n, impulse);
+		toff = v.ts;
+		*ioff = c->p->m1 * (c->p->V0 + v.Vs);
 	}
 	if (!st && s->ncont <= ANVIL_MAX_CONTACTS)
 		s->off[s->ncont - 1] = toff;
 	s->ts = toff;
 	return st;
+}
+
+/* Separations below the scheme's resolution (impact.h, merge_sep).  A
+ * contact that ends at node k + 1 leaves a pending separation; it becomes
+ * a real one (its end found by contact_end) once its gap exceeds
+ * merge_gap alpha_max or it lasts longer than merge_time, and a re-contact
+ * before either merges it into the contact: no end, no new contact. */
+static void sep_open(struct pass *s, size_t n, double a_n, double impulse)
+{
+	s->pend_k = n - 1;
+	s->pend_imp = impulse;
+	s->pend_a = a_n;
+	s->sep_gap = -a_n;
+}
+
+static int sep_resolve(const struct ctx *c, struct pass *s, double *ioff)
+{
+	size_t k = s->pend_k;
+	if (!k)
+		return ANVIL_OK;
+	s->pend_k = 0;
+	return contact_end(c, s, k, s->pend_a, s->pend_imp, ioff);
+}
+
+/* Out of contact at node n (A = a_n <= 0): the pending separation decided
+ * when it is resolved by the scheme. */
+static int sep_step(const struct ctx *c, struct pass *s, size_t n, double a_n, double amax,
+		    double *ioff)
+{
+	if (!s->pend_k)
+		return ANVIL_OK;
+	/* the gap W - w is the difference of two displacements each known to
+	 * merge_gap of its size: its error is merge_gap times the larger of
+	 * alpha_max and the impactor's displacement at the separation */
+	double res = c->merge_gap * fmax(amax, fabs(s->W[s->pend_k]));
+	s->sep_gap = fmax(s->sep_gap, -a_n);
+	if (s->sep_gap > res ||
+	    (double)(n - s->pend_k) * s->dt > c->merge_time)
+		return sep_resolve(c, s, ioff);
+	return ANVIL_OK;
 }
 
 /* A new contact between nodes n-1 and n: A rose through 0 (linear). */
@@ -437,6 +494,29 @@ static void contact_start(struct pass *s, size_t n, double a_prev, double a_n)
 	s->ncont++;
 	if (s->ncont <= ANVIL_MAX_CONTACTS)
 		s->on[s->ncont - 1] = s->dt * ((double)n - a_n / (a_n - a_prev));
+}
+
+/* The contact's state at node n from A = A_n (alpha_H if P_n were 0):
+ * a contact ends (a pending separation, merge_sep), a separation is
+ * decided or merged, a new contact starts; *in the state after. */
+static int contact_state(const struct ctx *c, struct pass *s, size_t n, double A, double a_prev,
+			 double amax, double impulse, int *in, double *ioff)
+{
+	int st = ANVIL_OK;
+	if (A <= 0 && *in)
+		sep_open(s, n, A, impulse);
+	if (A <= 0) {
+		st = sep_step(c, s, n, A, amax, ioff);
+	} else if (!*in && s->pend_k) { /* back within the resolution: one contact */
+		s->pend_k = 0;
+		s->nmerged++;
+	} else if (!*in) {
+		contact_start(s, n, a_prev, A);
+	}
+	*in = A > 0;
+	if (!st && c->max_contacts && s->ncont > c->max_contacts)
+		st = IMPACT_BUDGET;
+	return st;
 }
 
 /* Parted for good (impact.h) at node n, out of contact: the impactor moves
@@ -476,14 +556,9 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 	for (size_t n = 1; n < s->cap; n++) {
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
-		int st = ANVIL_OK;
-		if (A <= 0 && in)
-			st = contact_end(c, s, A, impulse, &ioff);
-		else if (A > 0 && !in)
-			contact_start(s, n, a_prev, A);
+		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
 		if (st)
 			return st;
-		in = A > 0;
 		if (in)
 			P = hertz_root(p->k0, B, A);
 		a_prev = A - B * P;
@@ -497,11 +572,14 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		S1 += P * tn;
 		s->n = n + 1;
 		anvil_fastconv_push(c->fc, P);
-		if (!in && parted(c, s, n, impulse, amax)) {
+		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
 		}
 	}
+	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st)
+		return st;
 	if (in || s->v[s->n - 1] >= 0)
 		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
 	if (!s->parted)
@@ -586,14 +664,9 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		}
 		double B = g0 + dt * dt / (6.0 * p->m1);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
-		int st = ANVIL_OK;
-		if (A <= 0 && in)
-			st = contact_end(c, s, A, impulse, &ioff);
-		else if (A > 0 && !in)
-			contact_start(s, n, a_prev, A);
+		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
 		if (st)
 			return st;
-		in = A > 0;
 		/* dw_c/dt(t_n) = wd0 + e0 P_n: low-passed at tau_lag (see above),
 		 * else BDF2 (Euler at the first step) */
 		double wd0, e0;
@@ -632,11 +705,14 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		anvil_fastconv_push(c->fc, P);
 		if (c->fc2)
 			anvil_fastconv_push(c->fc2, s->Q[n]);
-		if (!in && parted(c, s, n, impulse, amax)) {
+		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
 		}
 	}
+	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st)
+		return st;
 	if (in || s->v[s->n - 1] >= 0)
 		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
 	if (!s->parted)
@@ -819,7 +895,10 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .physical = o->physical, .beta = o->beta,
 			 .ramp2 = o->physical && o->alpha_ref > 0 ? o->ramp2 : NULL,
 			 .rctx2 = o->ramp2_ctx, .alpha_ref = o->alpha_ref,
-			 .tau_lag = o->physical && o->tau_lag > 0 ? o->tau_lag : 0.0 };
+			 .tau_lag = o->physical && o->tau_lag > 0 ? o->tau_lag : 0.0,
+			 .merge_gap = o->merge_gap > 0 ? o->merge_gap : 0.0,
+			 .merge_time = o->merge_time > 0 ? o->merge_time : 0.0,
+			 .max_contacts = o->max_contacts };
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
@@ -836,7 +915,13 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		if (o->nhist > 1)
 			st = resample(o->scheme == ANVIL_SCHEME_PAPER ? &a : &b, p, o->nhist, &r->hist);
 	}
-	if (st == ANVIL_ETOL) {
+	if (st == IMPACT_BUDGET) { /* finite t_s: the caller tries no longer window */
+		st = ANVIL_ETOL;
+		r->ts.val = INFINITY;
+		anvil_err_set(err, st,
+			      "not computed: the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution); the thin-plate model 'zener' applies here",
+			      o->max_contacts);
+	} else if (st == ANVIL_ETOL) {
 		r->ts.val = NAN;
 		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",
 			      tau_avail * p->r0 / p->c2 * 1e6);

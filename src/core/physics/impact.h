@@ -99,6 +99,24 @@ struct anvil_impact_opts {
 	 * whatever dt.  The change is of the order the lag's own next term;
 	 * the caller measures it by halving tau_lag (solver.c). */
 	double tau_lag;
+	/* Separations below the scheme's resolution (implicit and physical;
+	 * 0: none merged).  A separation whose gap never exceeds merge_gap
+	 * times the largest Hertz compression alpha_max and which ends (the
+	 * bodies touch again) within merge_time seconds is no separation: the
+	 * two passes (dt and dt/2) see the same bodies moving together, the
+	 * contact goes on, its count and times do not change, and no end is
+	 * searched for it.  The caller sets merge_gap to the level's target
+	 * (the relative accuracy the level promises for alpha) and merge_time
+	 * to two of the coarse pass's steps (a shorter separation has no node
+	 * of its own in that pass), the same for both passes, so that they
+	 * count the same contacts.  R_f, V_s and E_a come from the last
+	 * separation that is resolved, t_s its end. */
+	double merge_gap;
+	double merge_time;
+	/* The budget: more contacts than this (after merging) is ANVIL_ETOL
+	 * with t_s = inf (no longer window helps) and a one-line reason; 0:
+	 * none. */
+	size_t max_contacts;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
