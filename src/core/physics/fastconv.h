@@ -10,7 +10,7 @@
  * [2jB, (2j+1)B) against the targets [(2j+1)B, (2j+2)B), B = 2^k.  When
  * x_{L-1} is pushed, L = (2j+1)B with k = ctz(L), that one square is added
  * to the targets' accumulators: by direct products for B <= direct_max,
- * else by one real FFT of size 2B (GSL radix-2) against the level's kernel
+ * else by one real FFT of size 2B (GSL mixed-radix, tables made once) against the level's kernel
  * spectrum, computed once.  Exact in exact arithmetic; the rounding of an
  * FFT square is about eps log2(2B) sum |x_m g_{n-m}| (tests/test_fastconv.c
  * measures it).  Deterministic: the same pushes give the same bits. */
