@@ -6,14 +6,22 @@
 
 #include "fastconv.h"
 
-/* One FFT level: squares of side B = 2^k, transforms of size 2B.  GSL's
+/* The FFT tables of each level: transforms of size 2B, B = 2^k.  GSL's
  * mixed-radix real FFT with its tables made once (plan once, execute many
  * times): 2-3 times faster than the radix-2 one, which recomputes its
- * twiddles and reverses bits on every call (measured, N = 128 .. 2^19). */
+ * twiddles and reverses bits on every call (measured, N = 128 .. 2^19);
+ * making them costs about as much again as a transform (sines), hence
+ * shared between convolutions (anvil_fastconv_fft). */
+struct anvil_fastconv_fft {
+	int nlev;
+	size_t direct_max;
+	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: level k direct */
+	gsl_fft_halfcomplex_wavetable **bw;
+};
+
+/* One FFT level of a convolution. */
 struct level {
 	double *spec; /* halfcomplex (mixed-radix packing) FFT of g_0..g_{2B-1} */
-	gsl_fft_real_wavetable *fw;
-	gsl_fft_halfcomplex_wavetable *bw;
 	gsl_fft_real_workspace *ws; /* GSL wants one of the transform's own size */
 };
 
@@ -25,7 +33,65 @@ struct anvil_fastconv {
 	double *buf;  /* scratch, 2 B_max */
 	struct level *lev; /* lev[k].spec NULL: level k is summed directly */
 	int nlev;
+	const struct anvil_fastconv_fft *fft; /* the tables: shared, or own */
+	struct anvil_fastconv_fft *own;
 };
+
+/* The levels of capacity cap: squares have B < cap. */
+static int levels_of(size_t cap)
+{
+	int n = 0;
+	while (((size_t)1 << n) < cap)
+		n++;
+	return n;
+}
+
+static size_t direct_of(size_t direct_max)
+{
+	return direct_max ? direct_max : ANVIL_FASTCONV_DIRECT;
+}
+
+void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t)
+{
+	if (!t)
+		return;
+	for (int k = 0; k < t->nlev; k++) {
+		if (t->fw)
+			gsl_fft_real_wavetable_free(t->fw[k]);
+		if (t->bw)
+			gsl_fft_halfcomplex_wavetable_free(t->bw[k]);
+	}
+	free(t->fw);
+	free(t->bw);
+	free(t);
+}
+
+struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max)
+{
+	struct anvil_fastconv_fft *t = calloc(1, sizeof *t);
+	if (!t)
+		return NULL;
+	t->nlev = levels_of(cap);
+	t->direct_max = direct_of(direct_max);
+	t->fw = calloc((size_t)t->nlev + 1, sizeof *t->fw);
+	t->bw = calloc((size_t)t->nlev + 1, sizeof *t->bw);
+	if (!t->fw || !t->bw) {
+		anvil_fastconv_fft_free(t);
+		return NULL;
+	}
+	for (int k = 0; k < t->nlev; k++) {
+		size_t B = (size_t)1 << k;
+		if (B <= t->direct_max)
+			continue;
+		t->fw[k] = gsl_fft_real_wavetable_alloc(2 * B);
+		t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(2 * B);
+		if (!t->fw[k] || !t->bw[k]) {
+			anvil_fastconv_fft_free(t);
+			return NULL;
+		}
+	}
+	return t;
+}
 
 void anvil_fastconv_free(struct anvil_fastconv *f)
 {
@@ -33,11 +99,10 @@ void anvil_fastconv_free(struct anvil_fastconv *f)
 		return;
 	for (int k = 0; f->lev && k < f->nlev; k++) {
 		free(f->lev[k].spec);
-		gsl_fft_real_wavetable_free(f->lev[k].fw);
-		gsl_fft_halfcomplex_wavetable_free(f->lev[k].bw);
 		gsl_fft_real_workspace_free(f->lev[k].ws);
 	}
 	free(f->lev);
+	anvil_fastconv_fft_free(f->own);
 	free(f->g);
 	free(f->x);
 	free(f->acc);
@@ -45,23 +110,22 @@ void anvil_fastconv_free(struct anvil_fastconv *f)
 	free(f);
 }
 
-/* Level k's tables and the kernel's spectrum for squares of side B = 2^k:
- * g_0 .. g_{2B-1}, zero past cap.  -1 when out of memory. */
+/* Level k's workspace and the kernel's spectrum for squares of side
+ * B = 2^k: g_0 .. g_{2B-1}, zero past cap.  -1 when out of memory. */
 static int level_init(struct anvil_fastconv *f, int k)
 {
 	size_t B = (size_t)1 << k;
 	struct level *l = &f->lev[k];
 	l->spec = calloc(2 * B, sizeof *l->spec);
-	l->fw = gsl_fft_real_wavetable_alloc(2 * B);
-	l->bw = gsl_fft_halfcomplex_wavetable_alloc(2 * B);
 	l->ws = gsl_fft_real_workspace_alloc(2 * B);
-	if (!l->spec || !l->fw || !l->bw || !l->ws)
+	if (!l->spec || !l->ws)
 		return -1;
 	memcpy(l->spec, f->g, (2 * B < f->cap ? 2 * B : f->cap) * sizeof *l->spec);
-	return gsl_fft_real_transform(l->spec, 1, 2 * B, l->fw, l->ws) ? -1 : 0;
+	return gsl_fft_real_transform(l->spec, 1, 2 * B, f->fft->fw[k], l->ws) ? -1 : 0;
 }
 
-struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max)
+struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
+						const struct anvil_fastconv_fft *fft)
 {
 	if (!cap)
 		return NULL;
@@ -69,15 +133,19 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 	if (!f)
 		return NULL;
 	f->cap = cap;
-	f->direct_max = direct_max ? direct_max : ANVIL_FASTCONV_DIRECT;
-	while (((size_t)1 << f->nlev) < cap)
-		f->nlev++; /* squares have B < cap */
+	f->direct_max = direct_of(direct_max);
+	f->nlev = levels_of(cap);
+	if (fft && (fft->nlev < f->nlev || fft->direct_max > f->direct_max)) {
+		free(f);
+		return NULL; /* tables that do not cover these levels */
+	}
+	f->fft = fft ? fft : (f->own = anvil_fastconv_fft_alloc(cap, f->direct_max));
 	f->g = malloc(cap * sizeof *f->g);
 	f->x = calloc(cap, sizeof *f->x);
 	f->acc = calloc(cap, sizeof *f->acc);
 	f->buf = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf);
 	f->lev = calloc((size_t)f->nlev + 1, sizeof *f->lev);
-	if (!f->g || !f->x || !f->acc || !f->buf || !f->lev) {
+	if (!f->fft || !f->g || !f->x || !f->acc || !f->buf || !f->lev) {
 		anvil_fastconv_free(f);
 		return NULL;
 	}
@@ -91,6 +159,11 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 		}
 	}
 	return f;
+}
+
+struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max)
+{
+	return anvil_fastconv_alloc_fft(g, cap, direct_max, NULL);
 }
 
 void anvil_fastconv_reset(struct anvil_fastconv *f)
@@ -139,14 +212,15 @@ static void square_direct(struct anvil_fastconv *f, size_t L, size_t B)
 
 /* The same square by a cyclic convolution of size 2B: for targets
  * L + i (i < B) the lags B + i - s lie in [1, 2B), so nothing wraps. */
-static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, const struct level *l)
+static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 {
+	const struct level *l = &f->lev[k];
 	size_t N = 2 * B, end = L + B < f->cap ? L + B : f->cap;
 	const double *G = l->spec;
 	double *b = f->buf;
 	memcpy(b, f->x + (L - B), B * sizeof *b);
 	memset(b + B, 0, B * sizeof *b);
-	gsl_fft_real_transform(b, 1, N, l->fw, l->ws);
+	gsl_fft_real_transform(b, 1, N, f->fft->fw[k], l->ws);
 	/* mixed-radix halfcomplex product: b[0], b[N-1] real (frequencies 0
 	 * and N/2); (b[2j-1], b[2j]) = (re, im) of frequency j, 0 < j < N/2 */
 	b[0] *= G[0];
@@ -157,7 +231,7 @@ static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, const struc
 		b[j] = re;
 		b[j + 1] = im;
 	}
-	gsl_fft_halfcomplex_inverse(b, 1, N, l->bw, l->ws);
+	gsl_fft_halfcomplex_inverse(b, 1, N, f->fft->bw[k], l->ws);
 	for (size_t t = L; t < end; t++)
 		f->acc[t] += b[B + (t - L)];
 }
@@ -175,7 +249,7 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x)
 		k++;
 	size_t B = (size_t)1 << k;
 	if (k < f->nlev && f->lev[k].spec)
-		square_fft(f, L, B, &f->lev[k]);
+		square_fft(f, L, B, k);
 	else
 		square_direct(f, L, B);
 	return 0;

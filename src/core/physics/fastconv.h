@@ -33,6 +33,20 @@ struct anvil_fastconv;
 struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max);
 void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
 
+/* The FFT tables (GSL wavetables, each level's size) of every convolution
+ * of capacity up to cap with squares summed directly up to direct_max
+ * (as anvil_fastconv_alloc's; or fewer), made once: read-only, shared by
+ * any number of convolutions, which must not outlive them.  NULL when out
+ * of memory. */
+struct anvil_fastconv_fft;
+struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max);
+void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t); /* NULL is a no-op */
+
+/* anvil_fastconv_alloc with the tables fft (borrowed; NULL: its own).
+ * NULL also when fft does not cover cap and direct_max. */
+struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
+						const struct anvil_fastconv_fft *fft);
+
 /* Forget the pushed values (same kernel): as new. */
 void anvil_fastconv_reset(struct anvil_fastconv *f);
 

@@ -51,6 +51,7 @@ struct ctx {
 	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
 	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
 	struct end_tab *tab; /* the contact ends' ramp values, for the pass at hand */
+	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes, fc and fc2 */
 };
 
 static void pass_free(struct pass *s)
@@ -738,9 +739,9 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 	anvil_fastconv_free(c->fc2);
 	c->fc = c->fc2 = NULL;
 	end_tab_free(c->tab); /* a new dt */
-	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, direct_max)))
+	if (!st && !(c->fc = anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
-	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc(c->dg, cap, direct_max)))
+	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc_fft(c->dg, cap, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
@@ -868,6 +869,12 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	struct pass a = {0}, b = {0};
 	struct end_tab tab = {0};
 	c.tab = &tab;
+	/* the FFT tables of the finer pass's capacity (run_pass) serve both */
+	struct anvil_fastconv_fft *fft =
+		anvil_fastconv_fft_alloc((size_t)fmax(tau_avail * p->r0 / p->c2 / (0.5 * dt), 1.0),
+					 o->direct_max);
+	if (!(c.fft = fft))
+		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	if (!st)
 		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, &b);
@@ -892,6 +899,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	anvil_fastconv_free(c.fc2);
 	free(c.dg);
 	end_tab_free(&tab);
+	anvil_fastconv_fft_free(fft);
 	pass_free(&a);
 	pass_free(&b);
 	return st;
