@@ -27,6 +27,7 @@ struct level {
 
 struct anvil_fastconv {
 	size_t cap, n, direct_max;
+	size_t nz;    /* 1 + the index of the last nonzero value pushed (0: none) */
 	double *g;    /* kernel, cap */
 	double *x;    /* pushed values, cap */
 	double *acc;  /* partial sums c_n, cap */
@@ -170,7 +171,7 @@ void anvil_fastconv_reset(struct anvil_fastconv *f)
 {
 	memset(f->x, 0, f->cap * sizeof *f->x);
 	memset(f->acc, 0, f->cap * sizeof *f->acc);
-	f->n = 0;
+	f->n = f->nz = 0;
 }
 
 double anvil_fastconv_next(const struct anvil_fastconv *f)
@@ -241,6 +242,8 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x)
 	if (f->n >= f->cap)
 		return -1;
 	f->x[f->n++] = x;
+	if (x != 0.0)
+		f->nz = f->n;
 	size_t L = f->n;
 	if (L >= f->cap)
 		return 0; /* no target left */
@@ -248,6 +251,8 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x)
 	while (!((L >> k) & 1))
 		k++;
 	size_t B = (size_t)1 << k;
+	if (f->nz <= L - B)
+		return 0; /* sources all zero (free flight): the square adds nothing */
 	if (k < f->nlev && f->lev[k].spec)
 		square_fft(f, L, B, k);
 	else
