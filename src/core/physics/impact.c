@@ -306,6 +306,24 @@ static double far_of(const struct end_ctx *e, const double *F, const double *R)
 	return w;
 }
 
+/* far_of(P, R) + (far_of(Q, R2) - far_of(Q, R)) in one sweep (each sum in
+ * far_of's order: the same bits, a third of the memory traffic). */
+static double far_of2(const struct end_ctx *e, const double *P, const double *Q,
+		      const double *R, const double *R2)
+{
+	const double dt = e->s->dt;
+	size_t k = e->k;
+	double wp = 0, wq = 0, wq2 = 0;
+	for (size_t m = e->m0 - 1; m >= 1; m--) {
+		size_t j = k - m;
+		double h = R[j + 1] - 2.0 * R[j] + R[j - 1];
+		wp += P[m] * h / dt;
+		wq += Q[m] * h / dt;
+		wq2 += Q[m] * (R2[j + 1] - 2.0 * R2[j] + R2[j - 1]) / dt;
+	}
+	return wp + (wq2 - wq);
+}
+
 /* The far past's deflection at t_k + d, d = i dt/3 (m < m0), exactly; with
  * the true contact radius (dg), the loads' Q through ramp2 - ramp as well.
  * ANVIL_ENOMEM when the table cannot be had. */
@@ -314,8 +332,8 @@ static int far_exact(const struct end_ctx *e, int i, double *val)
 	const struct ctx *c = e->c;
 	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt, d = dt * i / 3.0;
 	size_t k = e->k;
-	double w = 0;
 	if (d == 0.0 || d == dt) { /* on the grid: the weights */
+		double w = 0;
 		size_t sh = d == 0.0 ? 0 : 1;
 		for (size_t m = 1; m < e->m0; m++)
 			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
@@ -327,10 +345,7 @@ static int far_exact(const struct end_ctx *e, int i, double *val)
 		R2 = end_tab_get(c, e->s, 1, i, d, k);
 	if (!R || (c->dg && !R2))
 		return ANVIL_ENOMEM;
-	w = far_of(e, P, R);
-	if (c->dg)
-		w += far_of(e, Q, R2) - far_of(e, Q, R);
-	*val = w;
+	*val = c->dg ? far_of2(e, P, Q, R, R2) : far_of(e, P, R);
 	return ANVIL_OK;
 }
 
