@@ -47,6 +47,14 @@ void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t); /* NULL is a no-op *
 struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
 						const struct anvil_fastconv_fft *fft);
 
+/* A pair: c_n = sum_{m < n} (x_m g_{n-m} + y_m h_{n-m}), pushed together
+ * (anvil_fastconv_push_pair); the two products of an FFT square are added
+ * in the spectrum, so the pair costs three transforms where two
+ * convolutions cost four.  As anvil_fastconv_alloc_fft otherwise. */
+struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
+						 size_t direct_max,
+						 const struct anvil_fastconv_fft *fft);
+
 /* Forget the pushed values (same kernel): as new. */
 void anvil_fastconv_reset(struct anvil_fastconv *f);
 
@@ -56,6 +64,10 @@ double anvil_fastconv_next(const struct anvil_fastconv *f);
 
 /* Push x_n; returns 0, or -1 when cap values have been pushed already. */
 int anvil_fastconv_push(struct anvil_fastconv *f, double x);
+
+/* Push x_n and y_n to a pair (a single convolution takes y_n = 0 only);
+ * returns 0, or -1 when full or y_n != 0 on a single one. */
+int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
 
 /* The number of values pushed. */
 size_t anvil_fastconv_count(const struct anvil_fastconv *f);

@@ -48,10 +48,11 @@ struct ctx {
 	double alpha_ref;
 	double tau_lag; /* the lag's low-pass (opts), s; 0: none */
 	double *dg;     /* its weights less g's, when ramp2 is given */
-	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
-	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
+	/* sum_m P_m g_{n-m}, for the pass at hand; with dg, a pair (fastconv.h)
+	 * that adds sum_m Q_m dg_{n-m} (physical, ramp2 given) */
+	struct anvil_fastconv *fc;
 	struct end_tab *tab; /* the contact ends' ramp values, for the pass at hand */
-	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes, fc and fc2 */
+	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
 };
 
 static void pass_free(struct pass *s)
@@ -609,8 +610,8 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * paper's contact).  The march goes on through repeated contacts as in
  * pass_implicit: out of contact P = Q = 0, w = w_c (the layer's free
  * response), until the two have parted for good.  The past's sums come
- * from the online fast convolutions: P against g (fc) and, with the true
- * radius, Q against dg = g2 - g (fc2). */
+ * from the online fast convolution: P against g (fc) and, with the true
+ * radius, Q against dg = g2 - g (fc a pair). */
 static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
@@ -625,18 +626,13 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 	s->on[0] = 0;
 	anvil_fastconv_reset(c->fc);
 	anvil_fastconv_push(c->fc, 0.0);
-	if (c->fc2) {
-		anvil_fastconv_reset(c->fc2);
-		anvil_fastconv_push(c->fc2, 0.0);
-	}
 	for (size_t n = 1; n < s->cap; n++) {
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
 		if (c->dg) {
 			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load
-			 * (by the second convolution, of Q against dg); the current one's
+			 * (in conv: fc's second kernel, Q against dg); the current one's
 			 * (in g0 only, zero before the bottom reflection) extrapolated,
 			 * second order; alpha_H = 0 at a node out of contact */
-			conv += anvil_fastconv_next(c->fc2);
 			double q1 = s->P[n - 1] > 0 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
 			double q2 = n >= 3 && s->P[n - 2] > 0 ? s->Q[n - 2] / s->P[n - 2] : q1;
 			g0 += (2.0 * q1 - q2) * c->dg[0];
@@ -686,9 +682,7 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		anvil_fastconv_push(c->fc, P);
-		if (c->fc2)
-			anvil_fastconv_push(c->fc2, s->Q[n]);
+		anvil_fastconv_push_pair(c->fc, P, s->Q[n]);
 		if (!in && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
@@ -751,12 +745,10 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 	if (!st)
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
-	anvil_fastconv_free(c->fc2);
-	c->fc = c->fc2 = NULL;
+	c->fc = NULL;
 	end_tab_free(c->tab); /* a new dt */
-	if (!st && !(c->fc = anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
-		st = ANVIL_ENOMEM;
-	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc_fft(c->dg, cap, direct_max, c->fft)))
+	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, cap, direct_max, c->fft)
+				   : anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
@@ -911,7 +903,6 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	}
 	free(c.g);
 	anvil_fastconv_free(c.fc);
-	anvil_fastconv_free(c.fc2);
 	free(c.dg);
 	end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);
