@@ -87,6 +87,58 @@ static void test_impact_like(void)
 	free(g);
 }
 
+/* A pair (x against g plus y against h, added in the spectrum) against
+ * the direct sum in long double, with zero runs in both inputs (the
+ * squares of all-zero sources are skipped); its FFT tables shared
+ * (anvil_fastconv_fft) with a single convolution run alongside, which
+ * must give the bits of one with its own tables. */
+static void test_pair(size_t N, size_t direct_max, double bound)
+{
+	unsigned long long s = 1234567ULL + N;
+	double *x = malloc(N * sizeof *x), *y = malloc(N * sizeof *y);
+	double *g = malloc(N * sizeof *g), *h = malloc(N * sizeof *h), worst = 0;
+	for (size_t i = 0; i < N; i++) {
+		int gap = (i / 300) % 3 == 2; /* free flight: both zero */
+		x[i] = gap ? 0.0 : urand(&s);
+		y[i] = gap ? 0.0 : urand(&s);
+		g[i] = urand(&s) / (1.0 + 0.01 * (double)i);
+		h[i] = urand(&s) / (1.0 + 0.02 * (double)i);
+	}
+	struct anvil_fastconv_fft *t = anvil_fastconv_fft_alloc(N, direct_max);
+	struct anvil_fastconv *f = anvil_fastconv_alloc_pair(g, h, N, direct_max, t);
+	struct anvil_fastconv *a = anvil_fastconv_alloc_fft(g, N, direct_max, t);
+	struct anvil_fastconv *b = anvil_fastconv_alloc(g, N, direct_max);
+	int same = 1;
+	for (size_t n = 0; n < N; n++) {
+		long double c = 0, m = 0;
+		for (size_t j = 0; j < n; j++) {
+			c += (long double)x[j] * g[n - j] + (long double)y[j] * h[n - j];
+			m += fabsl((long double)x[j] * g[n - j]) + fabsl((long double)y[j] * h[n - j]);
+		}
+		double e = m > 0 ? (double)(fabsl(anvil_fastconv_next(f) - c) / m)
+				 : fabs(anvil_fastconv_next(f));
+		worst = fmax(worst, e);
+		same &= anvil_fastconv_next(a) == anvil_fastconv_next(b);
+		anvil_fastconv_push_pair(f, x[n], y[n]);
+		anvil_fastconv_push(a, x[n]);
+		anvil_fastconv_push(b, x[n]);
+	}
+	ok(worst < bound, "pair, N = %zu, direct up to %zu: worst error %.2g of sum |x g| + |y h| (< %.0g)",
+	   N, direct_max, worst, bound);
+	ok(same, "shared FFT tables give the bits of own ones (N = %zu)", N);
+	ok(anvil_fastconv_push_pair(a, 0.0, 1.0) == -1, "a single convolution refuses a second input");
+	ok(anvil_fastconv_alloc_fft(g, 2 * N, direct_max, t) == NULL,
+	   "tables that do not cover the capacity are refused");
+	anvil_fastconv_free(f);
+	anvil_fastconv_free(a);
+	anvil_fastconv_free(b);
+	anvil_fastconv_fft_free(t);
+	free(x);
+	free(y);
+	free(g);
+	free(h);
+}
+
 int main(void)
 {
 	/* the bound: eps log2(N) times a small constant (rounding of the FFT) */
@@ -95,6 +147,8 @@ int main(void)
 	test_random(4097, 8, 5e-15, "FFT squares from side 16");
 	test_random(3, 0, 1e-16, "tiny");
 	test_impact_like();
+	test_pair(3000, 0, 5e-15);
+	test_pair(1000, (size_t)-1, 1e-15);
 	ok(anvil_fastconv_alloc(NULL, 0, 0) == NULL, "capacity 0 is refused");
 	anvil_fastconv_free(NULL);
 	plan(tap_n);

@@ -284,10 +284,15 @@ static double bending(const struct anvil_params *p)
  *                  n steps: linear (weights, the exact contact end) plus,
  *                  on a layer, the online convolution's n log2(n)^2
  *                  (fastconv.h; it was quadratic before, and the planner
- *                  priced a 10^5-step contact 15-40 times too dear: fitted
- *                  again on 24 physical-contact runs, h/r0 0.25-3, 12 g-1 kg,
- *                  1-10 m/s, 600-10^5 steps, within a factor of 2 but for
- *                  repeated contacts on h/r0 = 0.25, up to 3 times dearer);
+ *                  priced a 10^5-step contact 15-40 times too dear).  Fitted
+ *                  again after the convolution's mixed-radix FFT, its pair
+ *                  of kernels and the contact ends' tabled ramps (issue 11,
+ *                  speed) on 13 warm physical-contact runs (responses from
+ *                  the cache: the impacts alone), h/r0 0.25-2, 12 g-10 kg,
+ *                  1-10 m/s, 8e3-3.5e5 steps, up to 87 contacts: predicted/
+ *                  measured 0.62-1.35 (the constants before: 1.1-2.6 times
+ *                  dear).  The n log2(n)^2 term is now a quarter of the
+ *                  cost at 10^5 steps; beyond the fitted range it grows;
  *                  a run on the layer response costs more per step than one
  *                  on the half-space or the static anvil (interpolation in
  *                  the sampled ramp);
@@ -304,8 +309,8 @@ static double bending(const struct anvil_params *p)
 #define COST_HALFSPACE 1.0e-4
 #define IMPACT_LIN_HS 5.0e-7
 #define IMPACT_SQ_HS 1.1e-9
-#define IMPACT_LIN_LAYER 1.5e-6
-#define IMPACT_FFT_LAYER 2.5e-8
+#define IMPACT_LIN_LAYER 2.7e-6
+#define IMPACT_FFT_LAYER 3.2e-9
 
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
 			 enum anvil_accuracy acc);

@@ -6,42 +6,153 @@
 
 #include "fastconv.h"
 
+/* The FFT tables of each level: transforms of size 2B, B = 2^k.  GSL's
+ * mixed-radix real FFT with its tables made once (plan once, execute many
+ * times): 2-3 times faster than the radix-2 one, which recomputes its
+ * twiddles and reverses bits on every call (measured, N = 128 .. 2^19);
+ * making them costs about as much again as a transform (sines), hence
+ * shared between convolutions (anvil_fastconv_fft). */
+struct anvil_fastconv_fft {
+	int nlev;
+	size_t direct_max;
+	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: level k direct */
+	gsl_fft_halfcomplex_wavetable **bw;
+};
+
+/* One FFT level of a convolution. */
+struct level {
+	double *spec[2]; /* halfcomplex (mixed-radix packing) FFT of g_0..g_{2B-1}, per kernel */
+	gsl_fft_real_workspace *ws; /* GSL wants one of the transform's own size */
+};
+
 struct anvil_fastconv {
 	size_t cap, n, direct_max;
-	double *g;    /* kernel, cap */
-	double *x;    /* pushed values, cap */
+	size_t nz;    /* 1 + the index of the last nonzero value pushed (0: none) */
+	int nk;       /* kernels: 1, or 2 for a pair */
+	double *g[2]; /* kernels, cap */
+	double *x[2]; /* pushed values, cap */
 	double *acc;  /* partial sums c_n, cap */
-	double *buf;  /* scratch, 2 B_max */
-	double **spec; /* spec[k]: halfcomplex FFT of g_0..g_{2B-1}, B = 2^k; NULL if direct */
+	double *buf[2]; /* scratch, 2 B_max */
+	struct level *lev; /* lev[k].spec[0] NULL: level k is summed directly */
 	int nlev;
+	const struct anvil_fastconv_fft *fft; /* the tables: shared, or own */
+	struct anvil_fastconv_fft *own;
 };
+
+/* The levels of capacity cap: squares have B < cap. */
+static int levels_of(size_t cap)
+{
+	int n = 0;
+	while (((size_t)1 << n) < cap)
+		n++;
+	return n;
+}
+
+static size_t direct_of(size_t direct_max)
+{
+	return direct_max ? direct_max : ANVIL_FASTCONV_DIRECT;
+}
+
+void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t)
+{
+	if (!t)
+		return;
+	for (int k = 0; k < t->nlev; k++) {
+		if (t->fw)
+			gsl_fft_real_wavetable_free(t->fw[k]);
+		if (t->bw)
+			gsl_fft_halfcomplex_wavetable_free(t->bw[k]);
+	}
+	free(t->fw);
+	free(t->bw);
+	free(t);
+}
+
+struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max)
+{
+	struct anvil_fastconv_fft *t = calloc(1, sizeof *t);
+	if (!t)
+		return NULL;
+	t->nlev = levels_of(cap);
+	t->direct_max = direct_of(direct_max);
+	t->fw = calloc((size_t)t->nlev + 1, sizeof *t->fw);
+	t->bw = calloc((size_t)t->nlev + 1, sizeof *t->bw);
+	if (!t->fw || !t->bw) {
+		anvil_fastconv_fft_free(t);
+		return NULL;
+	}
+	for (int k = 0; k < t->nlev; k++) {
+		size_t B = (size_t)1 << k;
+		if (B <= t->direct_max)
+			continue;
+		t->fw[k] = gsl_fft_real_wavetable_alloc(2 * B);
+		t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(2 * B);
+		if (!t->fw[k] || !t->bw[k]) {
+			anvil_fastconv_fft_free(t);
+			return NULL;
+		}
+	}
+	return t;
+}
 
 void anvil_fastconv_free(struct anvil_fastconv *f)
 {
 	if (!f)
 		return;
-	for (int k = 0; k < f->nlev; k++)
-		free(f->spec[k]);
-	free(f->spec);
-	free(f->g);
-	free(f->x);
+	for (int k = 0; f->lev && k < f->nlev; k++) {
+		free(f->lev[k].spec[0]);
+		free(f->lev[k].spec[1]);
+		gsl_fft_real_workspace_free(f->lev[k].ws);
+	}
+	free(f->lev);
+	anvil_fastconv_fft_free(f->own);
+	for (int i = 0; i < 2; i++) {
+		free(f->g[i]);
+		free(f->x[i]);
+		free(f->buf[i]);
+	}
 	free(f->acc);
-	free(f->buf);
 	free(f);
 }
 
-/* The kernel's spectrum for squares of side B: g_0 .. g_{2B-1}, zero past cap. */
-static double *level_spectrum(const struct anvil_fastconv *f, size_t B)
+/* Level k's workspace and the kernels' spectra for squares of side
+ * B = 2^k: g_0 .. g_{2B-1}, zero past cap.  -1 when out of memory. */
+static int level_init(struct anvil_fastconv *f, int k)
 {
-	double *s = calloc(2 * B, sizeof *s);
-	if (!s)
-		return NULL;
-	memcpy(s, f->g, (2 * B < f->cap ? 2 * B : f->cap) * sizeof *s);
-	gsl_fft_real_radix2_transform(s, 1, 2 * B);
-	return s;
+	size_t B = (size_t)1 << k;
+	struct level *l = &f->lev[k];
+	if (!(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
+		return -1;
+	for (int i = 0; i < f->nk; i++) {
+		double *sp = l->spec[i] = calloc(2 * B, sizeof *sp);
+		if (!sp)
+			return -1;
+		memcpy(sp, f->g[i], (2 * B < f->cap ? 2 * B : f->cap) * sizeof *sp);
+		if (gsl_fft_real_transform(sp, 1, 2 * B, f->fft->fw[k], l->ws))
+			return -1;
+	}
+	return 0;
 }
 
-struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max)
+static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
+					    size_t direct_max, const struct anvil_fastconv_fft *fft);
+
+struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
+						const struct anvil_fastconv_fft *fft)
+{
+	return alloc_kernels(&g, 1, cap, direct_max, fft);
+}
+
+struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
+						 size_t direct_max,
+						 const struct anvil_fastconv_fft *fft)
+{
+	const double *gh[2] = { g, h };
+	return alloc_kernels(gh, 2, cap, direct_max, fft);
+}
+
+static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
+					    size_t direct_max, const struct anvil_fastconv_fft *fft)
 {
 	if (!cap)
 		return NULL;
@@ -49,24 +160,32 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 	if (!f)
 		return NULL;
 	f->cap = cap;
-	f->direct_max = direct_max ? direct_max : ANVIL_FASTCONV_DIRECT;
-	while (((size_t)1 << f->nlev) < cap)
-		f->nlev++; /* squares have B < cap */
-	f->g = malloc(cap * sizeof *f->g);
-	f->x = calloc(cap, sizeof *f->x);
+	f->direct_max = direct_of(direct_max);
+	f->nlev = levels_of(cap);
+	if (fft && (fft->nlev < f->nlev || fft->direct_max > f->direct_max)) {
+		free(f);
+		return NULL; /* tables that do not cover these levels */
+	}
+	f->nk = nk;
+	f->fft = fft ? fft : (f->own = anvil_fastconv_fft_alloc(cap, f->direct_max));
+	int bad = !f->fft;
+	for (int i = 0; i < nk && !bad; i++) {
+		f->g[i] = malloc(cap * sizeof *f->g[i]);
+		f->x[i] = calloc(cap, sizeof *f->x[i]);
+		f->buf[i] = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf[i]);
+		if (!(bad = !f->g[i] || !f->x[i] || !f->buf[i]))
+			memcpy(f->g[i], g[i], cap * sizeof *g[i]);
+	}
 	f->acc = calloc(cap, sizeof *f->acc);
-	f->buf = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf);
-	f->spec = calloc((size_t)f->nlev + 1, sizeof *f->spec);
-	if (!f->g || !f->x || !f->acc || !f->buf || !f->spec) {
+	f->lev = calloc((size_t)f->nlev + 1, sizeof *f->lev);
+	if (bad || !f->acc || !f->lev) {
 		anvil_fastconv_free(f);
 		return NULL;
 	}
-	memcpy(f->g, g, cap * sizeof *g);
 	for (int k = 0; k < f->nlev; k++) {
-		size_t B = (size_t)1 << k;
-		if (B <= f->direct_max)
+		if (((size_t)1 << k) <= f->direct_max)
 			continue;
-		if (!(f->spec[k] = level_spectrum(f, B))) {
+		if (level_init(f, k)) {
 			anvil_fastconv_free(f);
 			return NULL;
 		}
@@ -74,11 +193,17 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 	return f;
 }
 
+struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max)
+{
+	return anvil_fastconv_alloc_fft(g, cap, direct_max, NULL);
+}
+
 void anvil_fastconv_reset(struct anvil_fastconv *f)
 {
-	memset(f->x, 0, f->cap * sizeof *f->x);
+	for (int i = 0; i < f->nk; i++)
+		memset(f->x[i], 0, f->cap * sizeof *f->x[i]);
 	memset(f->acc, 0, f->cap * sizeof *f->acc);
-	f->n = 0;
+	f->n = f->nz = 0;
 }
 
 double anvil_fastconv_next(const struct anvil_fastconv *f)
@@ -88,46 +213,87 @@ double anvil_fastconv_next(const struct anvil_fastconv *f)
 
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }
 
-/* Sources [L-B, L) into targets [L, min(L+B, cap)), directly. */
-static void square_direct(struct anvil_fastconv *f, size_t L, size_t B)
+/* Sources [L-B, L) into targets [L, min(L+B, cap)), directly: four
+ * targets at a time, each summed alone in the order m = L-B, L-B+1, ...
+ * (four independent chains where one stalled on the adder's latency:
+ * the same bits, 2-3 times faster). */
+static void square_direct(struct anvil_fastconv *f, const double *x, const double *g, size_t L,
+			  size_t B)
 {
-	size_t end = L + B < f->cap ? L + B : f->cap;
-	for (size_t t = L; t < end; t++) {
+	size_t end = L + B < f->cap ? L + B : f->cap, t = L;
+	for (; t + 4 <= end; t += 4) {
+		double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+		for (size_t m = L - B; m < L; m++) {
+			const double xm = x[m], *gm = g + (t - m);
+			s0 += xm * gm[0];
+			s1 += xm * gm[1];
+			s2 += xm * gm[2];
+			s3 += xm * gm[3];
+		}
+		f->acc[t] += s0;
+		f->acc[t + 1] += s1;
+		f->acc[t + 2] += s2;
+		f->acc[t + 3] += s3;
+	}
+	for (; t < end; t++) {
 		double s = 0;
 		for (size_t m = L - B; m < L; m++)
-			s += f->x[m] * f->g[t - m];
+			s += x[m] * g[t - m];
 		f->acc[t] += s;
 	}
 }
 
 /* The same square by a cyclic convolution of size 2B: for targets
- * L + i (i < B) the lags B + i - s lie in [1, 2B), so nothing wraps. */
-static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, const double *G)
+ * L + i (i < B) the lags B + i - s lie in [1, 2B), so nothing wraps.  A
+ * pair's two products are added in the spectrum: one inverse transform. */
+static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 {
+	const struct level *l = &f->lev[k];
 	size_t N = 2 * B, end = L + B < f->cap ? L + B : f->cap;
-	double *b = f->buf;
-	memcpy(b, f->x + (L - B), B * sizeof *b);
-	memset(b + B, 0, B * sizeof *b);
-	gsl_fft_real_radix2_transform(b, 1, N);
-	/* halfcomplex product: b[0], b[N/2] real; (b[j], b[N-j]) = (re, im) */
-	b[0] *= G[0];
-	b[B] *= G[B];
-	for (size_t j = 1; j < B; j++) {
-		double re = b[j] * G[j] - b[N - j] * G[N - j];
-		double im = b[j] * G[N - j] + b[N - j] * G[j];
-		b[j] = re;
-		b[N - j] = im;
+	for (int i = 0; i < f->nk; i++) {
+		memcpy(f->buf[i], f->x[i] + (L - B), B * sizeof *f->buf[i]);
+		memset(f->buf[i] + B, 0, B * sizeof *f->buf[i]);
+		gsl_fft_real_transform(f->buf[i], 1, N, f->fft->fw[k], l->ws);
 	}
-	gsl_fft_halfcomplex_radix2_inverse(b, 1, N);
+	/* mixed-radix halfcomplex product: b[0], b[N-1] real (frequencies 0
+	 * and N/2); (b[2j-1], b[2j]) = (re, im) of frequency j, 0 < j < N/2 */
+	double *b = f->buf[0];
+	const double *G = l->spec[0];
+	if (f->nk == 1) {
+		b[0] *= G[0];
+		b[N - 1] *= G[N - 1];
+		for (size_t j = 1; j + 1 < N; j += 2) {
+			double re = b[j] * G[j] - b[j + 1] * G[j + 1];
+			double im = b[j] * G[j + 1] + b[j + 1] * G[j];
+			b[j] = re;
+			b[j + 1] = im;
+		}
+	} else {
+		const double *c = f->buf[1], *H = l->spec[1];
+		b[0] = b[0] * G[0] + c[0] * H[0];
+		b[N - 1] = b[N - 1] * G[N - 1] + c[N - 1] * H[N - 1];
+		for (size_t j = 1; j + 1 < N; j += 2) {
+			double re = b[j] * G[j] - b[j + 1] * G[j + 1] + (c[j] * H[j] - c[j + 1] * H[j + 1]);
+			double im = b[j] * G[j + 1] + b[j + 1] * G[j] + (c[j] * H[j + 1] + c[j + 1] * H[j]);
+			b[j] = re;
+			b[j + 1] = im;
+		}
+	}
+	gsl_fft_halfcomplex_inverse(b, 1, N, f->fft->bw[k], l->ws);
 	for (size_t t = L; t < end; t++)
 		f->acc[t] += b[B + (t - L)];
 }
 
-int anvil_fastconv_push(struct anvil_fastconv *f, double x)
+int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y)
 {
-	if (f->n >= f->cap)
+	if (f->n >= f->cap || (f->nk == 1 && y != 0.0))
 		return -1;
-	f->x[f->n++] = x;
+	f->x[0][f->n] = x;
+	if (f->nk == 2)
+		f->x[1][f->n] = y;
+	f->n++;
+	if (x != 0.0 || y != 0.0)
+		f->nz = f->n;
 	size_t L = f->n;
 	if (L >= f->cap)
 		return 0; /* no target left */
@@ -135,9 +301,17 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x)
 	while (!((L >> k) & 1))
 		k++;
 	size_t B = (size_t)1 << k;
-	if (k < f->nlev && f->spec[k])
-		square_fft(f, L, B, f->spec[k]);
+	if (f->nz <= L - B)
+		return 0; /* sources all zero (free flight): the square adds nothing */
+	if (k < f->nlev && f->lev[k].spec[0])
+		square_fft(f, L, B, k);
 	else
-		square_direct(f, L, B);
+		for (int i = 0; i < f->nk; i++)
+			square_direct(f, f->x[i], f->g[i], L, B);
 	return 0;
+}
+
+int anvil_fastconv_push(struct anvil_fastconv *f, double x)
+{
+	return anvil_fastconv_push_pair(f, x, 0.0);
 }

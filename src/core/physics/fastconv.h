@@ -10,7 +10,7 @@
  * [2jB, (2j+1)B) against the targets [(2j+1)B, (2j+2)B), B = 2^k.  When
  * x_{L-1} is pushed, L = (2j+1)B with k = ctz(L), that one square is added
  * to the targets' accumulators: by direct products for B <= direct_max,
- * else by one real FFT of size 2B (GSL radix-2) against the level's kernel
+ * else by one real FFT of size 2B (GSL mixed-radix, tables made once) against the level's kernel
  * spectrum, computed once.  Exact in exact arithmetic; the rounding of an
  * FFT square is about eps log2(2B) sum |x_m g_{n-m}| (tests/test_fastconv.c
  * measures it).  Deterministic: the same pushes give the same bits. */
@@ -33,6 +33,28 @@ struct anvil_fastconv;
 struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t direct_max);
 void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
 
+/* The FFT tables (GSL wavetables, each level's size) of every convolution
+ * of capacity up to cap with squares summed directly up to direct_max
+ * (as anvil_fastconv_alloc's; or fewer), made once: read-only, shared by
+ * any number of convolutions, which must not outlive them.  NULL when out
+ * of memory. */
+struct anvil_fastconv_fft;
+struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max);
+void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t); /* NULL is a no-op */
+
+/* anvil_fastconv_alloc with the tables fft (borrowed; NULL: its own).
+ * NULL also when fft does not cover cap and direct_max. */
+struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
+						const struct anvil_fastconv_fft *fft);
+
+/* A pair: c_n = sum_{m < n} (x_m g_{n-m} + y_m h_{n-m}), pushed together
+ * (anvil_fastconv_push_pair); the two products of an FFT square are added
+ * in the spectrum, so the pair costs three transforms where two
+ * convolutions cost four.  As anvil_fastconv_alloc_fft otherwise. */
+struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
+						 size_t direct_max,
+						 const struct anvil_fastconv_fft *fft);
+
 /* Forget the pushed values (same kernel): as new. */
 void anvil_fastconv_reset(struct anvil_fastconv *f);
 
@@ -42,6 +64,10 @@ double anvil_fastconv_next(const struct anvil_fastconv *f);
 
 /* Push x_n; returns 0, or -1 when cap values have been pushed already. */
 int anvil_fastconv_push(struct anvil_fastconv *f, double x);
+
+/* Push x_n and y_n to a pair (a single convolution takes y_n = 0 only);
+ * returns 0, or -1 when full or y_n != 0 on a single one. */
+int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
 
 /* The number of values pushed. */
 size_t anvil_fastconv_count(const struct anvil_fastconv *f);

@@ -59,8 +59,11 @@ struct ctx {
 	double alpha_ref;
 	double tau_lag; /* the lag's low-pass (opts), s; 0: none */
 	double *dg;     /* its weights less g's, when ramp2 is given */
-	struct anvil_fastconv *fc; /* sum_m P_m g_{n-m}, for the pass at hand */
-	struct anvil_fastconv *fc2; /* sum_m Q_m dg_{n-m} (physical, ramp2 given) */
+	/* sum_m P_m g_{n-m}, for the pass at hand; with dg, a pair (fastconv.h)
+	 * that adds sum_m Q_m dg_{n-m} (physical, ramp2 given) */
+	struct anvil_fastconv *fc;
+	struct end_tab *tab; /* the contact ends' ramp values, for the pass at hand */
+	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
 	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
 	size_t max_contacts;          /* the budget (opts); 0: none */
 };
@@ -267,43 +270,97 @@ struct end_ctx {
 	double *R;      /* scratch: R(j dt + d), j = 0 .. k - m0 + 1 */
 };
 
-/* sum_{m < m0} F_m times the hat response through fn at t_k + d, off the
- * grid (0 < d < dt): R at (k - m) dt + d and its neighbours. */
-static double far_of(const struct end_ctx *e, const double *F, anvil_ramp_fn fn, void *fctx,
-		     double d)
+/* The ramp responses off the grid that the far past needs at every
+ * contact end of a pass: R(j dt + d_i), d_i = i dt/3 (i = 1, 2, 3; end_ctx_init),
+ * for j < len, through ramp (r = 0) and ramp2 (r = 1).  Filled once per pass
+ * as far as the latest end needs, so a contact end costs O(n) sums, not
+ * O(n) ramp evaluations, and the repeated contacts of a thin plate reuse
+ * them; the values are those each end computed for itself (same bits). */
+struct end_tab {
+	size_t len[2][4];
+	double *R[2][4]; /* cap + 1 each, allocated when first needed */
+};
+
+static void end_tab_free(struct end_tab *t)
+{
+	for (int r = 0; r < 2; r++)
+		for (int i = 0; i < 4; i++)
+			free(t->R[r][i]);
+	memset(t, 0, sizeof *t);
+}
+
+/* R(j dt + d) through ramp r for j <= jmax (<= cap) in t's row (r, i);
+ * NULL when out of memory. */
+static const double *end_tab_get(const struct ctx *c, const struct pass *s, int r, int i,
+				 double d, size_t jmax)
+{
+	struct end_tab *t = c->tab;
+	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
+	void *fctx = r ? c->rctx2 : c->rctx;
+	if (!t->R[r][i] && !(t->R[r][i] = malloc((s->cap + 1) * sizeof **t->R)))
+		return NULL;
+	for (size_t j = t->len[r][i]; j <= jmax; j++)
+		ramp_of(c, fn, fctx, (double)j * s->dt + d, &t->R[r][i][j]);
+	if (jmax + 1 > t->len[r][i])
+		t->len[r][i] = jmax + 1;
+	return t->R[r][i];
+}
+
+/* sum_{m < m0} F_m times the hat response at t_k + d, off the grid
+ * (0 < d < dt), from R(j dt + d) (end_tab): lag k - m rising. */
+static double far_of(const struct end_ctx *e, const double *F, const double *R)
 {
 	const double dt = e->s->dt;
 	size_t k = e->k;
-	double w = 0, Rm = 0, R0, Rp;
-	ramp_of(e->c, fn, fctx, (double)(k - e->m0) * dt + d, &R0);
-	ramp_of(e->c, fn, fctx, (double)(k - e->m0 + 1) * dt + d, &Rp);
-	for (size_t m = e->m0 - 1; m >= 1; m--) { /* lag k - m rising */
-		Rm = R0;
-		R0 = Rp;
-		ramp_of(e->c, fn, fctx, (double)(k - m + 1) * dt + d, &Rp);
-		w += F[m] * (Rp - 2.0 * R0 + Rm) / dt;
+	double w = 0;
+	for (size_t m = e->m0 - 1; m >= 1; m--) {
+		size_t j = k - m;
+		w += F[m] * (R[j + 1] - 2.0 * R[j] + R[j - 1]) / dt;
 	}
 	return w;
 }
 
-/* The far past's deflection at t_k + d (m < m0), exactly; with the true
- * contact radius (dg), the loads' Q through ramp2 - ramp as well. */
-static double far_exact(const struct end_ctx *e, double d)
+/* far_of(P, R) + (far_of(Q, R2) - far_of(Q, R)) in one sweep (each sum in
+ * far_of's order: the same bits, a third of the memory traffic). */
+static double far_of2(const struct end_ctx *e, const double *P, const double *Q,
+		      const double *R, const double *R2)
+{
+	const double dt = e->s->dt;
+	size_t k = e->k;
+	double wp = 0, wq = 0, wq2 = 0;
+	for (size_t m = e->m0 - 1; m >= 1; m--) {
+		size_t j = k - m;
+		double h = R[j + 1] - 2.0 * R[j] + R[j - 1];
+		wp += P[m] * h / dt;
+		wq += Q[m] * h / dt;
+		wq2 += Q[m] * (R2[j + 1] - 2.0 * R2[j] + R2[j - 1]) / dt;
+	}
+	return wp + (wq2 - wq);
+}
+
+/* The far past's deflection at t_k + d, d = i dt/3 (m < m0), exactly; with
+ * the true contact radius (dg), the loads' Q through ramp2 - ramp as well.
+ * ANVIL_ENOMEM when the table cannot be had. */
+static int far_exact(const struct end_ctx *e, int i, double *val)
 {
 	const struct ctx *c = e->c;
-	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt;
+	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt, d = dt * i / 3.0;
 	size_t k = e->k;
-	double w = 0;
 	if (d == 0.0 || d == dt) { /* on the grid: the weights */
+		double w = 0;
 		size_t sh = d == 0.0 ? 0 : 1;
 		for (size_t m = 1; m < e->m0; m++)
 			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
-		return w;
+		*val = w;
+		return ANVIL_OK;
 	}
-	w = far_of(e, P, c->ramp, c->rctx, d);
-	if (c->dg)
-		w += far_of(e, Q, c->ramp2, c->rctx2, d) - far_of(e, Q, c->ramp, c->rctx, d);
-	return w;
+	const double *R = end_tab_get(c, e->s, 0, i, d, k), *R2 = NULL;
+	if (R && c->dg)
+		R2 = end_tab_get(c, e->s, 1, i, d, k);
+	if (!R || (c->dg && !R2))
+		return ANVIL_ENOMEM;
+	*val = c->dg ? far_of2(e, P, Q, R, R2) : far_of(e, P, R);
+	return ANVIL_OK;
 }
 
 static double far_cubic(const struct end_ctx *e, double d)
@@ -362,9 +419,10 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
 		e->S0 += s->P[m];
 		e->S1 += s->P[m] * (double)m * s->dt;
 	}
-	for (int i = 0; i < 4 && e->m0 > 1; i++)
-		e->far[i] = far_exact(e, s->dt * i / 3.0);
-	e->R = malloc((k - e->m0 + 3) * sizeof *e->R);
+	int st = ANVIL_OK;
+	for (int i = 0; i < 4 && e->m0 > 1 && !st; i++)
+		st = far_exact(e, i, &e->far[i]);
+	e->R = st ? NULL : malloc((k - e->m0 + 3) * sizeof *e->R);
 	return e->R ? ANVIL_OK : ANVIL_ENOMEM;
 }
 
@@ -630,8 +688,8 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * paper's contact).  The march goes on through repeated contacts as in
  * pass_implicit: out of contact P = Q = 0, w = w_c (the layer's free
  * response), until the two have parted for good.  The past's sums come
- * from the online fast convolutions: P against g (fc) and, with the true
- * radius, Q against dg = g2 - g (fc2). */
+ * from the online fast convolution: P against g (fc) and, with the true
+ * radius, Q against dg = g2 - g (fc a pair). */
 static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
@@ -646,18 +704,13 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 	s->on[0] = 0;
 	anvil_fastconv_reset(c->fc);
 	anvil_fastconv_push(c->fc, 0.0);
-	if (c->fc2) {
-		anvil_fastconv_reset(c->fc2);
-		anvil_fastconv_push(c->fc2, 0.0);
-	}
 	for (size_t n = 1; n < s->cap; n++) {
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
 		if (c->dg) {
 			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load
-			 * (by the second convolution, of Q against dg); the current one's
+			 * (in conv: fc's second kernel, Q against dg); the current one's
 			 * (in g0 only, zero before the bottom reflection) extrapolated,
 			 * second order; alpha_H = 0 at a node out of contact */
-			conv += anvil_fastconv_next(c->fc2);
 			double q1 = s->P[n - 1] > 0 ? s->Q[n - 1] / s->P[n - 1] : 0.0;
 			double q2 = n >= 3 && s->P[n - 2] > 0 ? s->Q[n - 2] / s->P[n - 2] : q1;
 			g0 += (2.0 * q1 - q2) * c->dg[0];
@@ -702,9 +755,7 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		anvil_fastconv_push(c->fc, P);
-		if (c->fc2)
-			anvil_fastconv_push(c->fc2, s->Q[n]);
+		anvil_fastconv_push_pair(c->fc, P, s->Q[n]);
 		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
@@ -770,11 +821,10 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 	if (!st)
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
-	anvil_fastconv_free(c->fc2);
-	c->fc = c->fc2 = NULL;
-	if (!st && !(c->fc = anvil_fastconv_alloc(c->g, cap, direct_max)))
-		st = ANVIL_ENOMEM;
-	if (!st && c->dg && !(c->fc2 = anvil_fastconv_alloc(c->dg, cap, direct_max)))
+	c->fc = NULL;
+	end_tab_free(c->tab); /* a new dt */
+	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, cap, direct_max, c->fft)
+				   : anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
@@ -903,6 +953,14 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
 	struct pass a = {0}, b = {0};
+	struct end_tab tab = {0};
+	c.tab = &tab;
+	/* the FFT tables of the finer pass's capacity (run_pass) serve both */
+	struct anvil_fastconv_fft *fft =
+		anvil_fastconv_fft_alloc((size_t)fmax(tau_avail * p->r0 / p->c2 / (0.5 * dt), 1.0),
+					 o->direct_max);
+	if (!(c.fft = fft))
+		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	if (!st)
 		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, &b);
@@ -930,8 +988,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	}
 	free(c.g);
 	anvil_fastconv_free(c.fc);
-	anvil_fastconv_free(c.fc2);
 	free(c.dg);
+	end_tab_free(&tab);
+	anvil_fastconv_fft_free(fft);
 	pass_free(&a);
 	pass_free(&b);
 	return st;
