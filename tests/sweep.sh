@@ -263,6 +263,8 @@ assert "...a heat map with contours over the 3 x 3 grid" \
 	sh -c 'grep -q "set contour base" rm.gp && grep -q "with pm3d" rm.gp && [ $(grep -c "^[0-9.e+-]* [0-9.e+-]* [0-9.e+-]*$" rm.gp) -eq 9 ]'
 check "a V0 x h sweep with both contacts" $ANVIL sweep $D -m layer -s effects.contact=both impact.velocity=1..10m/s:3:log layer.thickness=1r0,2r0 -o mapb.tsv -q
 check "...its map" $ANVIL plot restitution-map mapb.tsv --script rmb.gp
+assert "...its axes labelled at the swept values (a log axis under a decade has no labelled tic of gnuplot's own)" \
+	sh -c 'grep -q "^set ytics (\"1\" 1, \"2\" 2)" rmb.gp && grep -q "^set xtics (\"1\" 1, " rmb.gp'
 assert "...is the physical contact's, named in the title, 3 x 2 cells" \
 	sh -c 'grep -q "physical contact" rmb.gp && [ $(grep -c "^[0-9.e+-]* [0-9.e+-]* [0-9.e+-]*$" rmb.gp) -eq 6 ]'
 check_exit 2 "restitution-map: a file that is not a sweep's" $ANVIL plot restitution-map dem.csv --script x.gp

@@ -829,6 +829,20 @@ int plot_chart_rf_velocity_groups(struct plot_chart *c, const struct plot_run *r
 
 /* ------------------------------------------------ R_f over V0 x h */
 
+/* A log axis over less than a decade or two gets one labelled tic (or
+ * none) from gnuplot: label the swept values themselves when there are
+ * few of them (ascending, as the map's axes are). */
+#define MAP_TICS_MAX 10
+static void map_tics(FILE *f, const char *axis, const double *x, size_t n)
+{
+	if (n > MAP_TICS_MAX)
+		return;
+	fprintf(f, "set %stics (", axis);
+	for (size_t i = 0; i < n; i++)
+		fprintf(f, "%s\"%.3g\" %.6g", i ? ", " : "", x[i], x[i]);
+	fputs(")\n", f);
+}
+
 int plot_rf_map_write(FILE *f, const struct plot_rf_map *m, const struct plot_opts *o)
 {
 	int finite = 0;
@@ -849,7 +863,7 @@ int plot_rf_map_write(FILE *f, const struct plot_rf_map *m, const struct plot_op
 		plot_put_quoted(f, m->subtitle);
 		fputs(" at screen 0.5, screen 0.91 center font ',9' noenhanced\n", f);
 	}
-	fputs("set xlabel 'impact velocity V_0 (m/s)'\nset ylabel 'layer thickness h / r_0'\n"
+	fputs("set xlabel 'impact velocity V_0 (m/s)'\nset ylabel 'layer thickness h / r_0' offset -2,0\n"
 	      "set cblabel 'coefficient of restitution R_f'\nset cbrange [0:1]\n"
 	      "set view map\nset logscale xy\nset tics out\nset key off\n"
 	      "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', "
@@ -859,6 +873,8 @@ int plot_rf_map_write(FILE *f, const struct plot_rf_map *m, const struct plot_op
 	      "set cntrlabel onecolor format '%.1f' start 2 interval 30 font ',8'\n", f);
 	fprintf(f, "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n", m->v0[0], m->v0[m->nv - 1],
 		m->h_r0[0], m->h_r0[m->nh - 1]);
+	map_tics(f, "x", m->v0, m->nv);
+	map_tics(f, "y", m->h_r0, m->nh);
 	fputs("$map << EOD\n", f);
 	for (size_t ih = 0; ih < m->nh; ih++) {
 		for (size_t iv = 0; iv < m->nv; iv++) {
