@@ -54,8 +54,8 @@ check_exit 2 'in a scene file' "$ANVIL" run "$tmp/bad.scene"
 assert '  naming file, line and key' grep -q 'bad.scene:2: effects.contact' "$tmp/err"
 
 # Repeated contacts in the physical pass are tested in test_physical.c (h =
-# r0/4, fast convolution against the direct sum); a whole run of that scene
-# from here takes minutes at draft (thin-layer chatter: issue 11).
+# r0/4, fast convolution against the direct sum) and test_thin.c (merged
+# sub-resolution separations, the contact budget, thin-layer refusals).
 
 # ---- anvil plot models (the script: no gnuplot needed) ----
 check 'plot models --script' "$ANVIL" plot models --script "$tmp/m.gp"
