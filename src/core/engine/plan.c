@@ -757,7 +757,7 @@ static int thin_refuse(const struct anvil_params *p, enum anvil_model m, struct 
 	if (!(a > p->h))
 		return ANVIL_OK;
 	return anvil_err_set(err, ANVIL_EINVAL,
-			     "%s: not computed: the contact radius a = %.3g mm (Zener's plate, the smallest estimate) exceeds h = %.3g mm (a/h = %.2g): Hertz's law for a half-space does not hold",
+			     "%s: the contact radius a = %.3g mm (Zener's plate, the smallest estimate) exceeds h = %.3g mm (a/h = %.2g): Hertz's law for a half-space does not hold",
 			     anvil_model_name(m), a * 1e3, p->h * 1e3, a / p->h);
 }
 

@@ -567,12 +567,12 @@ static int thin_check(const struct anvil_params *p, const struct anvil_result *r
 	double ph = p->K * pow(anvil_hertz_alpha_max() * p->T * p->V0, 1.5);
 	if (r->Pmax.val > 1.05 * ph)
 		return anvil_err_set(err, ANVIL_ENUM,
-				     "%s: not computed: the computed P_max = %.3g N exceeds the rigid anvil's %.3g N, which bounds it (energy): the time stepping is unstable for this scene",
+				     "%s: the computed P_max = %.3g N exceeds the rigid anvil's %.3g N, which bounds it (energy): the time stepping is unstable for this scene",
 				     anvil_model_name(r->model), r->Pmax.val, ph);
 	if (!(a > p->h))
 		return ANVIL_OK;
 	return anvil_err_set(err, ANVIL_EINVAL,
-			     "%s: not computed: the contact radius a = %.3g mm (from the computed P_max = %.3g N) exceeds h = %.3g mm (a/h = %.2g): Hertz's law for a half-space does not hold",
+			     "%s: the contact radius a = %.3g mm (from the computed P_max = %.3g N) exceeds h = %.3g mm (a/h = %.2g): Hertz's law for a half-space does not hold",
 			     anvil_model_name(r->model), a * 1e3, r->Pmax.val, p->h * 1e3, a / p->h);
 }
 

@@ -977,7 +977,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		st = ANVIL_ETOL;
 		r->ts.val = INFINITY;
 		anvil_err_set(err, st,
-			      "not computed: the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution); the thin-plate model 'zener' applies here",
+			      "the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution); the thin-plate model 'zener' applies here",
 			      o->max_contacts);
 	} else if (st == ANVIL_ETOL) {
 		r->ts.val = NAN;
