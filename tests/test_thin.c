@@ -27,10 +27,15 @@ struct thin {
 };
 
 static const struct thin scenes[] = {
-	/* unstable time stepping (P pumped up past the energy bound) or a
-	 * runaway: refused, never minutes */
-	{ "r4: h = 0.02 r0, 0.1 g, 10 m/s", "0.02r0", "0.1g", "10m/s", NULL, "", 0 },
-	{ "r5: h = 0.02 r0, 0.1 g, 0.1 m/s", "0.02r0", "0.1g", "0.1m/s", NULL, "exceeds the rigid anvil", 0 },
+	/* once kicked every T1 = 64 r0/c2 (80 us) by a step in the layer
+	 * correction where the plate took over (plate.c, blend), pumped past
+	 * the energy bound or lost at a contact's end: now a bounded answer
+	 * (draft: P_max 6.6 +- 0.8 N, 4 contacts; Zener's plate, lambda* =
+	 * 89: 6.25 N) */
+	{ "r4: h = 0.02 r0, 0.1 g, 10 m/s", "0.02r0", "0.1g", "10m/s", NULL, NULL, 0 },
+	/* the impactor comes to rest on the unbounded plate: gaps of pm over
+	 * tens of ms, more contacts than the budget: refused, never minutes */
+	{ "r5: h = 0.02 r0, 0.1 g, 0.1 m/s", "0.02r0", "0.1g", "0.1m/s", NULL, "touch again more than", 0 },
 	/* a/h = 2 on Zener's plate: Hertz's half-space law does not hold */
 	{ "r6: h = 0.1 r0, 0.1 g, 1000 m/s", "0.1r0", "0.1g", "1000m/s", NULL,
 	  "exceeds h", 0 },
@@ -101,7 +106,7 @@ int main(void)
 		   "  P_max > 0, t_s > 0, R_f in [0, 1], E_a >= 0, 1 to %d contacts",
 		   ANVIL_MAX_RUN_CONTACTS);
 		if (!x->normal) {
-			/* lambda* = 63: Zener's R_f = exp(-1.72 lambda*) ~ 1e-47 */
+			/* lambda* = 63 and 89: Zener's R_f = exp(-1.72 lambda*) ~ 1e-47 */
 			ok(sd >= 0 && d.Rf.val - d.Rf.err <= 1e-3 && d.ncontacts <= 4,
 			   "  R_f ~ 0 (the plate carries the energy off), the co-moving phase one contact");
 			anvil_result_free(&d);

@@ -51,8 +51,10 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 4 /* disk format version (2: the window index in the key;
-				 3: the twin flag; 4: the load and patch radius) */
+#define ANVIL_CACHE_FORMAT 5 /* disk format version (2: the window index in the key;
+				 3: the twin flag; 4: the load and patch radius; 5: the
+				 plate's blended join at T1, plate.c: a response from
+				 before holds the stepped join and other bits) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -1,3 +1,4 @@
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +22,9 @@
  * (opts.max_contacts): ANVIL_ETOL to the caller, with t_s finite (no
  * longer window tried) and its own message. */
 #define IMPACT_BUDGET (-100)
+/* A pass's status when a contact's end cannot be bracketed (finish_exact):
+ * ANVIL_ENUM to the caller, with a message that says when and what to do. */
+#define IMPACT_END_LOST (-101)
 
 /* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
 struct pass {
@@ -429,6 +433,11 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
 /* Relative size of a wrong sign at the contact end's bracket taken for
  * rounding (finish_exact): far above 1e-16, far below any real mismatch. */
 #define END_FLAT 1e-9
+/* The same in ulps of alpha_end's largest term, V0 (t_k + dt): a grazing
+ * contact (P ~ 1e-18 N late in a long thin-plate run, issue 11) has both
+ * ends near zero, where END_FLAT against the other end asks for digits
+ * that the difference V0 t - mom/m1 - w cannot have. */
+#define END_ULPS 64.0
 
 /* The end of the contact whose last node in contact is k = s->n - 1:
  * *toff its time, *ioff the impulse up to it (impulse: up to t_k). */
@@ -452,12 +461,15 @@ static int finish_exact(const struct ctx *c, const struct pass *s, double impuls
 	 * end is at rounding level against the other (END_FLAT), the end is at
 	 * that edge; anything larger is a failure (a runaway: tests/test_contact.c). */
 	double flo = alpha_end(lo, &e), fhi = alpha_end(hi, &e);
+	double ulp = END_ULPS * DBL_EPSILON * c->p->V0 * (double)(k + 1) * s->dt;
 	if (!(flo > 0 && fhi < 0)) {
 		gsl_root_fsolver_free(rs);
 		free(e.R);
-		if (!(fhi >= 0 && fhi <= END_FLAT * fabs(flo)) &&
-		    !(flo <= 0 && -flo <= END_FLAT * fabs(fhi)))
-			return ANVIL_ENUM;
+		if (!(fhi >= 0 && fhi <= fmax(END_FLAT * fabs(flo), ulp)) &&
+		    !(flo <= 0 && -flo <= fmax(END_FLAT * fabs(fhi), ulp))) {
+			*toff = (double)k * s->dt; /* for the message (anvil_impact_run) */
+			return IMPACT_END_LOST;
+		}
 		d = fhi >= 0 ? hi : lo;
 		*toff = (double)k * s->dt + d;
 		*ioff = impulse + 0.5 * s->P[k] * d;
@@ -502,7 +514,7 @@ static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n
 	}
 	if (!st && s->ncont <= ANVIL_MAX_CONTACTS)
 		s->off[s->ncont - 1] = toff;
-	s->ts = toff;
+	s->ts = toff; /* IMPACT_END_LOST: where it was lost */
 	return st;
 }
 
@@ -962,8 +974,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	if (!(c.fft = fft))
 		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
+	struct pass *last = &a; /* the pass that ran last, for the messages */
 	if (!st)
-		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, &b);
+		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, last = &b);
 	if (!st && o->single) { /* the dt pass alone; its error vs dt/2 */
 		fill(r, p, &a, &b, ANVIL_SCHEME_PAPER);
 		if (o->nhist > 1)
@@ -983,6 +996,11 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		r->ts.val = NAN;
 		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",
 			      tau_avail * p->r0 / p->c2 * 1e6);
+	} else if (st == IMPACT_END_LOST) {
+		st = ANVIL_ENUM;
+		anvil_err_set(err, st,
+			      "impact: the contact's end near t = %.4g us is lost (the approach has no zero within the step of %.3g us): the time stepping ran away there; a higher solver.accuracy or a smaller solver.dt may settle it",
+			      last->ts * 1e6, last->dt * 1e6);
 	} else if (st) {
 		anvil_err_set(err, st, "impact: %s", anvil_strerror(st));
 	}

@@ -85,8 +85,9 @@ int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, doub
  * contact needs (impact.h), the static indentation being Hertz's.  Against
  * the true contact radius a its error is O((a/h)^2) (doc/contact-model.md).
  * Such a response is not for the cache: anvil_green_samples has no patch;
- * nor has it a twin, and a patch other than r0 is inverted over its whole
- * window (plate.c's long-time K is the r0 patch's). */
+ * nor has it a twin.  A long window is continued by the plate as for r0
+ * (plate.h): K is the r0 patch's, and what another patch changes at late
+ * times (its t log t, t and constant terms) is in the fitted part. */
 struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
 					    double patch, double tau_end,
 					    const struct anvil_green_settings *gs,
