@@ -15,6 +15,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "scene_run.h"
+#include "result_check.h"
 #include "tap.h"
 
 struct repro {
@@ -47,17 +48,6 @@ static int run_one(struct anvil_solver *s, const struct repro *x, enum anvil_acc
 	return st;
 }
 
-static int sane(const struct anvil_result *r)
-{
-	return isfinite(r->Pmax.val) && r->Pmax.val > 0 && isfinite(r->ts.val) && r->ts.val > 0 &&
-	       r->Rf.val >= 0 && r->Rf.val <= 1 && r->Ea.val >= 0;
-}
-
-static int within(const struct anvil_val *a, const struct anvil_val *b)
-{
-	return fabs(a->val - b->val) <= a->err + b->err;
-}
-
 int main(void)
 {
 	gsl_set_error_handler_off();
@@ -76,10 +66,10 @@ int main(void)
 		     n.Rf.err, n.ncontacts);
 		ok(sd >= 0 && sn >= 0, "%s: draft and normal run (no numerical failure)",
 		   repros[i].name);
-		ok(sd >= 0 && sn >= 0 && sane(&d) && sane(&n),
+		ok(sd >= 0 && sn >= 0 && result_sane(&d) && result_sane(&n),
 		   "  P_max > 0, t_s > 0, R_f in [0, 1], E_a >= 0");
-		ok(sd >= 0 && sn >= 0 && within(&d.Pmax, &n.Pmax) && within(&d.ts, &n.ts) &&
-		   within(&d.Rf, &n.Rf) && within(&d.Ea, &n.Ea),
+		ok(sd >= 0 && sn >= 0 && val_within(&d.Pmax, &n.Pmax) && val_within(&d.ts, &n.ts) &&
+		   val_within(&d.Rf, &n.Rf) && val_within(&d.Ea, &n.Ea),
 		   "  draft and normal agree within their stated errors");
 		anvil_result_free(&d);
 		anvil_result_free(&n);

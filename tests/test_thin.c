@@ -18,6 +18,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "scene_run.h"
+#include "result_check.h"
 #include "tap.h"
 
 struct thin {
@@ -68,13 +69,7 @@ static int run_one(struct anvil_solver *s, const struct thin *x, enum anvil_accu
 
 static int sane(const struct anvil_result *r)
 {
-	return isfinite(r->Pmax.val) && r->Pmax.val > 0 && isfinite(r->ts.val) && r->ts.val > 0 &&
-	       r->Rf.val >= 0 && r->Rf.val <= 1 && r->Ea.val >= 0 && isfinite(r->Rf.err);
-}
-
-static int within(const struct anvil_val *a, const struct anvil_val *b)
-{
-	return fabs(a->val - b->val) <= a->err + b->err;
+	return result_sane(r) && isfinite(r->Rf.err);
 }
 
 int main(void)
@@ -116,8 +111,8 @@ int main(void)
 		diag("%s: normal status %d, P_max %.6g +- %.2g N, t_s %.6g +- %.2g us, R_f %.4g +- %.2g, %zu contacts",
 		     x->name, sn, n.Pmax.val, n.Pmax.err, n.ts.val * 1e6, n.ts.err * 1e6, n.Rf.val,
 		     n.Rf.err, n.ncontacts);
-		ok(sd >= 0 && sn >= 0 && sane(&n) && within(&d.Pmax, &n.Pmax) && within(&d.ts, &n.ts) &&
-		   within(&d.Rf, &n.Rf) && within(&d.Ea, &n.Ea),
+		ok(sd >= 0 && sn >= 0 && sane(&n) && val_within(&d.Pmax, &n.Pmax) && val_within(&d.ts, &n.ts) &&
+		   val_within(&d.Rf, &n.Rf) && val_within(&d.Ea, &n.Ea),
 		   "  draft and normal agree within their stated errors");
 		anvil_result_free(&d);
 		anvil_result_free(&n);
