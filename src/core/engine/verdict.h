@@ -81,6 +81,12 @@ int anvil_verdict_at(const struct anvil_problem *pb, double P, double t, struct 
  * are the solver's cache's: a run of the same plan costs no second run. */
 int anvil_solver_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 			 struct anvil_verdict *v, struct anvil_err *err);
+/* The same, given the layer row's result when the caller has it (NULL:
+ * run it when the long-contact rule below needs it): a long contact's
+ * verdict then costs no second run of the row. */
+int anvil_solver_verdict_with(struct anvil_solver *s, const struct anvil_plan *pl,
+			      const struct anvil_result *layer, struct anvil_verdict *v,
+			      struct anvil_err *err);
 /* A finite layer's contact longer than this many times 2h/c1 (the plan's
  * estimate) is quasi-static near the contact: anvil_solver_verdict gives
  * anvil_verdict_at the layer row's own P_max and t_max (v->qs_ratio set)

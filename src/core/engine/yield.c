@@ -61,29 +61,43 @@ int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
  * Hertz at the layer row's own P_max (the row as the plan runs it, its
  * responses from the solver's cache). */
 static int long_contact_verdict(struct anvil_solver *s, const struct anvil_plan *pl, double ratio,
-				struct anvil_verdict *v, struct anvil_err *err)
+				const struct anvil_result *given, struct anvil_verdict *v,
+				struct anvil_err *err)
 {
 	struct anvil_result r;
-	int st = anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, 0, &r, err);
+	const struct anvil_result *row = given;
+	int st = given ? given->status : anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, 0, &r, err);
+	if (!given)
+		row = &r;
+	if (st < 0 && given)
+		st = anvil_err_set(err, st, "%s", given->why[0] ? given->why : anvil_strerror(st));
 	if (st >= 0) {
-		int vs = anvil_verdict_at(&pl->pb, r.Pmax.val, r.tmax.val, v);
+		int vs = anvil_verdict_at(&pl->pb, row->Pmax.val, row->tmax.val, v);
 		v->qs_ratio = ratio;
 		if (vs)
 			st = anvil_err_set(err, vs, "the layer row's P_max (%g N) gives no Hertz contact",
-					   r.Pmax.val);
+					   row->Pmax.val);
 	}
-	anvil_result_free(&r);
+	if (!given)
+		anvil_result_free(&r);
 	return st;
 }
 
 int anvil_solver_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 			 struct anvil_verdict *v, struct anvil_err *err)
 {
+	return anvil_solver_verdict_with(s, pl, NULL, v, err);
+}
+
+int anvil_solver_verdict_with(struct anvil_solver *s, const struct anvil_plan *pl,
+			      const struct anvil_result *layer, struct anvil_verdict *v,
+			      struct anvil_err *err)
+{
 	int st;
 	struct anvil_err e2 = {0};
 	double ratio = pl->row[ANVIL_MODEL_LAYER].job.ts / pl->fig[ANVIL_FIG_T_REFLECT];
 	if (isfinite(pl->pb.p.h) && ratio > ANVIL_VERDICT_QS_RATIO)
-		return long_contact_verdict(s, pl, ratio, v, err);
+		return long_contact_verdict(s, pl, ratio, layer, v, err);
 	struct anvil_field *f = row_field(s, pl, 1, &st, err);
 	if (!f)
 		return st;

@@ -280,15 +280,21 @@ static void run_plan(const struct anvil_plan *pl, const struct run_opts *o)
  * solver's cache holds its responses), else quasi-static Hertz.  A failed
  * verdict is said, and does not fail the run. */
 static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
-			const struct run_opts *o)
+			const struct anvil_result *res, int n, const struct run_opts *o)
 {
 	struct anvil_verdict v;
 	struct anvil_err err = {0};
 	char line[320];
 	if (o->quiet)
 		return;
+	/* the layer row as the plan runs it, already computed (a long
+	 * contact's verdict is at its P_max: no second run) */
+	const struct anvil_result *layer = NULL;
+	for (int i = 0; i < n && !layer; i++)
+		if (res[i].model == ANVIL_MODEL_LAYER && res[i].contact == pl->row[ANVIL_MODEL_LAYER].contact)
+			layer = &res[i];
 	unsigned waves = (1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE);
-	int st = pl->pb.run & waves ? anvil_solver_verdict(s, pl, &v, &err)
+	int st = pl->pb.run & waves ? anvil_solver_verdict_with(s, pl, layer, &v, &err)
 				    : anvil_verdict_make(&pl->pb, NULL, &v, &err);
 	if (st < 0) {
 		cli_error("warning: no verdict on the layer: %s",
@@ -409,7 +415,7 @@ static int run_scene(struct run_opts *o)
 	}
 	code = run_models(s, &pl, &sc, o, res, &n, &tol, &failed);
 	if (!code)
-		run_verdict(s, &pl, o);
+		run_verdict(s, &pl, res, n, o);
 	anvil_solver_free(s);
 	if (!code) {
 		tol |= run_unphysical(res, n);
