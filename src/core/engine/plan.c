@@ -13,7 +13,6 @@
 #include "kernel.h"
 #include "material.h"
 #include "plan.h"
-#include "plate.h"
 #include "radiation.h"
 #include "zener.h"
 
@@ -297,7 +296,7 @@ static double bending(const struct anvil_params *p)
  *                  on the half-space or the static anvil (interpolation in
  *                  the sampled ramp);
  *   COST_HALFSPACE the exact half-space response (0.03-0.1 ms).
- * The count of kernel evaluations mirrors green.c's k_integral: the
+ * The count of kernel evaluations (plan_work.c) mirrors green.c's k_integral: the
  * starting panels (of width min(1, 2/hh) over the band that holds the
  * Lamb-mode poles, 4 beyond), 21 nodes each (real and imaginary parts
  * share them), times the adaptive splitting's extra work (refine()).
@@ -311,69 +310,6 @@ static double bending(const struct anvil_params *p)
 #define IMPACT_SQ_HS 1.1e-9
 #define IMPACT_LIN_LAYER 2.7e-6
 #define IMPACT_FFT_LAYER 3.2e-9
-
-static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc);
-
-/* The adaptive splitting's work over the starting panels: it bisects
- * towards each Lamb-mode pole until the pieces are as narrow as the poles'
- * distance from the real axis, about c0/c_group with c0 = c0T/(2 tau_end),
- * so about log2 of (starting width w0 = min(1, 2/hh)) / c0 splittings per
- * pole, and a thin layer has fewer poles per starting panel (the factor
- * min(1, hh/2)^(1/4)).  Fitted on 383 responses (tests/test_work.c's
- * generator, another seed, h/r0 0.18-25, draft and normal): the
- * prediction was within 0.73-1.36 of the count; the form before (a
- * function of hh alone) was off by 0.33-2.2. */
-static double refine(double hh, double tau_end)
-{
-	double w0 = fmin(1.0, 2.0 / hh), l = fmax(0.0, log2(tau_end * w0 / 16.0));
-	return 1.0 + 0.5 * pow(l, 1.25) * pow(fmin(1.0, 0.5 * hh), 0.25);
-}
-
-/* Terms summed exactly up to this many; beyond, every stride-th term
- * stands for stride of them (the panel count varies slowly with n), so
- * the planner's work is bounded whatever the scene (a 10 um radius asks
- * for millions of terms, which the solver then refuses). */
-#define CORR_SAMPLES 4096.0
-
-double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
-			     enum anvil_accuracy acc)
-{
-	double xr;
-	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
-		return NAN;
-	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc);
-}
-
-double anvil_plan_inversion_window(double hh, double tau_end)
-{
-	double tq = anvil_cache_grid(anvil_cache_grid_up(tau_end)); /* as the solver asks */
-	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tq) : 0.0;
-	return t1 > 0 ? t1 : tau_end;
-}
-
-static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc)
-{
-	struct anvil_green_settings gs;
-	double t1 = anvil_plate_t1(hh, tau_end);
-	if (t1 > 0) /* the inversion covers [0, T1], the plate the rest (plate.h) */
-		tau_end = t1;
-	anvil_green_settings(acc, &gs);
-	double Tp = 2.0 * tau_end, c0 = gs.c0T / Tp, L = -log(gs.ktail), panels = 0;
-	double M = ceil(omega * Tp / M_PI), w0 = fmin(1.0, 2.0 / hh);
-	double stride = M + 1 > CORR_SAMPLES ? ceil((M + 1) / CORR_SAMPLES) : 1.0;
-	if (!isfinite(M))
-		return INFINITY;
-	for (double n = 0; n <= M; n += stride) {
-		double om = n * M_PI / Tp, wabs = hypot(om, c0);
-		double kband = anvil_kband(om, wabs, nu, hh, cr);
-		double kend = fmax(kband, sqrt(pow(0.5 * L / hh, 2) + om * om)); /* as green.c */
-		panels += stride * (ceil(kband / w0) + ceil((kend - kband) / 4.0));
-	}
-	return 21.0 * refine(hh, tau_end) * panels;
-}
-
 /* One coupled run over a window of window_s seconds at step dt. */
 static double impact_cost(double window_s, double dt, int layer)
 {
@@ -413,7 +349,7 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 	}
 	double evals = 0;
 	if (wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE)
-		evals += corr_evals(e->lay.hh, p->nu, p->cR / p->c2, om, tau_q, acc);
+		evals += anvil_plan_corr_evals(e->lay.hh, p->nu, om, tau_q, acc);
 	/* found only when both are: else something is computed */
 	*where = wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE ? ANVIL_CACHE_NONE
 		 : wm == ANVIL_CACHE_DISK || wt == ANVIL_CACHE_DISK ? ANVIL_CACHE_DISK
@@ -584,42 +520,10 @@ static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j
 	return COST_HALFSPACE + impact_cost(window, j->dt, 0);
 }
 
-/* The physical contact's layer row (solver.c physical_impact and
- * physical_errors): four corrections (the point load and the Hertz patch at
- * the job's bandwidth, the patch below, the point load at half the band),
- * each a little dearer than the r0 patch's response (the point load's
- * integrand does not decay with k: PHYS_EVAL_F, fitted on 30 scenes, h/r0
- * 0.3-9, 3 g-0.3 kg, 0.3-30 m/s: predicted/actual evaluations 0.8-1.15;
- * the price of the r0 response alone was 3.6-5.2 times short), and three
- * runs' worth of impact steps (measured against warm runs).  Corrections
- * already in the cache cost nothing. */
-#define PHYS_EVAL_F 1.3
+/* The physical contact's layer row: its four corrections
+ * (anvil_plan_phys_evals, plan_work.c) and three runs' worth of impact
+ * steps (measured against warm runs, impacts alone). */
 #define PHYS_RUNS 3.0
-double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
-			     const struct anvil_cache *cache, enum anvil_cache_where *where)
-{
-	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
-	double tq = anvil_cache_grid(tau_idx), evals = 0, xr;
-	struct { int omega_idx; double patch; } load[4] = {
-		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
-		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
-		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
-	*where = ANVIL_CACHE_MEMORY;
-	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
-		return NAN;
-	for (int i = 0; i < 4; i++) {
-		struct anvil_cache_key key = { j->hh, nu, acc, load[i].omega_idx, tau_idx, 0,
-					       ANVIL_CACHE_LOAD_PATCH, load[i].patch };
-		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
-		if (w == ANVIL_CACHE_NONE)
-			evals += PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr),
-							  anvil_cache_grid(load[i].omega_idx), tq, acc);
-		if (w == ANVIL_CACHE_NONE || (w == ANVIL_CACHE_DISK && *where == ANVIL_CACHE_MEMORY))
-			*where = w;
-	}
-	return evals;
-}
-
 static double physical_cost(const struct est *e, const struct anvil_cache *cache, double patch,
 			    enum anvil_cache_where *where)
 {
@@ -855,107 +759,6 @@ const struct anvil_plan_row *anvil_plan_row_of(const struct anvil_plan *pl, enum
 	return pl->paper[m].contact == c ? &pl->paper[m] : NULL;
 }
 /* --- end contactB --- */
-
-/* ---- sharing responses (plan.h) ---- */
-
-static int share_group(const struct anvil_plan_share *sh, const struct anvil_plan *pl)
-{
-	return sh->hh == pl->pb.hh && sh->nu == pl->pb.p.nu && sh->acc == pl->pb.accuracy;
-}
-
-/* Whether job j of a row asks for a layer response at all. */
-static int share_job_uses(const struct anvil_wave_job *j)
-{
-	return isfinite(j->hh);
-}
-
-static void share_widen(struct anvil_plan_share *sh, const struct anvil_wave_job *j)
-{
-	int t = anvil_cache_grid_up(anvil_wave_window(j, 0));
-	if (!share_job_uses(j))
-		return;
-	if (!sh->used++ || j->omega_idx > sh->omega_idx)
-		sh->omega_idx = j->omega_idx;
-	if (sh->used == 1 || t > sh->tau_idx)
-		sh->tau_idx = t;
-	sh->patch = fmax(sh->patch, j->patch);
-}
-
-static void share_add_row(struct anvil_plan_share *sh, const struct anvil_plan_row *r)
-{
-	if (r->status || (r->method != ANVIL_METHOD_LAYER && !r->fallback))
-		return;
-	share_widen(sh, r->method == ANVIL_METHOD_LAYER ? &r->job : &r->fallback_job);
-}
-
-int anvil_plan_share_add(struct anvil_plan_share *sh, const struct anvil_plan *pl)
-{
-	if (!sh->used && !sh->hh) {
-		*sh = (struct anvil_plan_share){ .hh = pl->pb.hh, .nu = pl->pb.p.nu,
-						 .acc = pl->pb.accuracy };
-	} else if (!share_group(sh, pl)) {
-		return ANVIL_EINVAL;
-	}
-	share_add_row(sh, &pl->row[ANVIL_MODEL_LAYER]);
-	share_add_row(sh, &pl->paper[ANVIL_MODEL_LAYER]);
-	return ANVIL_OK;
-}
-
-int anvil_plan_share_merge(struct anvil_plan_share *a, const struct anvil_plan_share *b)
-{
-	if (a->hh != b->hh || a->nu != b->nu || a->acc != b->acc)
-		return ANVIL_EINVAL;
-	if (!b->used)
-		return ANVIL_OK;
-	if (!a->used || b->omega_idx > a->omega_idx)
-		a->omega_idx = b->omega_idx;
-	if (!a->used || b->tau_idx > a->tau_idx)
-		a->tau_idx = b->tau_idx;
-	a->patch = fmax(a->patch, b->patch);
-	a->used += b->used;
-	return ANVIL_OK;
-}
-
-/* Job j on the envelope, unless the envelope would be refused where j is
- * not (more terms than the solver takes). */
-static void share_job(struct anvil_wave_job *j, const struct anvil_plan_share *sh,
-		      const struct anvil_plan *pl, enum anvil_model m, int physical)
-{
-	struct anvil_wave_job w = *j;
-	if (!share_job_uses(j))
-		return;
-	if (sh->omega_idx > w.omega_idx) {
-		w.omega_idx = sh->omega_idx;
-		w.omega = anvil_cache_grid(w.omega_idx);
-		w.twin_idx = w.omega_idx - ANVIL_CACHE_STEPS;
-	}
-	w.tau_idx_min = sh->tau_idx;
-	if (physical)
-		w.patch = fmax(w.patch, sh->patch);
-	if (!anvil_wave_refuse(&pl->pb.p, pl->pb.dt, m, &w, anvil_wave_window(&w, 0), w.omega,
-			       NULL))
-		*j = w;
-}
-
-static void share_row(struct anvil_plan_row *r, const struct anvil_plan_share *sh,
-		      const struct anvil_plan *pl)
-{
-	int phys = r->contact == ANVIL_CONTACT_PHYSICAL;
-	if (r->status)
-		return;
-	if (r->method == ANVIL_METHOD_LAYER)
-		share_job(&r->job, sh, pl, ANVIL_MODEL_LAYER, phys);
-	if (r->fallback)
-		share_job(&r->fallback_job, sh, pl, ANVIL_MODEL_LAYER, phys);
-}
-
-void anvil_plan_share_apply(struct anvil_plan *pl, const struct anvil_plan_share *sh)
-{
-	if (!sh->used || !share_group(sh, pl))
-		return;
-	share_row(&pl->row[ANVIL_MODEL_LAYER], sh, pl);
-	share_row(&pl->paper[ANVIL_MODEL_LAYER], sh, pl);
-}
 
 static void rows(const struct anvil_problem *pb, const struct est *e,
 		 const struct anvil_cache *cache, struct anvil_plan *pl)
