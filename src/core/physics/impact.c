@@ -8,70 +8,13 @@
 
 #include "fastconv.h"
 #include "impact.h"
+#include "impact_impl.h"
 
 /* Parted for good (see impact.h): the impactor, moving away, is outward of
  * both the surface and the surface's late position by this fraction of the
  * largest Hertz compression of the impact. */
 #define IMPACT_PART_MARGIN 0.1
-/* The end of a contact is located by Brent on the exact asymmetric last
- * hat; the past older than this many steps enters through a cubic in the
- * end offset d (error O(dt^4) of a smooth sum), so that each Brent
- * iteration costs O(IMPACT_END_NEAR), not O(n). */
-#define IMPACT_END_NEAR 256
-/* A pass's status when it makes more contacts than the budget
- * (opts.max_contacts): ANVIL_ETOL to the caller, with t_s finite (no
- * longer window tried) and its own message. */
 #define IMPACT_BUDGET (-100)
-/* A pass's status when a contact's end cannot be bracketed (finish_exact):
- * ANVIL_ENUM to the caller, with a message that says when and what to do. */
-#define IMPACT_END_LOST (-101)
-
-/* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
-struct pass {
-	double dt;
-	size_t n, cap;
-	double *P, *W, *w, *v; /* one block, owned */
-	double *wc;            /* physical contact: the layer correction's deflection */
-	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
-	double ts, tmax, Pmax, Vs;
-	double tmax_ie;  /* the peak interpolation's own error (peak) */
-	double curv;     /* |P''| at the peak (N/s^2, peak), 0 when unknown */
-	/* repeated contacts: the count, each one's start and end (s) */
-	size_t ncont;
-	double on[ANVIL_MAX_CONTACTS], off[ANVIL_MAX_CONTACTS];
-	int parted;      /* 1: parted for good by the rule; 2: at the window's end;
-			  * 3: moving together at the window's end (co_moving) */
-	/* a separation not yet decided (merge_sep): the last node in contact
-	 * (0: none), the impulse up to it, A at the next node, the largest gap */
-	size_t pend_k;
-	double pend_imp, pend_a, sep_gap;
-	size_t nmerged;  /* separations merged into their contact */
-	double Pmax_run; /* the largest P so far (co_moving) */
-};
-
-struct ctx {
-	const struct anvil_params *p;
-	anvil_ramp_fn ramp;
-	void *rctx;
-	double tau_avail;
-	double *g;      /* convolution weights g_j, j < ng */
-	size_t ng;
-	int physical;   /* the physical contact (opts), with beta */
-	double beta;
-	anvil_ramp_fn ramp2; /* the correction of the patch of radius a_ref (opts) */
-	void *rctx2;
-	double alpha_ref;
-	double tau_lag; /* the lag's low-pass (opts), s; 0: none */
-	double *dg;     /* its weights less g's, when ramp2 is given */
-	/* sum_m P_m g_{n-m}, for the pass at hand; with dg, a pair (fastconv.h)
-	 * that adds sum_m Q_m dg_{n-m} (physical, ramp2 given) */
-	struct anvil_fastconv *fc;
-	struct end_tab *tab; /* the contact ends' ramp values, for the pass at hand */
-	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
-	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
-	size_t max_contacts;          /* the budget (opts); 0: none */
-};
-
 static void pass_free(struct pass *s)
 {
 	free(s->P);
@@ -94,8 +37,7 @@ static int pass_alloc(struct pass *s, size_t cap, double dt)
 	return ANVIL_OK;
 }
 
-/* Dimensional ramp response Rr(t) (m s/N): the anvil's response to P = t. */
-static int ramp_of(const struct ctx *c, anvil_ramp_fn fn, void *ctx, double t, double *val)
+int impact_ramp_of(const struct ctx *c, anvil_ramp_fn fn, void *ctx, double t, double *val)
 {
 	const struct anvil_params *p = c->p;
 	if (t <= 0) {
@@ -108,9 +50,9 @@ static int ramp_of(const struct ctx *c, anvil_ramp_fn fn, void *ctx, double t, d
 	return st;
 }
 
-static int ramp_at(const struct ctx *c, double t, double *val)
+int impact_ramp_at(const struct ctx *c, double t, double *val)
 {
-	return ramp_of(c, c->ramp, c->rctx, t, val);
+	return impact_ramp_of(c, c->ramp, c->rctx, t, val);
 }
 
 /* Weights of the product integration: the deflection at t_n caused by the
@@ -126,7 +68,7 @@ static int weights(struct ctx *c, double dt, size_t cap)
 	}
 	int st = ANVIL_OK;
 	for (size_t j = 0; j < cap + 1 && !st; j++)
-		st = ramp_at(c, (double)j * dt, &R[j]);
+		st = impact_ramp_at(c, (double)j * dt, &R[j]);
 	for (size_t j = 0; j < cap && !st; j++)
 		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
 	c->ng = cap;
@@ -135,7 +77,7 @@ static int weights(struct ctx *c, double dt, size_t cap)
 		if (!c->dg)
 			st = ANVIL_ENOMEM;
 		for (size_t j = 0; j < cap + 1 && !st; j++)
-			st = ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R[j]);
+			st = impact_ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R[j]);
 		for (size_t j = 0; j < cap && !st; j++)
 			c->dg[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt - c->g[j];
 	}
@@ -256,243 +198,6 @@ static void finish(struct pass *s, const struct anvil_params *p, double a_n, dou
 	peak(s);
 }
 
-/* The end of contact, consistent with the scheme: P falls linearly from
- * P_k (the last node in contact) to 0 at t_k + d, so the last hat is
- * asymmetric (left half-width dt, right d).  alpha_H(t_k + d) = W - w = 0
- * is solved for d by Brent's method (GSL), with W and w evaluated for that
- * P: exactly for the last IMPACT_END_NEAR steps, the older past (a sum
- * smooth in d away from wavefront arrivals) through the cubic in d through
- * d = 0, dt/3, 2dt/3, dt (error O(dt^4) where the response is smooth,
- * O(dt^2) across an arrival: second order either way). */
-struct end_ctx {
-	const struct ctx *c;
-	const struct pass *s;
-	size_t k;       /* the last node with P > 0 */
-	size_t m0;      /* nodes m < m0 are the far past */
-	double S0, S1;  /* sum P_m, sum P_m t_m over m < k */
-	double far[4];  /* the far past's deflection at d = i dt/3 */
-	double *R;      /* scratch: R(j dt + d), j = 0 .. k - m0 + 1 */
-};
-
-/* The ramp responses off the grid that the far past needs at every
- * contact end of a pass: R(j dt + d_i), d_i = i dt/3 (i = 1, 2, 3; end_ctx_init),
- * for j < len, through ramp (r = 0) and ramp2 (r = 1).  Filled once per pass
- * as far as the latest end needs, so a contact end costs O(n) sums, not
- * O(n) ramp evaluations, and the repeated contacts of a thin plate reuse
- * them; the values are those each end computed for itself (same bits). */
-struct end_tab {
-	size_t len[2][4];
-	double *R[2][4]; /* cap + 1 each, allocated when first needed */
-};
-
-static void end_tab_free(struct end_tab *t)
-{
-	for (int r = 0; r < 2; r++)
-		for (int i = 0; i < 4; i++)
-			free(t->R[r][i]);
-	memset(t, 0, sizeof *t);
-}
-
-/* R(j dt + d) through ramp r for j <= jmax (<= cap) in t's row (r, i);
- * NULL when out of memory. */
-static const double *end_tab_get(const struct ctx *c, const struct pass *s, int r, int i,
-				 double d, size_t jmax)
-{
-	struct end_tab *t = c->tab;
-	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
-	void *fctx = r ? c->rctx2 : c->rctx;
-	if (!t->R[r][i] && !(t->R[r][i] = malloc((s->cap + 1) * sizeof **t->R)))
-		return NULL;
-	for (size_t j = t->len[r][i]; j <= jmax; j++)
-		ramp_of(c, fn, fctx, (double)j * s->dt + d, &t->R[r][i][j]);
-	if (jmax + 1 > t->len[r][i])
-		t->len[r][i] = jmax + 1;
-	return t->R[r][i];
-}
-
-/* sum_{m < m0} F_m times the hat response at t_k + d, off the grid
- * (0 < d < dt), from R(j dt + d) (end_tab): lag k - m rising. */
-static double far_of(const struct end_ctx *e, const double *F, const double *R)
-{
-	const double dt = e->s->dt;
-	size_t k = e->k;
-	double w = 0;
-	for (size_t m = e->m0 - 1; m >= 1; m--) {
-		size_t j = k - m;
-		w += F[m] * (R[j + 1] - 2.0 * R[j] + R[j - 1]) / dt;
-	}
-	return w;
-}
-
-/* far_of(P, R) + (far_of(Q, R2) - far_of(Q, R)) in one sweep (each sum in
- * far_of's order: the same bits, a third of the memory traffic). */
-static double far_of2(const struct end_ctx *e, const double *P, const double *Q,
-		      const double *R, const double *R2)
-{
-	const double dt = e->s->dt;
-	size_t k = e->k;
-	double wp = 0, wq = 0, wq2 = 0;
-	for (size_t m = e->m0 - 1; m >= 1; m--) {
-		size_t j = k - m;
-		double h = R[j + 1] - 2.0 * R[j] + R[j - 1];
-		wp += P[m] * h / dt;
-		wq += Q[m] * h / dt;
-		wq2 += Q[m] * (R2[j + 1] - 2.0 * R2[j] + R2[j - 1]) / dt;
-	}
-	return wp + (wq2 - wq);
-}
-
-/* The far past's deflection at t_k + d, d = i dt/3 (m < m0), exactly; with
- * the true contact radius (dg), the loads' Q through ramp2 - ramp as well.
- * ANVIL_ENOMEM when the table cannot be had. */
-static int far_exact(const struct end_ctx *e, int i, double *val)
-{
-	const struct ctx *c = e->c;
-	const double *P = e->s->P, *Q = e->s->Q, dt = e->s->dt, d = dt * i / 3.0;
-	size_t k = e->k;
-	if (d == 0.0 || d == dt) { /* on the grid: the weights */
-		double w = 0;
-		size_t sh = d == 0.0 ? 0 : 1;
-		for (size_t m = 1; m < e->m0; m++)
-			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
-		*val = w;
-		return ANVIL_OK;
-	}
-	const double *R = end_tab_get(c, e->s, 0, i, d, k), *R2 = NULL;
-	if (R && c->dg)
-		R2 = end_tab_get(c, e->s, 1, i, d, k);
-	if (!R || (c->dg && !R2))
-		return ANVIL_ENOMEM;
-	*val = c->dg ? far_of2(e, P, Q, R, R2) : far_of(e, P, R);
-	return ANVIL_OK;
-}
-
-static double far_cubic(const struct end_ctx *e, double d)
-{
-	double x = 3.0 * d / e->s->dt, f = 0;
-	for (int i = 0; i < 4; i++) {
-		double l = 1;
-		for (int j = 0; j < 4; j++)
-			if (j != i)
-				l *= (x - j) / (double)(i - j);
-		f += l * e->far[i];
-	}
-	return f;
-}
-
-/* The near past's deflection at t_k + d (loads F, hats at t_m, m0 <= m <= k,
- * the last one ending at t_k + d) through the ramp response R at j dt + d,
- * added to w in the order the paper contact's end has always summed it (same bits). */
-static double near_deflection(double w, const double *F, const double *R, size_t k, size_t m0,
-			      double dt, double d)
-{
-	for (size_t m = m0; m < k; m++)
-		w += F[m] * (R[k - m + 1] - 2.0 * R[k - m] + R[k - m - 1]) / dt;
-	return w + F[k] * (R[1] / dt - R[0] * (1.0 / dt + 1.0 / d));
-}
-
-static double alpha_end(double d, void *vp)
-{
-	const struct end_ctx *e = vp;
-	const struct ctx *c = e->c;
-	const struct anvil_params *p = c->p;
-	const double *P = e->s->P, dt = e->s->dt;
-	size_t k = e->k, nr = k - e->m0 + 1;
-	double t1 = (double)k * dt, tau = t1 + d, w = far_cubic(e, d), *R = e->R;
-	double mom = dt * (tau * e->S0 - e->S1);
-	for (size_t j = 0; j <= nr; j++)
-		ramp_at(c, (double)j * dt + d, &R[j]);
-	w = near_deflection(w, P, R, k, e->m0, dt, d);
-	if (c->dg) { /* the true contact radius: + Q through (R2 - R) */
-		w -= near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
-		for (size_t j = 0; j <= nr; j++)
-			ramp_of(c, c->ramp2, c->rctx2, (double)j * dt + d, &R[j]);
-		w += near_deflection(0.0, e->s->Q, R, k, e->m0, dt, d);
-	}
-	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
-	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	return p->V0 * tau - mom / p->m1 - w;
-}
-
-static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pass *s, size_t k)
-{
-	*e = (struct end_ctx){ .c = c, .s = s, .k = k, .m0 = 1 };
-	if (k > IMPACT_END_NEAR + 1)
-		e->m0 = k - IMPACT_END_NEAR;
-	for (size_t m = 1; m < k; m++) {
-		e->S0 += s->P[m];
-		e->S1 += s->P[m] * (double)m * s->dt;
-	}
-	int st = ANVIL_OK;
-	for (int i = 0; i < 4 && e->m0 > 1 && !st; i++)
-		st = far_exact(e, i, &e->far[i]);
-	e->R = st ? NULL : malloc((k - e->m0 + 3) * sizeof *e->R);
-	return e->R ? ANVIL_OK : ANVIL_ENOMEM;
-}
-
-/* Relative size of a wrong sign at the contact end's bracket taken for
- * rounding (finish_exact): far above 1e-16, far below any real mismatch. */
-#define END_FLAT 1e-9
-/* The same in ulps of alpha_end's largest term, V0 (t_k + dt): a grazing
- * contact (P ~ 1e-18 N late in a long thin-plate run, issue 11) has both
- * ends near zero, where END_FLAT against the other end asks for digits
- * that the difference V0 t - mom/m1 - w cannot have. */
-#define END_ULPS 64.0
-
-/* The end of the contact whose last node in contact is k = s->n - 1:
- * *toff its time, *ioff the impulse up to it (impulse: up to t_k). */
-static int finish_exact(const struct ctx *c, const struct pass *s, double impulse,
-			double *toff, double *ioff)
-{
-	struct end_ctx e;
-	size_t k = s->n - 1;
-	int st = end_ctx_init(&e, c, s, k);
-	gsl_function f = { alpha_end, &e };
-	gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-	double lo = 1e-9 * s->dt, hi = s->dt, d = hi;
-	if (!rs || st) {
-		gsl_root_fsolver_free(rs);
-		free(e.R);
-		return ANVIL_ENOMEM;
-	}
-	/* The march saw A_n <= 0, but the exact end's alpha at t_k + dt may
-	 * round (or, with the true radius, extrapolate) to a hair above 0 when
-	 * A_n is tiny: no sign change, no root to polish.  When the wrong-signed
-	 * end is at rounding level against the other (END_FLAT), the end is at
-	 * that edge; anything larger is a failure (a runaway: tests/test_contact.c). */
-	double flo = alpha_end(lo, &e), fhi = alpha_end(hi, &e);
-	double ulp = END_ULPS * DBL_EPSILON * c->p->V0 * (double)(k + 1) * s->dt;
-	if (!(flo > 0 && fhi < 0)) {
-		gsl_root_fsolver_free(rs);
-		free(e.R);
-		if (!(fhi >= 0 && fhi <= fmax(END_FLAT * fabs(flo), ulp)) &&
-		    !(flo <= 0 && -flo <= fmax(END_FLAT * fabs(fhi), ulp))) {
-			*toff = (double)k * s->dt; /* for the message (anvil_impact_run) */
-			return IMPACT_END_LOST;
-		}
-		d = fhi >= 0 ? hi : lo;
-		*toff = (double)k * s->dt + d;
-		*ioff = impulse + 0.5 * s->P[k] * d;
-		return ANVIL_OK;
-	}
-	st = gsl_root_fsolver_set(rs, &f, lo, hi);
-	for (int i = 0; !st && i < 100; i++) {
-		st = gsl_root_fsolver_iterate(rs);
-		d = gsl_root_fsolver_root(rs);
-		lo = gsl_root_fsolver_x_lower(rs);
-		hi = gsl_root_fsolver_x_upper(rs);
-		if (!st && gsl_root_test_interval(lo, hi, 1e-14 * s->dt, 1e-13) == GSL_SUCCESS)
-			break;
-	}
-	gsl_root_fsolver_free(rs);
-	free(e.R);
-	if (st)
-		return ANVIL_ENUM;
-	*toff = (double)k * s->dt + d;
-	*ioff = impulse + 0.5 * s->P[k] * d;
-	return ANVIL_OK;
-}
-
 /* The end of the contact whose last node in contact is k (a_n = A_{k+1}
  * <= 0): its time and the impulse up to it, exactly for the scheme when
  * there are nodes enough, else from the parabola through alpha_H (finish).
@@ -506,7 +211,7 @@ static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n
 	int st = ANVIL_OK;
 	v.n = k + 1;
 	if (v.n >= 3) {
-		st = finish_exact(c, &v, impulse, &toff, ioff);
+		st = impact_finish_exact(c, &v, impulse, &toff, ioff);
 	} else {
 		finish(&v, c->p, a_n, impulse);
 		toff = v.ts;
@@ -834,7 +539,7 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
 	c->fc = NULL;
-	end_tab_free(c->tab); /* a new dt */
+	impact_end_tab_free(c->tab); /* a new dt */
 	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, cap, direct_max, c->fft)
 				   : anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
@@ -1007,7 +712,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	free(c.g);
 	anvil_fastconv_free(c.fc);
 	free(c.dg);
-	end_tab_free(&tab);
+	impact_end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);
 	pass_free(&a);
 	pass_free(&b);
