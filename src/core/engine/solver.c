@@ -558,13 +558,15 @@ static int physical_errors(struct anvil_solver *s, const struct anvil_problem *p
  * compression alpha = k0 P_max^(2/3) gives a = sqrt(r0 alpha); beyond h
  * the layer is no half-space at the contact's scale and the row is
  * refused (before its error estimate's runs). */
-static int thin_check(const struct anvil_params *p, const struct anvil_result *r,
+static int thin_check(const struct anvil_plan *pl, const struct anvil_result *r,
 		      struct anvil_err *err)
 {
+	const struct anvil_params *p = &pl->pb.p;
 	double a = sqrt(p->r0 * p->k0 * pow(r->Pmax.val, 2.0 / 3.0));
 	/* the Hertz spring's energy at the peak is at most the impact's: P_max
-	 * is at most the rigid anvil's (5 % for the lag's approximation) */
-	double ph = p->K * pow(anvil_hertz_alpha_max() * p->T * p->V0, 1.5);
+	 * is at most the rigid anvil's (the plan's figure; 5 % for the lag's
+	 * approximation) */
+	double ph = pl->fig[ANVIL_FIG_P_MAX];
 	if (r->Pmax.val > 1.05 * ph)
 		return anvil_err_set(err, ANVIL_ENUM,
 				     "%s: the computed P_max = %.3g N exceeds the rigid anvil's %.3g N, which bounds it (energy): the time stepping is unstable for this scene",
@@ -597,7 +599,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	int corr = 0;
 	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
 	if (!st && corr)
-		st = thin_check(p, r, err);
+		st = thin_check(pl, r, err);
 	if (!st && corr)
 		st = physical_errors(s, &pl->pb, &row->job, beta, ld, fmin(1.0, a / p->r0), r, err);
 	if (st)
