@@ -1,9 +1,15 @@
 #include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <stdint.h>
 #include <string.h>
 #include <time.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "cache.h"
 #include "green.h"
@@ -447,56 +453,86 @@ static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 	io->max_contacts = ANVIL_MAX_RUN_CONTACTS;
 }
 
-/* One physical impact of job j, the window grown as in waves_impact; the
- * corrections are taken for each window in which the bottom reflection
- * returns.  *corr says whether they were. */
-static int physical_impact(struct anvil_solver *s, const struct anvil_problem *pb,
-			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
-			   size_t nhist, struct anvil_result *r, int *corr, struct anvil_err *err)
+/* One physical impact of job j in progress: its load, the responses it
+ * holds for the window being tried (a ramp and, with the true radius, a
+ * second), and its result.  Split in two (phys_window, phys_execute) so
+ * that what touches the cache and the progress callback, which are
+ * single-threaded, runs apart from the impact itself, which only reads
+ * the responses and may run beside another (physical_errors). */
+struct phys_run {
+	struct phys_load ld;
+	struct response rs, rs2; /* no half-space, no static part: Hertz's */
+	struct anvil_impact_opts io;
+	struct held held;
+	double tau_end;
+	int corr; /* the corrections taken (the bottom reflection returns) */
+	struct anvil_result *r;
+};
+
+static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
+		      const struct anvil_wave_job *j, double beta, struct phys_load ld,
+		      size_t nhist, struct anvil_result *r)
+{
+	memset(u, 0, sizeof *u);
+	u->ld = ld;
+	u->r = r;
+	u->io = (struct anvil_impact_opts){ .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
+					    .dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
+					    .nhist = nhist, .physical = 1, .beta = beta,
+					    .tau_lag = ld.tau_lag };
+	merge_opts(&u->io, pb, j);
+}
+
+/* Window `attempt` of run u: the plan's refusal rule, then the corrections
+ * it needs (when the bottom reflection returns within it) from the cache,
+ * made there when missing.  The shorter window's are given back first. */
+static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
+		       const struct anvil_wave_job *j, int attempt, struct phys_run *u,
+		       struct anvil_err *err)
 {
 	const struct anvil_params *p = &pb->p;
-	struct response rs = { 0 }, rs2 = { 0 }; /* no half-space, no static part: Hertz's */
-	struct anvil_impact_opts io = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
-					.dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
-					.nhist = nhist, .physical = 1, .beta = beta, .tau_lag = ld.tau_lag };
-	struct held held = { .n = 0 };
-	int st = ANVIL_ETOL;
-	merge_opts(&io, pb, j);
-	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
-		double tau_end = anvil_wave_window(j, attempt);
-		int tau_idx = anvil_wave_tau_idx(j, tau_end);
-		held_release(s->cache, &held); /* the shorter window's are done with */
-		rs.corr = rs2.corr = NULL;
-		st = anvil_wave_refuse(p, pb->dt, r->model, j, tau_end, anvil_cache_grid(ld.omega_idx),
-				       err);
-		if (st)
-			break;
-		*corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, tau_end);
-		io.alpha_ref = 0;
-		if (*corr) {
-			rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &held, err);
-			if (rs.corr && ld.patch > 0) {
-				rs2.corr = physical_corr(s, pb, j->hh, ld.patch, ld.omega_idx, tau_idx,
-							 &held, err);
-				/* a^2 = R alpha with R = r0 */
-				io.ramp2 = response_ramp;
-				io.ramp2_ctx = &rs2;
-				io.alpha_ref = ld.patch * ld.patch * p->r0;
-			}
-			if (!rs.corr || (ld.patch > 0 && !rs2.corr)) {
-				st = err ? err->status : ANVIL_ENUM;
-				break;
-			}
-		}
-		enum anvil_model m = r->model;
-		anvil_result_free(r);
-		anvil_result_init(r, m);
-		st = anvil_impact_run(p, response_ramp, &rs, tau_end, &io, r, err);
-		if (st == ANVIL_ETOL && !isnan(r->ts.val))
-			break;
+	struct phys_load ld = u->ld;
+	u->tau_end = anvil_wave_window(j, attempt);
+	int tau_idx = anvil_wave_tau_idx(j, u->tau_end);
+	held_release(s->cache, &u->held);
+	u->rs.corr = u->rs2.corr = NULL;
+	int st = anvil_wave_refuse(p, pb->dt, u->r->model, j, u->tau_end,
+				   anvil_cache_grid(ld.omega_idx), err);
+	if (st)
+		return st;
+	u->corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, u->tau_end);
+	u->io.alpha_ref = 0;
+	if (!u->corr)
+		return ANVIL_OK;
+	u->rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &u->held, err);
+	if (u->rs.corr && ld.patch > 0) {
+		u->rs2.corr = physical_corr(s, pb, j->hh, ld.patch, ld.omega_idx, tau_idx, &u->held,
+					    err);
+		/* a^2 = R alpha with R = r0 */
+		u->io.ramp2 = response_ramp;
+		u->io.ramp2_ctx = &u->rs2;
+		u->io.alpha_ref = ld.patch * ld.patch * p->r0;
 	}
-	held_release(s->cache, &held);
-	return st;
+	if (!u->rs.corr || (ld.patch > 0 && !u->rs2.corr))
+		return err ? err->status : ANVIL_ENUM;
+	return ANVIL_OK;
+}
+
+/* The impact in the window phys_window loaded: no cache, no callback. */
+static int phys_execute(const struct anvil_problem *pb, struct phys_run *u,
+			struct anvil_err *err)
+{
+	enum anvil_model m = u->r->model;
+	anvil_result_free(u->r);
+	anvil_result_init(u->r, m);
+	return anvil_impact_run(&pb->p, response_ramp, &u->rs, u->tau_end, &u->io, u->r, err);
+}
+
+/* A longer window is wanted: the contact outlasted this one (ANVIL_ETOL
+ * with t_s NaN; a finite t_s is a refusal no window helps). */
+static int phys_retry(int st, const struct anvil_result *r)
+{
+	return st == ANVIL_ETOL && isnan(r->ts.val);
 }
 
 /* Add f |a - b| of each value to r's error estimates. */
@@ -511,6 +547,150 @@ static void add_diff_error(struct anvil_result *r, const struct anvil_result *a,
 	r->Ea.err += f * fabs(a->Ea.val - b->Ea.val);
 }
 
+/* The physical row's impacts (run_physical): the row's own (MAIN) and
+ * its error estimate's (physical_errors), each with its load, status and
+ * message. */
+enum { PHYS_MAIN, PHYS_BELOW, PHYS_HALF_LAG, PHYS_POINT, PHYS_POINT_HALF, PHYS_RUNS };
+
+struct phys_set {
+	struct phys_run u[PHYS_RUNS];
+	struct anvil_result q[PHYS_RUNS]; /* the error runs' results (MAIN's is the row's) */
+	struct anvil_err e[PHYS_RUNS];
+	int st[PHYS_RUNS], done[PHYS_RUNS];
+	struct held warm; /* the responses phys_at_hand found */
+};
+
+/* The loads: the row's, the patch below (the a^4 remainder), the lag's
+ * time halved, and point loads at the row's bandwidth and half of it. */
+static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
+			  const struct anvil_wave_job *j, double beta, struct phys_load ld,
+			  size_t nhist, struct anvil_result *r)
+{
+	struct phys_load lds[PHYS_RUNS] = {
+		[PHYS_MAIN] = ld,
+		[PHYS_BELOW] = { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag },
+		[PHYS_HALF_LAG] = { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag },
+		[PHYS_POINT] = { ld.omega_idx, 0.0, ld.tau_lag },
+		[PHYS_POINT_HALF] = { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag },
+	};
+	for (int k = 0; k < PHYS_RUNS; k++) {
+		struct anvil_result *rk = k == PHYS_MAIN ? r : &set->q[k];
+		if (k != PHYS_MAIN)
+			anvil_result_init(rk, r->model);
+		phys_init(&set->u[k], pb, j, beta, lds[k], k == PHYS_MAIN ? nhist : 0, rk);
+		set->e[k] = (struct anvil_err){ 0 };
+		set->st[k] = ANVIL_ETOL;
+		set->done[k] = 0;
+	}
+	set->warm.n = 0;
+}
+
+static void phys_set_free(struct anvil_solver *s, struct phys_set *set)
+{
+	held_release(s->cache, &set->warm);
+	for (int k = 0; k < PHYS_RUNS; k++) {
+		held_release(s->cache, &set->u[k].held);
+		if (k != PHYS_MAIN)
+			anvil_result_free(&set->q[k]);
+	}
+}
+
+/* Whether the first window takes corrections (the error runs are then
+ * wanted) and every run's are in the cache (memory, or disk: loaded, and
+ * held in set->warm till the runs fetch them): a warm run, whose error
+ * runs may go beside the row's own before thin_check has seen it (their
+ * results are only used when it passes).  A cold one makes no response a
+ * refusal would waste. */
+static int phys_at_hand(struct anvil_solver *s, const struct anvil_problem *pb,
+			const struct anvil_wave_job *j, struct phys_set *set)
+{
+	double tau_end = anvil_wave_window(j, 0);
+	if (!isfinite(j->hh) || !anvil_wave_needs_corr(&pb->p, j, tau_end))
+		return 0;
+	for (int k = 0; k < PHYS_RUNS; k++)
+		for (int twice = 0; twice < 2; twice++) { /* the point load, then the patch */
+			const struct phys_load *ld = &set->u[k].ld;
+			struct anvil_cache_key key = { j->hh, pb->p.nu, pb->accuracy, ld->omega_idx,
+						       anvil_wave_tau_idx(j, tau_end), 0,
+						       ANVIL_CACHE_LOAD_PATCH, twice ? ld->patch : 0.0 };
+			if ((!twice || ld->patch > 0) &&
+			    !held_add(&set->warm, anvil_cache_find(s->cache, &key, NULL)))
+				return 0;
+		}
+	return 1;
+}
+
+/* The impacts of a round (phys_rounds), shared out to threads: each
+ * takes the next run not yet taken until none is left. */
+struct phys_crew {
+	const struct anvil_problem *pb;
+	struct phys_set *set;
+	const int *go;
+	int n;
+	atomic_int next;
+};
+
+static void *phys_crew_work(void *arg)
+{
+	struct phys_crew *w = arg;
+	for (int i; (i = atomic_fetch_add(&w->next, 1)) < w->n;) {
+		int k = w->go[i];
+		w->set->st[k] = phys_execute(w->pb, &w->set->u[k], &w->set->e[k]);
+	}
+	return NULL;
+}
+
+/* The threads for a round's n impacts: one per core (OpenMP's count, so
+ * OMP_NUM_THREADS rules here too), at most PHYS_RUNS. */
+static int phys_threads(int n)
+{
+	int t = 1;
+#ifdef _OPENMP
+	t = omp_get_max_threads();
+#endif
+	return t < n ? t : n;
+}
+
+/* The runs k0 <= k < k1 of set, each with its window grown until its
+ * contact fits (as waves_impact does), all together: per window the
+ * responses first, one run after another (the cache and the progress
+ * callback are single-threaded), then the impacts side by side on the
+ * cores, each reading its own responses and writing its own result and
+ * status: the bits do not depend on the threads or on which runs went
+ * together.  Plain threads that block when done, not OpenMP's team, whose
+ * waiting threads spin: on a machine whose cores are busy with other
+ * work the spinning took the time the impacts needed (3 times slower). */
+static void phys_rounds(struct anvil_solver *s, const struct anvil_problem *pb,
+			const struct anvil_wave_job *j, struct phys_set *set, int k0, int k1)
+{
+	for (int attempt = 0; attempt < j->attempts; attempt++) {
+		int go[PHYS_RUNS], n = 0;
+		for (int k = k0; k < k1; k++) {
+			if (set->done[k])
+				continue;
+			set->st[k] = phys_window(s, pb, j, attempt, &set->u[k], &set->e[k]);
+			if (set->st[k])
+				set->done[k] = 1; /* refused, or no response */
+			else
+				go[n++] = k;
+		}
+		if (!n)
+			return;
+		struct phys_crew w = { .pb = pb, .set = set, .go = go, .n = n };
+		pthread_t th[PHYS_RUNS];
+		int nt = 0;
+		atomic_init(&w.next, 0);
+		/* a thread that cannot be had leaves its share to the others */
+		while (nt + 1 < phys_threads(n) && !pthread_create(&th[nt], NULL, phys_crew_work, &w))
+			nt++;
+		phys_crew_work(&w);
+		for (int t = 0; t < nt; t++)
+			pthread_join(th[t], NULL);
+		for (int i = 0; i < n; i++)
+			set->done[go[i]] = !phys_retry(set->st[go[i]], set->u[go[i]].r);
+	}
+}
+
 /* The errors of the layer correction (solver.c's run_physical): the
  * O(a^4) remainder of the true radius, and the correction's own, by
  * halving the bandwidth (point loads, as run_waves does).
@@ -522,35 +702,24 @@ static void add_diff_error(struct anvil_result *r, const struct anvil_result *a,
  * difference bounds the remainder when P <= sqrt(2) a_max (the patch on
  * its half-octave grid, a run alone: 1 to 2 times over), and 2 (1 -
  * a_max^2 / P^2) times it does for a sweep's wider patch. */
-static int physical_errors(struct anvil_solver *s, const struct anvil_problem *pb,
-			   const struct anvil_wave_job *j, double beta, struct phys_load ld,
-			   double a_max_r0, struct anvil_result *r, struct anvil_err *err)
+static int physical_errors(const struct phys_set *set, double a_max_r0,
+			   struct anvil_result *r, struct anvil_err *err)
 {
-	struct anvil_result q[2];
-	struct phys_load alt[4] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag },
-				    { ld.omega_idx, 0.0, ld.tau_lag },
-				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag },
-				    { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag } };
-	double x = a_max_r0 / ld.patch, f = fmax(1.0, 2.0 * (1.0 - x * x));
-	int c, st = ANVIL_OK;
-	anvil_result_init(&q[0], r->model);
-	anvil_result_init(&q[1], r->model);
-	st = physical_impact(s, pb, j, beta, alt[0], 0, &q[0], &c, err);
-	if (!st)
-		add_diff_error(r, r, &q[0], f);
-	if (!st)
-		st = physical_impact(s, pb, j, beta, alt[1], 0, &q[0], &c, err);
-	if (!st)
-		st = physical_impact(s, pb, j, beta, alt[2], 0, &q[1], &c, err);
-	if (!st)
-		add_diff_error(r, &q[0], &q[1], 1.0);
-	if (!st)
-		st = physical_impact(s, pb, j, beta, alt[3], 0, &q[0], &c, err);
-	if (!st)
-		add_diff_error(r, r, &q[0], 1.0);
-	anvil_result_free(&q[0]);
-	anvil_result_free(&q[1]);
-	return st;
+	/* the first failure in the order of the sums, which is that of the
+	 * runs one after another (and so are the bits) */
+	static const int order[] = { PHYS_BELOW, PHYS_POINT, PHYS_POINT_HALF, PHYS_HALF_LAG };
+	for (size_t i = 0; i < sizeof order / sizeof *order; i++)
+		if (set->st[order[i]]) {
+			if (err)
+				*err = set->e[order[i]];
+			return set->st[order[i]];
+		}
+	double patch = set->u[PHYS_MAIN].ld.patch, x = a_max_r0 / patch;
+	double f = fmax(1.0, 2.0 * (1.0 - x * x));
+	add_diff_error(r, r, &set->q[PHYS_BELOW], f);
+	add_diff_error(r, &set->q[PHYS_POINT], &set->q[PHYS_POINT_HALF], 1.0);
+	add_diff_error(r, r, &set->q[PHYS_HALF_LAG], 1.0);
+	return ANVIL_OK;
 }
 
 /* The computed contact against the layer's thickness (plan.c's
@@ -596,12 +765,22 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
 	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2 };
-	int corr = 0;
-	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
+	struct phys_set set;
+	phys_set_init(&set, &pl->pb, &row->job, beta, ld, nhist, r);
+	/* warm, the five impacts at once on the cores; cold, the row's first
+	 * (thin_check may refuse it before the others' responses are made) */
+	int at_hand = phys_at_hand(s, &pl->pb, &row->job, &set);
+	phys_rounds(s, &pl->pb, &row->job, &set, PHYS_MAIN, at_hand ? PHYS_RUNS : PHYS_MAIN + 1);
+	int st = set.st[PHYS_MAIN], corr = set.u[PHYS_MAIN].corr;
+	if (st && err)
+		*err = set.e[PHYS_MAIN];
 	if (!st && corr)
 		st = thin_check(pl, r, err);
+	if (!st && corr && !at_hand)
+		phys_rounds(s, &pl->pb, &row->job, &set, PHYS_MAIN + 1, PHYS_RUNS);
 	if (!st && corr)
-		st = physical_errors(s, &pl->pb, &row->job, beta, ld, fmin(1.0, a / p->r0), r, err);
+		st = physical_errors(&set, fmin(1.0, a / p->r0), r, err);
+	phys_set_free(s, &set);
 	if (st)
 		return st;
 	/* the radiation lag's next term: relative pi a / (c2 t_s) of the wave
