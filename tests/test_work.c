@@ -15,7 +15,9 @@
  * scene with a reflection inside its window counts, and with the paper's
  * contact, whose r0-patch response (and twin) is what the planner prices.
  * A second sample does the same for the physical contact's row (its four
- * corrections, anvil_plan_phys_evals) against the solver's own count. */
+ * corrections, anvil_plan_phys_evals) against the solver's own count, and
+ * a third for bench section 13's long contacts, with each correction's
+ * time samples (anvil_plan_corr_samples) too. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -138,9 +140,93 @@ static void physical_sample(void)
 	   within, tried);
 }
 
+/* Bench section 13's long contacts (physical, normal; the 100 kg scene is
+ * refused when planned and left out): the four corrections made as the
+ * solver makes them (solver.c physical_corr), their evaluations against
+ * anvil_plan_phys_evals within 2x, and each one's time samples (what a long
+ * window costs beyond its evaluations) equal to anvil_plan_corr_samples:
+ * the pieces the planner's seconds are made of (plan_work.c). */
+static void long_sample(void)
+{
+	static const char *const scenes[][8] = {
+		{ "layer.thickness", "0.25r0", "impactor.mass", "100g", "impact.velocity", "10m/s" },
+		{ "layer.thickness", "0.5r0", "impactor.mass", "1kg", "impact.velocity", "10m/s" },
+		{ "layer.thickness", "1r0", "impactor.mass", "1kg", "impact.velocity", "10m/s" },
+		{ "layer.thickness", "1mm", "impactor.mass", "500g", "impact.velocity", "1m/s",
+		  "impactor.material", "steel" },
+		{ "layer.thickness", "0.1r0", "impactor.mass", "1g", "impact.velocity", "10m/s" },
+		{ "layer.thickness", "0.05r0", "impactor.mass", "0.1g", "impact.velocity", "1m/s" },
+		{ "layer.thickness", "0.25r0", "impactor.mass", "1kg", "impact.velocity", "1m/s" },
+		{ "layer.thickness", "2r0", "impactor.mass", "0.1g", "impact.velocity", "500m/s" },
+		{ "layer.thickness", "10r0", "impactor.mass", "10kg", "impact.velocity", "0.1m/s" },
+	};
+	int tried = 0, within = 0, samples_ok = 0, ncorr = 0;
+	double lo = 1, hi = 1;
+	for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		struct anvil_err e;
+		int bad = 0;
+		anvil_scene_default(&sc);
+		bad |= anvil_scene_set(&sc, "effects.contact", "physical", "test", 0, &e);
+		for (int k = 0; k < 8 && scenes[i][k]; k += 2)
+			bad |= anvil_scene_set(&sc, scenes[i][k], scenes[i][k + 1], "test", 0, &e);
+		if (bad || scene_plan(&sc, &pl, &e)) {
+			diag("scene %zu: %s", i, e.msg);
+			continue;
+		}
+		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+		const struct anvil_wave_job *j = &r->job;
+		if (r->status || !anvil_wave_needs_corr(&pl.pb.p, j, anvil_wave_window(j, 0))) {
+			diag("scene %zu: no correction (%s)", i, r->refusal);
+			continue;
+		}
+		enum anvil_cache_where where;
+		double pred = anvil_plan_phys_evals(j, pl.pb.p.nu, pl.pb.accuracy, NULL, &where), got = 0;
+		int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
+		struct { int oi; double patch; } load[4] = {
+			{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
+			{ j->omega_idx, anvil_plan_patch_below(j->patch) },
+			{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+		for (int k = 0; k < 4; k++) {
+			struct anvil_green_settings gs;
+			struct anvil_green_samples smp;
+			anvil_green_settings(pl.pb.accuracy, &gs);
+			gs.omega_max = anvil_cache_grid(load[k].oi);
+			struct anvil_green *g = anvil_green_alloc_patch(
+				ANVIL_GREEN_LAYER_CORRECTION, j->hh, pl.pb.p.nu, load[k].patch,
+				anvil_cache_grid(tau_idx), &gs, NULL, NULL, &e);
+			if (!g) {
+				diag("scene %zu: %s", i, e.msg);
+				got = NAN;
+				break;
+			}
+			anvil_green_export(g, &smp);
+			ncorr++;
+			samples_ok += (double)smp.n == anvil_plan_corr_samples(j->hh, gs.omega_max,
+									       anvil_cache_grid(tau_idx));
+			got += (double)anvil_green_evals(g);
+			anvil_green_free(g);
+		}
+		if (!(got > 0))
+			continue;
+		double q = pred / got;
+		tried++;
+		within += q >= 0.5 && q <= 2.0;
+		lo = fmin(lo, q);
+		hi = fmax(hi, q);
+	}
+	diag("long contacts: %d rows; predicted/actual evaluations %.2f-%.2f", tried, lo, hi);
+	ok(tried >= 8 && within == tried,
+	   "long contacts' corrections priced within 2x of their evaluations on %d of %d", within,
+	   tried);
+	ok(ncorr >= 32 && samples_ok == ncorr,
+	   "their time samples as predicted on %d of %d corrections", samples_ok, ncorr);
+}
+
 int main(void)
 {
-	plan(3);
+	plan(5);
 	unsigned long long seed = 7; /* not the fit's (plan.c: refine) */
 	int tried = 0, within = 0, skipped = 0;
 	double worst_lo = 1, worst_hi = 1, hmin = INFINITY, hmax = 0;
@@ -200,5 +286,6 @@ int main(void)
 	ok(within == tried, "the planner's kernel evaluations within 2x of green.c's on %d of %d",
 	   within, tried);
 	physical_sample();
+	long_sample();
 	return done_testing();
 }

@@ -521,7 +521,7 @@ static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j
 }
 
 /* The physical contact's layer row: its four corrections
- * (anvil_plan_phys_evals, plan_work.c) and three runs' worth of impact
+ * (anvil_plan_phys_seconds, plan_work.c) and three runs' worth of impact
  * steps (measured against warm runs, impacts alone). */
 #define PHYS_RUNS 3.0
 static double physical_cost(const struct est *e, const struct anvil_cache *cache, double patch,
@@ -529,8 +529,8 @@ static double physical_cost(const struct est *e, const struct anvil_cache *cache
 {
 	struct anvil_wave_job j = e->lay;
 	j.patch = patch;
-	double evals = anvil_plan_phys_evals(&j, e->p.nu, e->pb->accuracy, cache, where);
-	return COST_HALFSPACE + evals * COST_EVAL + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1);
+	double corr = anvil_plan_phys_seconds(&j, e->p.nu, e->pb->accuracy, cache, where);
+	return COST_HALFSPACE + corr + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1);
 }
 
 /* The layer row: what the full model costs, and whether it needs the

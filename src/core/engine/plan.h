@@ -341,6 +341,16 @@ double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
  * tests/test_work.c holds it to the solver's count within 2x. */
 double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
 			     const struct anvil_cache *cache, enum anvil_cache_where *where);
+/* The seconds the planner predicts for making those corrections: their
+ * evaluations, time samples (anvil_plan_corr_samples) and, beyond the
+ * plate's T1, its spline nodes, each at its unit cost (plan_work.c);
+ * scripts/bench section 13 compares them with the solver's time. */
+double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			       const struct anvil_cache *cache, enum anvil_cache_where *where);
+/* The time samples green.c writes for one layer correction of thickness
+ * hh, bandwidth omega and window tau_end (tests/test_work.c holds it to
+ * green.c's count). */
+double anvil_plan_corr_samples(double hh, double omega, double tau_end);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "cache.h"
+#include "durbin.h"
 #include "green.h"
 #include "kernel.h"
 #include "plan.h"
@@ -72,6 +73,46 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 }
 
 
+/* The time samples green.c writes for one correction (green_finish): the
+ * inversion's half period Tp = 2 T_inv (T_inv the plate's T1, plate.h, or
+ * the whole window), its FFT length N (durbin.h: a power of two >= 4 (M +
+ * 1) and >= green.c's GREEN_N_MIN, 8192), a sample every 2 Tp / N up to
+ * tau_end.  Beyond T1 each sample is the plate's closed form: a long
+ * window's samples, not its evaluations, can be most of the work
+ * (issue 11: 10^6 samples for h = 0.5 r0, 1 kg at 10 m/s). */
+double anvil_plan_corr_samples(double hh, double omega, double tau_end)
+{
+	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tau_end) : 0.0;
+	double Tp = 2.0 * (t1 > 0 ? t1 : tau_end);
+	struct anvil_durbin dl;
+	if (anvil_durbin_init(&dl, Tp, 1.0 / Tp, omega, 0))
+		return INFINITY;
+	return floor(tau_end / (2.0 * Tp / (double)anvil_durbin_fft_size(&dl, 8192))) + 2.0;
+}
+
+/* The plate's spline in k beyond T1 (plate.c kspline_make): 32 nodes per
+ * octave of [T1/17, 1.01 tau_end], each a quadrature; none without the
+ * plate. */
+static double plate_nodes(double hh, double tau_end)
+{
+	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tau_end) : 0.0;
+	return t1 > 0 ? ceil(32.0 * log2(1.01 * tau_end / (t1 / 17.0))) + 4.0 : 0.0;
+}
+
+/* The unit costs of a physical correction (seconds, one core of the
+ * development machine): one predicted kernel evaluation (PHYS_EVAL_F
+ * included), one time sample, one plate node.  Fitted (CPU time, weighted
+ * least squares in the ratio) on 176 corrections of 44 scenes (bench
+ * section 13's and a random set: h/r0 0.05-18, 0.1 g-10 kg, 0.1-500 m/s,
+ * draft and normal, windows 5-2.6e5): predicted/measured 0.58-1.65 (0.69-
+ * 1.20 with the true evaluation count).  The price before, evaluations
+ * alone at COST_EVAL, was 0.10-4.8 times the time: an evaluation costs
+ * 0.15 us, not 0.35-0.45, and long windows' samples and plate nodes were
+ * not priced. */
+#define PHYS_COST_EVAL 1.2e-7
+#define PHYS_COST_SAMPLE 6.4e-8
+#define PHYS_COST_NODE 1.1e-4
+
 /* The physical contact's layer row (solver.c physical_impact and
  * physical_errors): four corrections (the point load and the Hertz patch at
  * the job's bandwidth, the patch below, the point load at half the band),
@@ -81,28 +122,52 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
  * the price of the r0 response alone was 3.6-5.2 times short).  Corrections
  * already in the cache cost nothing. */
 #define PHYS_EVAL_F 1.3
-double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
-			     const struct anvil_cache *cache, enum anvil_cache_where *where)
+/* The four corrections' predicted evaluations and (seconds, may be NULL)
+ * the time to make them, those in the cache left out. */
+static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			const struct anvil_cache *cache, enum anvil_cache_where *where,
+			double *seconds)
 {
 	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
-	double tq = anvil_cache_grid(tau_idx), evals = 0, xr;
+	double tq = anvil_cache_grid(tau_idx), evals = 0, sec = 0, xr;
 	struct { int omega_idx; double patch; } load[4] = {
 		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
 		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
 		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
 	*where = ANVIL_CACHE_MEMORY;
+	if (seconds)
+		*seconds = NAN;
 	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
 		return NAN;
 	for (int i = 0; i < 4; i++) {
 		struct anvil_cache_key key = { j->hh, nu, acc, load[i].omega_idx, tau_idx, 0,
 					       ANVIL_CACHE_LOAD_PATCH, load[i].patch };
 		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
-		if (w == ANVIL_CACHE_NONE)
-			evals += PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr),
-							  anvil_cache_grid(load[i].omega_idx), tq, acc);
+		if (w == ANVIL_CACHE_NONE) {
+			double om = anvil_cache_grid(load[i].omega_idx);
+			double e = PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr), om, tq, acc);
+			evals += e;
+			sec += e * PHYS_COST_EVAL + anvil_plan_corr_samples(j->hh, om, tq) * PHYS_COST_SAMPLE +
+			       plate_nodes(j->hh, tq) * PHYS_COST_NODE;
+		}
 		if (w == ANVIL_CACHE_NONE || (w == ANVIL_CACHE_DISK && *where == ANVIL_CACHE_MEMORY))
 			*where = w;
 	}
+	if (seconds)
+		*seconds = sec;
 	return evals;
 }
 
+double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			     const struct anvil_cache *cache, enum anvil_cache_where *where)
+{
+	return phys_work(j, nu, acc, cache, where, NULL);
+}
+
+double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
+			       const struct anvil_cache *cache, enum anvil_cache_where *where)
+{
+	double sec;
+	phys_work(j, nu, acc, cache, where, &sec);
+	return sec;
+}
