@@ -305,6 +305,11 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 	return st;
 }
 
+/* The sub-resolution merge, the contact budget and the rest state of the
+ * coupled runs (below, with the physical contact's). */
+static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
+		       const struct anvil_wave_job *j);
+
 /* The coupled run of job j (the anvil's response: static, half-space, or
  * half-space plus layer correction), with the layer correction's error
  * estimate when it is used. */
@@ -315,6 +320,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	struct waves wv = { .pb = pb, .job = j };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
 					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
+	merge_opts(&wv.io, pb, j); /* the paper's contact as the physical (the paper's scheme: none) */
 	int st = ANVIL_OK;
 	if (method == ANVIL_METHOD_STATIC)
 		wv.rs.stat = j->stat;
@@ -330,6 +336,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = nhist;
+		wv.io.rest_at = 0;
 		st = waves_impact(s, &wv, omega, idx, 0, r, err);
 		*used_corr = wv.rs.corr != NULL;
 		*band = *used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
@@ -338,6 +345,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		struct anvil_result coarse;
 		anvil_result_init(&coarse, r->model);
 		wv.io.nhist = 0;
+		wv.io.rest_at = r->rest_bound > 0 ? r->ts.val : 0.0; /* the twin at the rest's time */
 		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
 		if (!st)
 			add_green_error(r, &coarse);
@@ -376,6 +384,17 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 		snprintf(r->note, sizeof r->note,
 			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
 			 t_refl, r->ts.val * 1e6);
+}
+
+/* The rest state (impact.h, rest_tol) in the note: when, and the bound. */
+static void rest_note(struct anvil_result *r)
+{
+	size_t len = strlen(r->note);
+	if (!(r->rest_bound > 0) || len >= sizeof r->note)
+		return;
+	snprintf(r->note + len, sizeof r->note - len,
+		 "%scame to rest on the plate: R_f < %.2g (the rebound still possible from t_s = %.4g us; the contact does not end, the plate carries the momentum off)",
+		 len ? "; " : "", r->rest_bound, r->ts.val * 1e6);
 }
 
 /* Repeated contacts (impact.h) in the note: how many, and the first few's
@@ -434,6 +453,7 @@ struct phys_load {
 	int omega_idx;
 	double patch;
 	double tau_lag;
+	double rest_at; /* s: a row at rest (impact.h, rest_at): its runs stop there; 0: none */
 };
 
 /* Separations below the resolution of the coarse pass merged (impact.h:
@@ -445,6 +465,10 @@ static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 	io->merge_gap = anvil_accuracy_target(pb->accuracy);
 	io->merge_time = fmax(2.0 * (pb->dt > 0 ? pb->dt : j->dt), io->merge_gap * j->ts);
 	io->max_contacts = ANVIL_MAX_RUN_CONTACTS;
+	/* the rest state (impact.h): its bound at a tenth of the target, so
+	 * that R_f's half of it and the passes' difference meet the target
+	 * (check_target: R_f's error against 0.1) */
+	io->rest_tol = 0.1 * io->merge_gap;
 }
 
 /* One physical impact of job j, the window grown as in waves_impact; the
@@ -462,6 +486,7 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 	struct held held = { .n = 0 };
 	int st = ANVIL_ETOL;
 	merge_opts(&io, pb, j);
+	io.rest_at = ld.rest_at;
 	for (int attempt = 0; attempt < j->attempts && st == ANVIL_ETOL; attempt++) {
 		double tau_end = anvil_wave_window(j, attempt);
 		int tau_idx = anvil_wave_tau_idx(j, tau_end);
@@ -527,10 +552,11 @@ static int physical_errors(struct anvil_solver *s, const struct anvil_problem *p
 			   double a_max_r0, struct anvil_result *r, struct anvil_err *err)
 {
 	struct anvil_result q[2];
-	struct phys_load alt[4] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag },
-				    { ld.omega_idx, 0.0, ld.tau_lag },
-				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag },
-				    { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag } };
+	/* a row at rest: each compared at its time (rest_at) */
+	struct phys_load alt[4] = { { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag, ld.rest_at },
+				    { ld.omega_idx, 0.0, ld.tau_lag, ld.rest_at },
+				    { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag, ld.rest_at },
+				    { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag, ld.rest_at } };
 	double x = a_max_r0 / ld.patch, f = fmax(1.0, 2.0 * (1.0 - x * x));
 	int c, st = ANVIL_OK;
 	anvil_result_init(&q[0], r->model);
@@ -595,11 +621,12 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	const struct anvil_params *p = &pl->pb.p;
 	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
-	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2 };
+	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2, 0.0 };
 	int corr = 0;
 	int st = physical_impact(s, &pl->pb, &row->job, beta, ld, nhist, r, &corr, err);
 	if (!st && corr)
 		st = thin_check(pl, r, err);
+	ld.rest_at = r->rest_bound > 0 ? r->ts.val : 0.0;
 	if (!st && corr)
 		st = physical_errors(s, &pl->pb, &row->job, beta, ld, fmin(1.0, a / p->r0), r, err);
 	if (st)
@@ -633,6 +660,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	else
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");
+	rest_note(r);
 	contacts_note(r);
 	return check_target(r, pl->pb.accuracy, err);
 }
@@ -672,6 +700,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		r->Rf_star = 1.0;
 	}
 	waves_note(r, p, &row, row.method, corr);
+	rest_note(r);
 	contacts_note(r);
 	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, pl->pb.accuracy, err);
 }
