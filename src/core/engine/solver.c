@@ -297,6 +297,11 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		enum anvil_model m = r->model;
 		anvil_result_free(r);
 		anvil_result_init(r, m);
+		/* the last window, or the last the rule lets run: at rest at its
+		 * end rather than refused (impact.h, rest_last) */
+		wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
+				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
+						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
 		st = anvil_impact_run(p, response_ramp, &wv->rs, tau_end, &wv->io, r, err);
 		wv->tau_end = tau_end;
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
@@ -516,6 +521,9 @@ static int physical_impact(struct anvil_solver *s, const struct anvil_problem *p
 		enum anvil_model m = r->model;
 		anvil_result_free(r);
 		anvil_result_init(r, m);
+		io.rest_last = attempt + 1 >= j->attempts || /* as in waves_impact */
+			       anvil_wave_refuse(p, pb->dt, r->model, j, anvil_wave_window(j, attempt + 1),
+						 anvil_cache_grid(ld.omega_idx), NULL);
 		st = anvil_impact_run(p, response_ramp, &rs, tau_end, &io, r, err);
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
 			break;

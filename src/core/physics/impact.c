@@ -332,6 +332,8 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		if (st == IMPACT_BUDGET && impact_rest_fallback(s))
+			break; /* at rest on the plate before the chatter (impact_rest.c) */
 		if (st)
 			return st;
 		if (in)
@@ -354,7 +356,9 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 			break;
 		}
 	}
-	if (s->rest) { /* at rest on the plate (impact_rest.c): no end */
+	/* at rest on the plate (impact_rest.c): no end; or in contact at the
+	 * last window's end after coming to rest */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
 		peak(s);
 		return ANVIL_OK;
 	}
@@ -441,6 +445,8 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		double B = g0 + dt * dt / (6.0 * p->m1);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		if (st == IMPACT_BUDGET && impact_rest_fallback(s))
+			break; /* at rest on the plate before the chatter (impact_rest.c) */
 		if (st)
 			return st;
 		/* dw_c/dt(t_n) = wd0 + e0 P_n: low-passed at tau_lag (see above),
@@ -486,7 +492,9 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 			break;
 		}
 	}
-	if (s->rest) { /* at rest on the plate (impact_rest.c): no end */
+	/* at rest on the plate (impact_rest.c): no end; or in contact at the
+	 * last window's end after coming to rest */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
 		peak(s);
 		return ANVIL_OK;
 	}
@@ -681,6 +689,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0 };
 	c.rest_stop = c.rest_tol > 0 && o->rest_at > 0 ? o->rest_at : 0.0;
 	c.rest_long = impact_rest_long(p);
+	c.rest_last = o->rest_last;
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");

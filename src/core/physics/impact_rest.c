@@ -36,12 +36,17 @@
  * large lambda*) lies within it.  The scheme's own error on v enters by
  * the two passes' difference (impact_rest_fill).
  *
- * When.  Only once the bodies co-move: together (in contact, or a
- * separation not yet resolved) after they have parted and touched again,
- * merged or not.  A single contact that ends with a small rebound is
- * followed to its end as before, and a genuine re-contact keeps its
- * count and times: the bound is not small while the impactor still flies
- * or the spring still holds energy. */
+ * When.  The first node where the bodies co-move (together, in contact or
+ * a separation not yet resolved, after they have parted and touched
+ * again, merged or not, or in one contact longer than twice Hertz's) with
+ * the bound within rest_tol is kept, and the march goes on: a contact
+ * that ends, however long and however small its rebound, is followed to
+ * its end as before (the same bits).  Only where the march would be
+ * refused, more contacts than the budget or (the caller's last window,
+ * rest_last) a contact that outlasts the window, does the pass fall back
+ * to that node: the impactor came to rest there.  A genuine re-contact
+ * keeps its count and times: the bound is not small while the impactor
+ * still flies or the spring still holds energy. */
 #include <math.h>
 
 #include "hertz.h"
@@ -76,19 +81,36 @@ int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in)
 		return 0;
 	double tn = (double)n * s->dt;
 	/* the finer pass stops where the coarse one came to rest (the same
-	 * time in both: rest_stop is a node of each) */
-	int forced = c->rest_stop > 0 && tn >= c->rest_stop * (1.0 - 1e-12);
-	int co_moving = (in || s->pend_k) &&
-			(s->ncont >= 2 || s->nmerged >= 1 || tn > c->rest_long);
-	if (!forced && !co_moving)
+	 * time in both: rest_stop is a node of each), and so do the error
+	 * estimate's runs (rest_at) */
+	if (c->rest_stop > 0 && tn >= c->rest_stop * (1.0 - 1e-12)) {
+		s->rest_k = n;
+		s->rest_ncont = s->ncont;
+		s->rest_bound = rest_bound(c, s, n);
+		return impact_rest_fallback(s);
+	}
+	if (s->rest_k || !(in || s->pend_k) ||
+	    !(s->ncont >= 2 || s->nmerged >= 1 || tn > c->rest_long))
 		return 0;
 	double b = rest_bound(c, s, n);
-	if (!forced && !(b <= c->rest_tol))
+	if (b <= c->rest_tol) { /* the first node at rest: kept for a fallback */
+		s->rest_k = n;
+		s->rest_ncont = s->ncont;
+		s->rest_bound = b;
+	}
+	return 0;
+}
+
+int impact_rest_fallback(struct pass *s)
+{
+	size_t k = s->rest_k;
+	if (!k)
 		return 0;
 	s->rest = 1;
-	s->rest_bound = b;
-	s->ts = tn;
-	s->Vs = -s->v[n];
+	s->n = k + 1;
+	s->ncont = s->rest_ncont;
+	s->ts = (double)k * s->dt;
+	s->Vs = -s->v[k];
 	return 1;
 }
 
