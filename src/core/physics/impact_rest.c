@@ -7,9 +7,10 @@
  * plate with no gravity the plate carries the impactor's momentum away
  * and the final velocity tends to 0: the impactor comes to rest on the
  * plate (Zener 1941: R_f* = exp(-1.7191 lambda*) at large lambda*).
- * Following that to its end costs a search per contact and more contacts
- * than the budget; instead the pass stops once the rebound the impactor
- * can still reach is bounded within the level's target.
+ * Following that to its end can cost more contacts than the budget or a
+ * contact longer than any window; there the pass answers instead from the
+ * first moment the rebound the impactor can still reach was bounded
+ * within the level's target.
  *
  * The bound.  At low frequency the layer's centre is a Kirchhoff plate's,
  * whose point mobility is real and constant, 1/Z, Z = 8 sqrt(D rho h)
