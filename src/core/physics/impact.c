@@ -332,8 +332,10 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
-		if (st == IMPACT_BUDGET && impact_rest_fallback(s))
-			break; /* at rest on the plate before the chatter (impact_rest.c) */
+		/* at rest on the plate before the chatter, or before a contact's
+		 * end was lost (impact_rest.c) */
+		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
+			break;
 		if (st)
 			return st;
 		if (in)
@@ -363,6 +365,10 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		return ANVIL_OK;
 	}
 	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st == IMPACT_END_LOST && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)
@@ -445,8 +451,10 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		double B = g0 + dt * dt / (6.0 * p->m1);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
-		if (st == IMPACT_BUDGET && impact_rest_fallback(s))
-			break; /* at rest on the plate before the chatter (impact_rest.c) */
+		/* at rest on the plate before the chatter, or before a contact's
+		 * end was lost (impact_rest.c) */
+		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
+			break;
 		if (st)
 			return st;
 		/* dw_c/dt(t_n) = wd0 + e0 P_n: low-passed at tau_lag (see above),
@@ -499,6 +507,10 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		return ANVIL_OK;
 	}
 	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st == IMPACT_END_LOST && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)

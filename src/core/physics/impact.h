@@ -123,8 +123,9 @@ struct anvil_impact_opts {
 	 * R_f <= (|v| + sqrt(2 (E_H + E_L) / m1)) / V0, E_H the Hertz spring's
 	 * energy and E_L the layer's local strain energy beyond the plate's
 	 * dashpot.  The first node where it is within rest_tol is kept, and
-	 * where the run would be refused (more contacts than the budget; with
-	 * rest_last, a contact outlasting the window) the passes end there
+	 * where the run would be refused (more contacts than the budget, a
+	 * later contact's end lost; with rest_last, a contact outlasting the
+	 * window) the passes end there
 	 * instead: R_f is reported as the interval [0, bound] (its midpoint,
 	 * +- half of it), E_a likewise, t_s is the time the rest was
 	 * recognised (the contact has not ended), and r->rest_bound says so.

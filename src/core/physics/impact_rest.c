@@ -43,8 +43,9 @@
  * the bound within rest_tol is kept, and the march goes on: a contact
  * that ends, however long and however small its rebound, is followed to
  * its end as before (the same bits).  Only where the march would be
- * refused, more contacts than the budget or (the caller's last window,
- * rest_last) a contact that outlasts the window, does the pass fall back
+ * refused, more contacts than the budget, a later contact's end lost
+ * (finish_exact) or (the caller's last window, rest_last) a contact that
+ * outlasts the window, does the pass fall back
  * to that node: the impactor came to rest there.  A genuine re-contact
  * keeps its count and times: the bound is not small while the impactor
  * still flies or the spring still holds energy. */
