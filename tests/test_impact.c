@@ -177,6 +177,19 @@ static void test_repeated(void)
 	ok(fabs(lost - work) < 1e-4 * ke,
 	   "energy balance: kinetic energy lost %.6g J = int P dw %.6g J (to %.1e of m1 V0^2/2)",
 	   lost, work, fabs(lost - work) / ke);
+	/* the rest state on (impact.h, rest_tol, as the solver sets it at
+	 * normal): a genuine re-contact, the impactor flying between the
+	 * contacts and rebounding, is no rest: the same contacts, the same
+	 * bits */
+	struct anvil_result q;
+	anvil_result_init(&q, ANVIL_MODEL_LAYER);
+	io.rest_tol = 1e-4;
+	io.nhist = 0;
+	st = anvil_impact_run(&p, sdof_ramp, &o, tau_avail, &io, &q, &e);
+	ok(st == ANVIL_OK && q.rest_bound == 0 && q.ncontacts == r.ncontacts && q.ts.val == r.ts.val &&
+	   q.Rf.val == r.Rf.val && q.contact_on[1] == r.contact_on[1],
+	   "with the rest state on: not at rest, %zu contacts, the same t_s and R_f", q.ncontacts);
+	anvil_result_free(&q);
 	anvil_result_free(&r);
 }
 

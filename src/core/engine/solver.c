@@ -400,6 +400,11 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		enum anvil_model m = r->model;
 		anvil_result_free(r);
 		anvil_result_init(r, m);
+		/* the last window, or the last the rule lets run: at rest at its
+		 * end rather than refused (impact.h, rest_last) */
+		wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
+				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
+						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
 		st = anvil_impact_run(p, response_ramp, &wv->rs, tau_end, &wv->io, r, err);
 		wv->tau_end = tau_end;
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
@@ -407,6 +412,11 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 	}
 	return st;
 }
+
+/* The sub-resolution merge, the contact budget and the rest state of the
+ * coupled runs (below, with the physical contact's). */
+static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
+		       const struct anvil_wave_job *j);
 
 /* The coupled run of job j (the anvil's response: static, half-space, or
  * half-space plus layer correction), with the layer correction's error
@@ -418,6 +428,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	struct waves wv = { .pb = pb, .job = j };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
 					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
+	merge_opts(&wv.io, pb, j); /* the paper's contact as the physical (the paper's scheme: none) */
 	int st = ANVIL_OK;
 	if (method == ANVIL_METHOD_STATIC)
 		wv.rs.stat = j->stat;
@@ -434,6 +445,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = n_err;
+		wv.io.rest_at = 0;
 		st = waves_impact(s, &wv, omega, idx, 0, r, err);
 		*used_corr = wv.rs.corr != NULL;
 		*band = *used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
@@ -441,6 +453,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 			break;
 		struct anvil_result coarse;
 		anvil_result_init(&coarse, r->model);
+		wv.io.rest_at = r->rest_bound > 0 ? r->ts.val : 0.0; /* the twin at the rest's time */
 		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
 		if (!st)
 			add_green_error(r, &coarse, *band);
@@ -481,6 +494,17 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 		snprintf(r->note, sizeof r->note,
 			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
 			 t_refl, r->ts.val * 1e6);
+}
+
+/* The rest state (impact.h, rest_tol) in the note: when, and the bound. */
+static void rest_note(struct anvil_result *r)
+{
+	size_t len = strlen(r->note);
+	if (!(r->rest_bound > 0) || len >= sizeof r->note)
+		return;
+	snprintf(r->note + len, sizeof r->note - len,
+		 "%scame to rest on the plate: R_f < %.2g (the rebound still possible from t_s = %.4g us; the contact does not end, the plate carries the momentum off)",
+		 len ? "; " : "", r->rest_bound, r->ts.val * 1e6);
 }
 
 /* Repeated contacts (impact.h) in the note: how many, and the first few's
@@ -539,6 +563,7 @@ struct phys_load {
 	int omega_idx;
 	double patch;
 	double tau_lag;
+	double rest_at; /* s: a row at rest (impact.h, rest_at): its runs stop there; 0: none */
 };
 
 /* Separations below the resolution of the coarse pass merged (impact.h:
@@ -550,6 +575,10 @@ static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 	io->merge_gap = anvil_accuracy_target(pb->accuracy);
 	io->merge_time = fmax(2.0 * (pb->dt > 0 ? pb->dt : j->dt), io->merge_gap * j->ts);
 	io->max_contacts = ANVIL_MAX_RUN_CONTACTS;
+	/* the rest state (impact.h): its bound at a tenth of the target, so
+	 * that R_f's half of it and the passes' difference meet the target
+	 * (check_target: R_f's error against 0.1) */
+	io->rest_tol = 0.1 * io->merge_gap;
 }
 
 /* One physical impact of job j in progress: its load, the responses it
@@ -580,6 +609,7 @@ static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
 					    .nhist = nhist, .physical = 1, .beta = beta,
 					    .tau_lag = ld.tau_lag };
 	merge_opts(&u->io, pb, j);
+	u->io.rest_at = ld.rest_at;
 }
 
 /* Window `attempt` of run u: the plan's refusal rule, then the corrections
@@ -599,6 +629,9 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 				   anvil_cache_grid(ld.omega_idx), err);
 	if (st)
 		return st;
+	u->io.rest_last = attempt + 1 >= j->attempts || /* as in waves_impact */
+			  anvil_wave_refuse(p, pb->dt, u->r->model, j, anvil_wave_window(j, attempt + 1),
+					    anvil_cache_grid(ld.omega_idx), NULL);
 	u->corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, u->tau_end);
 	u->io.alpha_ref = 0;
 	if (!u->corr)
@@ -667,10 +700,10 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
 {
 	struct phys_load lds[PHYS_RUNS] = {
 		[PHYS_MAIN] = ld,
-		[PHYS_BELOW] = { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag },
-		[PHYS_HALF_LAG] = { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag },
-		[PHYS_POINT] = { ld.omega_idx, 0.0, ld.tau_lag },
-		[PHYS_POINT_HALF] = { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag },
+		[PHYS_BELOW] = { ld.omega_idx, anvil_plan_patch_below(ld.patch), ld.tau_lag, ld.rest_at },
+		[PHYS_HALF_LAG] = { ld.omega_idx, ld.patch, 0.5 * ld.tau_lag, ld.rest_at },
+		[PHYS_POINT] = { ld.omega_idx, 0.0, ld.tau_lag, ld.rest_at },
+		[PHYS_POINT_HALF] = { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag, ld.rest_at },
 	};
 	for (int k = 0; k < PHYS_RUNS; k++) {
 		struct anvil_result *rk = k == PHYS_MAIN ? r : &set->q[k];
@@ -682,6 +715,28 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
 		set->done[k] = 0;
 	}
 	set->warm.n = 0;
+}
+
+/* A row at rest (impact.h, rest_at): its error runs are compared at its
+ * rest time, so they are set up again to stop there (a warm row ran them
+ * beside it before its rest was known; rare: only a run otherwise refused
+ * comes to rest). */
+static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
+			  const struct anvil_problem *pb, const struct anvil_wave_job *j,
+			  double beta, double rest_at)
+{
+	for (int k = PHYS_MAIN + 1; k < PHYS_RUNS; k++) {
+		struct phys_load ld = set->u[k].ld;
+		enum anvil_model m = set->q[k].model;
+		held_release(s->cache, &set->u[k].held);
+		anvil_result_free(&set->q[k]);
+		anvil_result_init(&set->q[k], m);
+		ld.rest_at = rest_at;
+		phys_init(&set->u[k], pb, j, beta, ld, 0, &set->q[k]);
+		set->e[k] = (struct anvil_err){ 0 };
+		set->st[k] = ANVIL_ETOL;
+		set->done[k] = 0;
+	}
 }
 
 static void phys_set_free(struct anvil_solver *s, struct phys_set *set)
@@ -863,7 +918,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	const struct anvil_params *p = &pl->pb.p;
 	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
-	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2 };
+	struct phys_load ld = { row->job.omega_idx, row->job.patch, a / p->c2, 0.0 };
 	struct phys_set set;
 	phys_set_init(&set, &pl->pb, &row->job, beta, ld, nhist, r);
 	/* warm, the five impacts at once on the cores; cold, the row's first
@@ -875,7 +930,10 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 		*err = set.e[PHYS_MAIN];
 	if (!st && corr)
 		st = thin_check(pl, r, err);
-	if (!st && corr && !at_hand)
+	int rest = !st && r->rest_bound > 0;
+	if (rest)
+		phys_set_rest(s, &set, &pl->pb, &row->job, beta, r->ts.val);
+	if (!st && corr && (!at_hand || rest))
 		phys_rounds(s, &pl->pb, &row->job, &set, PHYS_MAIN + 1, PHYS_RUNS);
 	if (!st && corr)
 		st = physical_errors(&set, fmin(1.0, a / p->r0), r, err);
@@ -911,6 +969,7 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	else
 		snprintf(r->note, sizeof r->note,
 			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");
+	rest_note(r);
 	contacts_note(r);
 	return check_target(r, pl->pb.accuracy, err);
 }
@@ -950,6 +1009,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		r->Rf_star = 1.0;
 	}
 	waves_note(r, p, &row, row.method, corr);
+	rest_note(r);
 	contacts_note(r);
 	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : check_target(r, pl->pb.accuracy, err);
 }

@@ -332,6 +332,10 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		/* at rest on the plate before the chatter, or before a contact's
+		 * end was lost (impact_rest.c) */
+		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
+			break;
 		if (st)
 			return st;
 		if (in)
@@ -347,12 +351,24 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		S1 += P * tn;
 		s->n = n + 1;
 		anvil_fastconv_push(c->fc, P);
+		if (impact_rest_check(c, s, n, in))
+			break;
 		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
 		}
 	}
+	/* at rest on the plate (impact_rest.c): no end; or in contact at the
+	 * last window's end after coming to rest */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st == IMPACT_END_LOST && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)
@@ -435,6 +451,10 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		double B = g0 + dt * dt / (6.0 * p->m1);
 		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
 		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		/* at rest on the plate before the chatter, or before a contact's
+		 * end was lost (impact_rest.c) */
+		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
+			break;
 		if (st)
 			return st;
 		/* dw_c/dt(t_n) = wd0 + e0 P_n: low-passed at tau_lag (see above),
@@ -473,12 +493,24 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		S1 += P * tn;
 		s->n = n + 1;
 		anvil_fastconv_push_pair(c->fc, P, s->Q[n]);
+		if (impact_rest_check(c, s, n, in))
+			break;
 		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
 			s->parted = 1;
 			break;
 		}
 	}
+	/* at rest on the plate (impact_rest.c): no end; or in contact at the
+	 * last window's end after coming to rest */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	int st = sep_resolve(c, s, &ioff); /* a separation at the window's end */
+	if (st == IMPACT_END_LOST && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)
@@ -569,7 +601,7 @@ static int resample(const struct pass *s, const struct anvil_params *p, size_t n
 		h->v[i] = (1 - f) * s->v[k] + f * s->v[k + 1];
 		h->alpha[i] = h->W[i] - h->w[i];
 	}
-	if (!st && nhist) { /* the exact end state */
+	if (!st && nhist && !s->rest) { /* the exact end state (at rest: none) */
 		h->P[nhist - 1] = 0;
 		h->v[nhist - 1] = -s->Vs;
 		h->alpha[nhist - 1] = 0;
@@ -665,7 +697,11 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .tau_lag = o->physical && o->tau_lag > 0 ? o->tau_lag : 0.0,
 			 .merge_gap = o->merge_gap > 0 ? o->merge_gap : 0.0,
 			 .merge_time = o->merge_time > 0 ? o->merge_time : 0.0,
-			 .max_contacts = o->max_contacts };
+			 .max_contacts = o->max_contacts,
+			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0 };
+	c.rest_stop = c.rest_tol > 0 && o->rest_at > 0 ? o->rest_at : 0.0;
+	c.rest_long = impact_rest_long(p);
+	c.rest_last = o->rest_last;
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "impact: the physical contact needs beta >= 0 and the implicit scheme");
@@ -680,14 +716,19 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	struct pass *last = &a; /* the pass that ran last, for the messages */
+	c.rest_stop = a.rest ? a.ts : c.rest_stop; /* the finer pass stops there too */
 	if (!st)
 		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, last = &b);
 	if (!st && o->single) { /* the dt pass alone; its error vs dt/2 */
 		fill(r, p, &a, &b, ANVIL_SCHEME_PAPER);
+		if (a.rest || b.rest)
+			impact_rest_fill(r, p, &a, &b);
 		if (o->nhist > 1)
 			st = resample(&a, p, o->nhist, &r->hist);
 	} else if (!st) {
 		fill(r, p, &a, &b, o->scheme);
+		if (a.rest || b.rest)
+			impact_rest_fill(r, p, &a, &b);
 		if (o->nhist > 1)
 			st = resample(o->scheme == ANVIL_SCHEME_PAPER ? &a : &b, p, o->nhist, &r->hist);
 	}
@@ -695,8 +736,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		st = ANVIL_ETOL;
 		r->ts.val = INFINITY;
 		anvil_err_set(err, st,
-			      "the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution); the thin-plate model 'zener' applies here",
-			      o->max_contacts);
+			      "the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution; by t = %.4g us the impactor still moves at %.3g m/s, not at rest on the plate); the thin-plate model 'zener' applies here",
+			      o->max_contacts, (double)(last->n - 1) * last->dt * 1e6,
+			      last->n ? last->v[last->n - 1] : p->V0);
 	} else if (st == ANVIL_ETOL) {
 		r->ts.val = NAN;
 		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",

@@ -117,6 +117,26 @@ struct anvil_impact_opts {
 	 * with t_s = inf (no longer window helps) and a one-line reason; 0:
 	 * none. */
 	size_t max_contacts;
+	/* The rest state (implicit and physical; 0: off; impact_rest.c).  Once
+	 * the bodies co-move (together again after a separation, merged or
+	 * not), the rebound the impactor can still reach is bounded by
+	 * R_f <= (|v| + sqrt(2 (E_H + E_L) / m1)) / V0, E_H the Hertz spring's
+	 * energy and E_L the layer's local strain energy beyond the plate's
+	 * dashpot.  The first node where it is within rest_tol is kept, and
+	 * where the run would be refused (more contacts than the budget, a
+	 * later contact's end lost; with rest_last, a contact outlasting the
+	 * window) the passes end there
+	 * instead: R_f is reported as the interval [0, bound] (its midpoint,
+	 * +- half of it), E_a likewise, t_s is the time the rest was
+	 * recognised (the contact has not ended), and r->rest_bound says so.
+	 * A run that ends by itself is not changed.  The caller sets rest_tol
+	 * below the level's target on R_f. */
+	double rest_tol;
+	int rest_last; /* 1: the caller's last window (a contact at its end falls back to rest) */
+	/* s; > 0: the passes stop at rest at this time whatever the bound
+	 * (the error-estimate runs of a row at rest are compared with it at
+	 * its own time, not at wherever their bound happens to fall). */
+	double rest_at;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

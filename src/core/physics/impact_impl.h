@@ -41,6 +41,13 @@ struct pass {
 	double pend_imp, pend_a, sep_gap;
 	size_t nmerged;  /* separations merged into their contact */
 	double Pmax_run; /* the largest P so far (co_moving) */
+	/* the rest state (impact_rest.c): rest_k the first node at rest (0:
+	 * none), with the contacts then and the rebound's bound (relative to
+	 * V0); rest 1 when the pass ended there (t_s = rest_k dt); Sg the
+	 * running sum of the weights g_0..g_n (the layer's step response) */
+	int rest;
+	size_t rest_k, rest_ncont;
+	double rest_bound, Sg;
 };
 
 struct ctx {
@@ -64,6 +71,10 @@ struct ctx {
 	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
 	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
 	size_t max_contacts;          /* the budget (opts); 0: none */
+	double rest_tol;  /* the rest state (opts); 0: off */
+	double rest_stop; /* s: the coarse pass came to rest here, the finer stops too; 0: none */
+	double rest_long; /* s: a contact longer co-moves (impact_rest_long) */
+	int rest_last;    /* the caller's last window (opts): fall back to rest at its end */
 };
 
 /* The ramp responses off the grid that the far past needs at every
@@ -88,5 +99,23 @@ void impact_end_tab_free(struct end_tab *t);
  * ANVIL_OK, ANVIL_ENOMEM, ANVIL_ENUM, or IMPACT_END_LOST (*toff = t_k). */
 int impact_finish_exact(const struct ctx *c, const struct pass *s, double impulse, double *toff,
 			double *ioff);
+
+/* The time beyond which one contact is a co-moving one (s): twice
+ * Hertz's on a rigid anvil. */
+double impact_rest_long(const struct anvil_params *p);
+/* The rest state (impact.h, rest_tol; impact_rest.c).  At node n of the
+ * pass (in: in contact; the pass's arrays filled to n): keeps the first
+ * node at rest; 1 when the pass is to stop there (a forced stop,
+ * rest_stop: s ended as by impact_rest_fallback), 0 to go on.  Call once
+ * per node, in order (it keeps s->Sg). */
+int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in);
+/* The pass ends at its first node at rest, if it had one (1; s->rest,
+ * n, ncont, ts, Vs set: the contact goes on); else 0, s unchanged. */
+int impact_rest_fallback(struct pass *s);
+/* The result of two passes either of which came to rest (after fill):
+ * R_f and E_a as the intervals the bound allows, t_s the rest's time,
+ * r->rest_bound. */
+void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, const struct pass *a,
+		      const struct pass *b);
 
 #endif

@@ -45,6 +45,11 @@ struct anvil_result {
 	size_t ncontacts;
 	double contact_on[ANVIL_MAX_CONTACTS], contact_off[ANVIL_MAX_CONTACTS];
 	double t_free;       /* s: the free motion after the last contact was followed to here */
+	/* The rest state (impact.h, rest_tol): > 0 when the impactor came to
+	 * rest on the plate at t_s, the contact not ended: R_f is then only
+	 * known to lie in [0, rest_bound] (R_f = rest_bound/2 +- rest_bound/2);
+	 * 0 otherwise. */
+	double rest_bound;
 	/* How far the layer's motion reaches during the contact (a finite
 	 * layer's layer and zener rows; NaN otherwise), m: the P wave's front
 	 * c1 t_s, and the bending's spread 2 sqrt(beta t_s) (anvil_result_reach).

@@ -1,0 +1,151 @@
+/* impact_rest.c: the impactor at rest on a thin plate (impact.h,
+ * rest_tol; issue 11).
+ *
+ * After the first contact on a thin plate the impactor and the plate move
+ * together: gaps of picometres, contacts that part and touch again below
+ * the time step's resolution, for tens of milliseconds.  On an unbounded
+ * plate with no gravity the plate carries the impactor's momentum away
+ * and the final velocity tends to 0: the impactor comes to rest on the
+ * plate (Zener 1941: R_f* = exp(-1.7191 lambda*) at large lambda*).
+ * Following that to its end can cost more contacts than the budget or a
+ * contact longer than any window; there the pass answers instead from the
+ * first moment the rebound the impactor can still reach was bounded
+ * within the level's target.
+ *
+ * The bound.  At low frequency the layer's centre is a Kirchhoff plate's,
+ * whose point mobility is real and constant, 1/Z, Z = 8 sqrt(D rho h)
+ * (plate.h: its ramp response tends to alpha* t^2/2, alpha* = 1/Z): a
+ * dashpot, which radiates what it takes and stores nothing that can come
+ * back to the load point.  What the layer holds near the load beyond that
+ * dashpot is a local compliance C_loc in series (plate.h: the fitted
+ * a + b t + c t log t, the patch's and the thickness's): at lag t the
+ * layer's step response is u(t) = t/Z + C_loc, so C_loc = u(t) - t h(t),
+ * h the impulse response, here from the weights g (impact.c: g_j =
+ * h(t_j) dt, sum_{j<=n} g_j = u(t_{n+1/2})).  The radiation lag of the
+ * physical contact (-beta dP/dt) is a dashpot too.  So impactor, Hertz
+ * spring, local spring and dashpot: their energy
+ *   E = m1 v^2/2 + E_H + E_L,  E_H = (2/5) P alpha_H,  E_L = |C_loc| P^2/2,
+ * can only decrease (dE/dt = -Z w_d'^2 with w_d the dashpot's motion), and
+ * no later speed of the impactor can exceed sqrt(v^2 + 2 (E_H + E_L)/m1):
+ *   R_f <= (|v| + sqrt(2 (E_H + E_L) / m1)) / V0.
+ * |C_loc| over C_loc keeps the bound where the correction stiffens the
+ * contact (C_loc < 0 stores less than E_H says).  The bound is that of
+ * the plate's lumped model; the layer departs from it at frequencies
+ * where its waves are short against h, which the co-moving phase (slow:
+ * its time m1/Z is many T1 = 64 r0/c2, plate.h) does not excite.  Zener's
+ * plate model is exactly this system with C_loc = 0, so his R_f* (~0 at
+ * large lambda*) lies within it.  The scheme's own error on v enters by
+ * the two passes' difference (impact_rest_fill).
+ *
+ * When.  The first node where the bodies co-move (together, in contact or
+ * a separation not yet resolved, after they have parted and touched
+ * again, merged or not, or in one contact longer than twice Hertz's) with
+ * the bound within rest_tol is kept, and the march goes on: a contact
+ * that ends, however long and however small its rebound, is followed to
+ * its end as before (the same bits).  Only where the march would be
+ * refused, more contacts than the budget, a later contact's end lost
+ * (finish_exact) or (the caller's last window, rest_last) a contact that
+ * outlasts the window, does the pass fall back
+ * to that node: the impactor came to rest there.  A genuine re-contact
+ * keeps its count and times: the bound is not small while the impactor
+ * still flies or the spring still holds energy. */
+#include <math.h>
+
+#include "hertz.h"
+#include "impact_impl.h"
+
+/* A contact longer than this many of Hertz's on a rigid anvil is set by
+ * the plate's compliance, not by Hertz's spring: the bodies co-move. */
+#define REST_LONG 2.0
+
+double impact_rest_long(const struct anvil_params *p)
+{
+	return REST_LONG * anvil_hertz_tau_s() * p->T;
+}
+
+/* The rebound's bound at node n, relative to V0 (see above). */
+static double rest_bound(const struct ctx *c, const struct pass *s, size_t n)
+{
+	const struct anvil_params *p = c->p;
+	double P = s->P[n];
+	double c_loc = s->Sg - ((double)n + 0.5) * c->g[n];
+	double eh = 0.4 * P * p->k0 * cbrt(P * P), el = 0.5 * fabs(c_loc) * P * P;
+	return (fabs(s->v[n]) + sqrt(2.0 * (eh + el) / p->m1)) / p->V0;
+}
+
+int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in)
+{
+	if (n == 1)
+		s->Sg = c->g[0];
+	if (n < c->ng)
+		s->Sg += c->g[n];
+	if (!(c->rest_tol > 0) || n >= c->ng)
+		return 0;
+	double tn = (double)n * s->dt;
+	/* the finer pass stops where the coarse one came to rest (the same
+	 * time in both: rest_stop is a node of each), and so do the error
+	 * estimate's runs (rest_at) */
+	if (c->rest_stop > 0 && tn >= c->rest_stop * (1.0 - 1e-12)) {
+		s->rest_k = n;
+		s->rest_ncont = s->ncont;
+		s->rest_bound = rest_bound(c, s, n);
+		return impact_rest_fallback(s);
+	}
+	if (s->rest_k || !(in || s->pend_k) ||
+	    !(s->ncont >= 2 || s->nmerged >= 1 || tn > c->rest_long))
+		return 0;
+	double b = rest_bound(c, s, n);
+	if (b <= c->rest_tol) { /* the first node at rest: kept for a fallback */
+		s->rest_k = n;
+		s->rest_ncont = s->ncont;
+		s->rest_bound = b;
+	}
+	return 0;
+}
+
+int impact_rest_fallback(struct pass *s)
+{
+	size_t k = s->rest_k;
+	if (!k)
+		return 0;
+	s->rest = 1;
+	s->n = k + 1;
+	s->ncont = s->rest_ncont;
+	s->ts = (double)k * s->dt;
+	s->Vs = -s->v[k];
+	return 1;
+}
+
+/* The velocity of pass s at time t (its nearest node, within its run). */
+static double v_at(const struct pass *s, double t)
+{
+	double x = floor(t / s->dt + 0.5);
+	size_t k = x > 0 ? (size_t)x : 0;
+	return s->v[k < s->n ? k : s->n - 1];
+}
+
+void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, const struct pass *a,
+		      const struct pass *b)
+{
+	/* each pass's bound (or, for one that parted, its rebound), and the
+	 * scheme's error on v where both ran: the whole difference, as
+	 * extrap takes it */
+	double ta = (double)(a->n - 1) * a->dt, tb = (double)(b->n - 1) * b->dt, tc = fmin(ta, tb);
+	double dv = fabs(v_at(a, tc) - v_at(b, tc)) / p->V0;
+	double ba = a->rest ? a->rest_bound : fabs(a->Vs) / p->V0;
+	double bb = b->rest ? b->rest_bound : fabs(b->Vs) / p->V0;
+	double bnd = fmin(1.0, fmax(ba, bb) + dv), e0 = 0.5 * p->m1 * p->V0 * p->V0;
+	r->rest_bound = bnd;
+	r->Rf.val = r->Rf.err = 0.5 * bnd;
+	r->Vs.val = r->Vs.err = 0.5 * bnd * p->V0;
+	/* V_s in [0, bnd V0]: E_a = E0 - m1 V_s^2/2 in [E0 (1 - bnd^2), E0] */
+	r->Ea.val = e0 * (1.0 - 0.5 * bnd * bnd);
+	r->Ea.err = 0.5 * e0 * bnd * bnd;
+	/* t_s: when the rest was recognised (the contact goes on) */
+	const struct pass *s = a->rest ? a : b;
+	r->ts.val = s->ts;
+	r->ts.err = a->rest && b->rest ? fabs(a->ts - b->ts) : fabs(ta - tb);
+	r->t_free = r->ts.val;
+	if (b->ncont >= 1 && b->ncont <= ANVIL_MAX_CONTACTS)
+		r->contact_off[b->ncont - 1] = r->ts.val;
+}
