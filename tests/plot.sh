@@ -113,6 +113,16 @@ check "a title with leading and doubled quotes: script written" \
 	"$ANVIL" plot force -s solver.models=hertz --title "''x''y'" --script -
 assert "leading quotes in their own piece" grep -q \
 	"^set label 1001 \"''\".'x'.\"''\".'y''' at screen" "$tmp/out"
+check "a short contact's time axis in us" \
+	"$ANVIL" plot force -s solver.models=hertz,zener --script -
+assert "t in us" grep -q "^set xlabel 't (µs)'" "$tmp/out"
+check "a drop weight's time axis in ms (0.54 s contact: not 540000 us)" \
+	"$ANVIL" plot force -s solver.models=hertz,zener -s layer.thickness=0.25r0 -s impactor.mass=2kg --script -
+assert "t in ms" grep -q "^set xlabel 't (ms)'" "$tmp/out"
+assert "the curve's last time in ms" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $1 > m { m = $1 } END { exit !(m > 500 && m < 600) }' "$tmp/out"
+check "the examples' title names both materials: not said twice" \
+	"$ANVIL" plot force -s solver.models=hertz --script -
+assert "subtitle: title, then the numbers" grep -q "(Pyr'*yev et al. 2024): m = 12.2 g, r₀ = 4 mm" "$tmp/out"
 check_exit 2 "an unknown image type is a usage error" "$ANVIL" plot force -o "$tmp/x.jpg"
 assert "the image types are named" grep -q "png, .svg or .pdf" "$tmp/err"
 check "restitution-thickness respects -s layer.thickness" \

@@ -301,6 +301,12 @@ static void test_keys(void)
 	ok(tui_model_key(m, '?') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_HELP, "? helps");
 	ok(tui_model_key(m, 'q') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_MAIN,
 	   "any key, even q, leaves the help");
+	ok(tui_model_key(m, 'n') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_NOTES,
+	   "n shows the notes in full");
+	int sel_before = m->sel;
+	ok(tui_model_key(m, 'j') == TUI_ACT_REDRAW && m->screen == TUI_SCREEN_MAIN &&
+		   m->sel == sel_before,
+	   "any key leaves the notes, and selects nothing");
 	ok(tui_model_key(m, 'p') == TUI_ACT_EXPORT, "p exports");
 	ok(tui_model_key(m, 's') == TUI_ACT_SAVE, "s saves");
 	ok(!strcmp(tui_model_save_path(m), TUI_DEFAULT_SAVE), "to %s without a file",

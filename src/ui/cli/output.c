@@ -543,9 +543,15 @@ static void table_reach(FILE *f, const struct anvil_scene *sc, const struct anvi
 static void table_caption(FILE *f, const struct anvil_scene *sc)
 {
 	double h = anvil_scene_h(sc);
-	fprintf(f, "\n%s: %s impactor %.4g g, r0 = %.4g mm, V0 = %.4g m/s -> %s layer ",
-		sc->title[0] ? sc->title : "scene", sc->impactor.mat.name,
-		sc->mass * 1e3, sc->radius * 1e3, sc->velocity, sc->layer.mat.name);
+	char m[24];
+	/* kg from 1 kg up: a drop weight read as "1e+05 g" is a misreading waiting */
+	if (sc->mass >= 1.0)
+		snprintf(m, sizeof m, "%.4g kg", sc->mass);
+	else
+		snprintf(m, sizeof m, "%.4g g", sc->mass * 1e3);
+	fprintf(f, "\n%s: %s impactor %s, r0 = %.4g mm, V0 = %.4g m/s -> %s layer ",
+		sc->title[0] ? sc->title : "scene", sc->impactor.mat.name, m,
+		sc->radius * 1e3, sc->velocity, sc->layer.mat.name);
 	if (isinf(h))
 		fputs("h = inf (half-space)", f);
 	else

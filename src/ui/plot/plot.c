@@ -315,6 +315,18 @@ static void put_mm(char *buf, size_t len, double m)
 	snprintf(buf, len, "%.3g mm", m * 1e3);
 }
 
+/* Whether the text names word (case aside): a material's name in a title. */
+static int names(const char *text, const char *word)
+{
+	size_t n = strlen(word);
+	if (!n)
+		return 0;
+	for (; *text; text++)
+		if (!strncasecmp(text, word, n))
+			return 1;
+	return 0;
+}
+
 void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 			 int vary_h, int vary_v)
 {
@@ -334,11 +346,22 @@ void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 		v[0] = '\0';
 	else
 		snprintf(v, sizeof v, ", V₀ = %.4g m/s", sc->velocity);
-	/* A long scene title is cut: the subtitle is one line. */
-	int k = snprintf(c->subtitle, sizeof c->subtitle, "%.*s%s%s impactor (m = %.4g g, "
-			 "r₀ = %s) on %s%s%s%s", 100, sc->title, sc->title[0] ? ": " : "",
-			 sc->impactor.mat.name, sc->mass * 1e3, r0, sc->layer.mat.name,
-			 isfinite(hm) || vary_h ? " layer" : "", h, v);
+	char m[32];
+	if (sc->mass >= 1.0)
+		snprintf(m, sizeof m, "m = %.4g kg", sc->mass);
+	else
+		snprintf(m, sizeof m, "m = %.4g g", sc->mass * 1e3);
+	/* A title that names both materials (the examples' do) is not said
+	 * twice; a long one is cut: the subtitle is one line. */
+	int k;
+	if (names(sc->title, sc->impactor.mat.name) && names(sc->title, sc->layer.mat.name))
+		k = snprintf(c->subtitle, sizeof c->subtitle, "%.*s: %s, r₀ = %s%s%s", 100,
+			     sc->title, m, r0, h, v);
+	else
+		k = snprintf(c->subtitle, sizeof c->subtitle, "%.*s%s%s impactor (%s, "
+			     "r₀ = %s) on %s%s%s%s", 100, sc->title, sc->title[0] ? ": " : "",
+			     sc->impactor.mat.name, m, r0, sc->layer.mat.name,
+			     isfinite(hm) || vary_h ? " layer" : "", h, v);
 	if (k >= (int)sizeof c->subtitle)
 		c->subtitle[sizeof c->subtitle - 1] = '\0';
 }
@@ -429,13 +452,30 @@ static void history_keys(struct plot_chart *c, const struct plot_run *runs, int 
 			}
 }
 
-/* One run's curve in one panel (0 P, 1 v, 2 w). */
-static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel)
+/* The time axis' unit for the longest history of runs: us up to 20 ms,
+ * ms up to 20 s, else s (a 0.5 s drop-weight contact read in us is
+ * "500000").  Returns the scale from s; sets c->tlabel. */
+static double history_time_unit(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	double tmax = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]) && runs[i].r->hist.n > 0)
+			tmax = fmax(tmax, runs[i].r->hist.t[runs[i].r->hist.n - 1]);
+	if (tmax <= 20e-3) {
+		c->tlabel = "t (µs)";
+		return 1e6;
+	}
+	c->tlabel = tmax <= 20.0 ? "t (ms)" : "t (s)";
+	return tmax <= 20.0 ? 1e3 : 1.0;
+}
+
+/* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
+static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel, double ts)
 {
 	double ys;
 	const double *y = history_y(&run->r->hist, panel, &ys);
 	int st = plot_chart_add(c, "", model_mark(run->model), run_colour(run),
-				run->r->hist.t, y, run->r->hist.n, 1e6, ys, 0);
+				run->r->hist.t, y, run->r->hist.n, ts, ys, 0);
 	if (!st)
 		c->s[c->nseries - 1].panel = panel;
 	return st;
@@ -458,6 +498,7 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 	snprintf(c->title, sizeof c->title, "%s, V_0 = %g m/s",
 		 kind == PLOT_HISTORY ? "Contact force, impactor velocity and deflection"
 		 : what[p0], n > 0 ? runs[0].V0 : 0.0);
+	double ts = history_time_unit(c, runs, n);
 	/* The half-space first: its band goes under the layers. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < n && !st; i++) {
@@ -471,7 +512,7 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 					hertz = 1;
 					continue;
 				}
-				st = history_curve(c, run, p);
+				st = history_curve(c, run, p, ts);
 			}
 		}
 	if (st || c->nseries == 0)
@@ -495,13 +536,14 @@ int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
 	plot_chart_init(c, PLOT_MODELS);
 	snprintf(c->title, sizeof c->title,
 		 "The physical and the paper's contact model, V_0 = %g m/s", n > 0 ? runs[0].V0 : 0.0);
+	double ts = history_time_unit(c, runs, n);
 	for (int i = 0; i < n && !st; i++) {
 		const struct plot_run *run = &runs[i];
 		if (!ok_run(run) || run->r->hist.n == 0)
 			continue;
 		int paper = run->r->contact == ANVIL_CONTACT_PAPER;
 		st = plot_chart_add(c, "", paper ? PLOT_DASH : PLOT_LINE, run_colour(run),
-				    run->r->hist.t, run->r->hist.P, run->r->hist.n, 1e6, 1e-3, 0);
+				    run->r->hist.t, run->r->hist.P, run->r->hist.n, ts, 1e-3, 0);
 		if (!st)
 			c->s[c->nseries - 1].panel = 0;
 		any_hs |= !isfinite(run->h_r0) || run->model == ANVIL_MODEL_HALFSPACE;

@@ -166,6 +166,7 @@ struct plot_chart {
 	char subtitle[PLOT_TITLE_MAX]; /* the scene: user text, noenhanced */
 	char footnote[PLOT_TITLE_MAX]; /* under the plot, anvil's, enhanced */
 	char setup[512];               /* extra gnuplot commands (ranges) */
+	const char *tlabel;            /* a history's time axis ("t (ms)"); NULL: the kind's */
 	int nseries, nkeys, nnotes;
 	struct plot_series s[PLOT_MAX_SERIES];
 	struct plot_key keys[PLOT_MAX_KEYS];

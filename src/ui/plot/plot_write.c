@@ -260,10 +260,10 @@ static void write_plot(FILE *f, const struct plot_chart *c, int panel, int keys)
 	fputc('\n', f);
 }
 
-static void write_axes(FILE *f, const struct plot_kind_info *k)
+static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_kind_info *k)
 {
 	fputs("set xlabel ", f);
-	plot_put_quoted(f, k->xlabel);
+	plot_put_quoted(f, c->tlabel ? c->tlabel : k->xlabel);
 	fputs("\nset ylabel ", f);
 	plot_put_quoted(f, k->ylabel);
 	fputc('\n', f);
@@ -286,7 +286,8 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 		if (p < 2)
 			fputs("set format x ''\nunset xlabel\nset key off\n", f);
 		else
-			fputs("set format x '%g'\nset xlabel 't (µs)'\nset key on\n", f);
+			fprintf(f, "set format x '%%g'\nset xlabel '%s'\nset key on\n",
+				c->tlabel ? c->tlabel : "t (µs)");
 		write_notes(f, c, p);
 		write_plot(f, c, p, p == 2);
 		fputs("unset offsets\nunset xzeroaxis\nset autoscale y\n", f);
@@ -302,7 +303,8 @@ static void write_models(FILE *f, const struct plot_chart *c, double top, double
 	fputs("set multiplot\n", f);
 	fprintf(f, "# panel 1: P(t)\nset lmargin at screen %g\nset rmargin at screen %g\n"
 		"set tmargin at screen %g\nset bmargin at screen %g\n", LEFT, mid - gap, top, bottom);
-	fputs("set xlabel 't (µs)'\nset ylabel 'contact force P (kN)'\n" TIME_AXIS_W
+	fprintf(f, "set xlabel '%s'\n", c->tlabel ? c->tlabel : "t (µs)");
+	fputs("set ylabel 'contact force P (kN)'\n" TIME_AXIS_W
 	      "set yrange [0:*]\nset key off\n", f);
 	write_plot(f, c, 0, 0);
 	fprintf(f, "# panel 2: R_f against h/r0\nunset label\nunset offsets\nset autoscale\n"
@@ -338,7 +340,7 @@ int plot_write(FILE *f, const struct plot_chart *c, const struct plot_opts *o)
 	} else if (c->kind == PLOT_MODELS) {
 		write_models(f, c, c->subtitle[0] ? TOP_SUB : TOP_NOSUB, frame_bottom(c, o));
 	} else {
-		write_axes(f, k);
+		write_axes(f, c, k);
 		fputs(k->setup, f);
 		fputs(c->setup, f);
 		write_notes(f, c, 0);

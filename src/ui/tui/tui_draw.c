@@ -244,38 +244,71 @@ static void put_right(int y, int x, int w, attr_t a, const char *s)
 	put(y, x + (cols < w ? w - cols : 0), w, a, s);
 }
 
-/* The one verdict (verdict.h), first under the table: in the error colour
- * when a body yields or cracks.  Returns the rows used. */
-static int draw_verdict(const struct tui_model *m, int y)
+/* The notes under the table, in order: the verdict (verdict.h; in the
+ * error colour when a body yields or cracks), then each computed row's
+ * refusal or note.  The main screen shows the first NOTES_ROWS, one line
+ * each; the notes screen ('n') shows them all, wrapped. */
+#define NOTES_MAX (2 + ANVIL_MODEL_COUNT)
+#define NOTE_LEN 1024
+struct notes {
+	int n;
+	attr_t a[NOTES_MAX];
+	char text[NOTES_MAX][NOTE_LEN];
+};
+
+static void notes_collect(const struct tui_model *m, struct notes *nt)
 {
 	char layer[320], imp[320];
-	int w = COLS - TABLE_X, fails = tui_model_verdict(m, layer, imp, sizeof layer);
-	if (fails < 0)
-		return 0;
-	putf(y, TABLE_X, w, attr(fails ? R_ERROR : R_INFO), "%s", layer);
-	if (!imp[0])
-		return 1;
-	putf(y + 1, TABLE_X, w, attr(R_ERROR), "%s", imp);
-	return 2;
-}
-
-static void draw_notes(const struct tui_model *m, int y)
-{
-	int w = COLS - TABLE_X, used = draw_verdict(m, y);
-	for (int i = 0; i < ANVIL_MODEL_COUNT && used < NOTES_ROWS; ++i) {
+	int fails = tui_model_verdict(m, layer, imp, sizeof layer);
+	nt->n = 0;
+	if (fails >= 0) {
+		nt->a[nt->n] = attr(fails ? R_ERROR : R_INFO);
+		snprintf(nt->text[nt->n++], NOTE_LEN, "%s", layer);
+		if (imp[0]) {
+			nt->a[nt->n] = attr(R_ERROR);
+			snprintf(nt->text[nt->n++], NOTE_LEN, "%s", imp);
+		}
+	}
+	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i) {
 		const struct tui_row *row = &m->rows[tui_model_order[i]];
 		const char *title = tui_model_title(tui_model_order[i]);
 		if (row->state != TUI_ROW_DONE)
 			continue;
-		if (row->status != ANVIL_OK)
-			putf(y + used++, TABLE_X, w, attr(row->have ? R_INFO : R_ERROR),
-			     "%s: %s", title,
-			     row->msg[0] ? cli_model_reason(tui_model_order[i], row->msg)
-					 : anvil_strerror(row->status));
-		else if (row->have && row->res.note[0])
-			putf(y + used++, TABLE_X, w, attr(R_INFO), "%s: %s", title,
-			     row->res.note);
+		if (row->status != ANVIL_OK) {
+			nt->a[nt->n] = attr(row->have ? R_INFO : R_ERROR);
+			snprintf(nt->text[nt->n++], NOTE_LEN, "%s: %s", title,
+				 row->msg[0] ? cli_model_reason(tui_model_order[i], row->msg)
+					     : anvil_strerror(row->status));
+		} else if (row->have && row->res.note[0]) {
+			nt->a[nt->n] = attr(R_INFO);
+			snprintf(nt->text[nt->n++], NOTE_LEN, "%s: %s", title, row->res.note);
+		}
 	}
+}
+
+/* s in w columns on one line; cut short with an ellipsis when it does
+ * not fit (the notes screen has the rest). */
+static void put_cut(int y, int x, int w, attr_t a, const char *s, const struct tui_view *v)
+{
+	const char *e = ellipsis(v);
+	int ew = ncols(e);
+	if (ncols(s) <= w || w <= ew) {
+		put(y, x, w, a, s);
+		return;
+	}
+	put(y, x, w - ew, a, s);
+	put(y, x + w - ew, ew, a, e);
+}
+
+static void draw_notes(const struct tui_model *m, const struct tui_view *v, int y)
+{
+	struct notes *nt = malloc(sizeof *nt);
+	if (!nt)
+		return;
+	notes_collect(m, nt);
+	for (int i = 0; i < nt->n && i < NOTES_ROWS; ++i)
+		put_cut(y + i, TABLE_X, COLS - TABLE_X, nt->a[i], nt->text[i], v);
+	free(nt);
 }
 
 static void draw_table(const struct tui_model *m, const struct tui_view *v)
@@ -297,7 +330,7 @@ static void draw_table(const struct tui_model *m, const struct tui_view *v)
 				  TABLE_COL_W - 1, cell_attr(row), cell);
 		}
 	}
-	draw_notes(m, TOP + 1 + NQUANT);
+	draw_notes(m, v, TOP + 1 + NQUANT);
 }
 
 /* ---- the plot ----
@@ -714,9 +747,9 @@ static void draw_status(const struct tui_model *m)
 {
 	static const char keys_long[] =
 		"arrows/hjkl select+change  H/L coarse  Enter type  m material  "
-		"a accuracy  v plot  p png  s save  ? help  q quit";
+		"a accuracy  v plot  n notes  p png  s save  ? help  q quit";
 	static const char keys_short[] =
-		"hjkl/arrows HL:coarse Enter:edit m:mat a:acc v:plot p:png s:save ?:help q:quit";
+		"hjkl HL:coarse Enter:edit m:mat a:acc v:plot n:notes p:png s:save ?:help q:quit";
 	static const char keys_edit[] =
 		"Enter apply  Esc cancel  Backspace delete  Ctrl-U clear";
 	int y = LINES - 2;
@@ -822,10 +855,55 @@ static void draw_plan(const struct tui_model *m, const struct tui_view *v)
 	curs_set(0);
 }
 
+/* Lines of s, wrapped at spaces to w columns, from row y down to row
+ * bottom; returns the next free row. */
+static int put_block(int y, int bottom, int x, int w, attr_t a, const char *s)
+{
+	while (*s && y <= bottom) {
+		int cols = 0, cut = -1, i = 0;
+		for (; s[i] && cols < w; i++) {
+			cols += ((unsigned char)s[i] & 0xC0) != 0x80;
+			if (s[i] == ' ')
+				cut = i;
+		}
+		while (s[i] && ((unsigned char)s[i] & 0xC0) == 0x80)
+			i++; /* never split a character */
+		if (s[i] && cut > 0)
+			i = cut;
+		char line[NOTE_LEN];
+		snprintf(line, sizeof line, "%.*s", i, s);
+		put(y++, x, w, a, line);
+		s += i;
+		while (*s == ' ')
+			s++;
+	}
+	return y;
+}
+
+/* Every note in full: the main screen cuts them at its width. */
+static void draw_notes_screen(const struct tui_model *m, const struct tui_view *v)
+{
+	(void)v;
+	bar(0, attr(R_TITLE));
+	put(0, 1, COLS - 2, attr(R_TITLE), "anvil tui: the notes (any key returns)");
+	struct notes *nt = malloc(sizeof *nt);
+	if (!nt)
+		return;
+	notes_collect(m, nt);
+	int y = 2;
+	if (!nt->n)
+		put(y, 2, COLS - 3, attr(R_NORMAL), "no notes: every row computed is plain");
+	for (int i = 0; i < nt->n && y < LINES; ++i)
+		y = put_block(y, LINES - 1, 2, COLS - 3, nt->a[i], nt->text[i]) + 1;
+	free(nt);
+	curs_set(0);
+}
+
 static void (*const screens[])(const struct tui_model *, const struct tui_view *) = {
 	[TUI_SCREEN_MAIN] = draw_main,
 	[TUI_SCREEN_HELP] = draw_help,
 	[TUI_SCREEN_PLAN] = draw_plan,
+	[TUI_SCREEN_NOTES] = draw_notes_screen,
 };
 
 void tui_draw(const struct tui_model *m, const struct tui_view *v)

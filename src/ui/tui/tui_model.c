@@ -36,6 +36,8 @@ const char *const tui_help_lines[] = {
 	"  s                     save the scene (to its file, else " TUI_DEFAULT_SAVE ")",
 	"  Ctrl-L                repaint the screen",
 	"  P                     the plan: how each row is computed, and why",
+	"  n                     the notes in full: the verdict, each row's note",
+	"                        or refusal (the main screen cuts them with ...)",
 	"  ?, F1                 this help",
 	"  q                     quit (asks first when the scene has unsaved changes)",
 	"  Q                     quit without asking",
@@ -730,6 +732,9 @@ static enum tui_action main_key(struct tui_model *m, int key)
 	case 'P':
 		m->screen = TUI_SCREEN_PLAN;
 		return TUI_ACT_REDRAW;
+	case 'n':
+		m->screen = TUI_SCREEN_NOTES;
+		return TUI_ACT_REDRAW;
 	case 'q':
 		if (!m->modified)
 			return TUI_ACT_QUIT;
@@ -767,7 +772,7 @@ enum tui_action tui_model_key(struct tui_model *m, int key)
 {
 	if (m->confirm_quit)
 		return confirm_key(m, key);
-	if (m->screen == TUI_SCREEN_HELP || m->screen == TUI_SCREEN_PLAN)
+	if (m->screen != TUI_SCREEN_MAIN)
 		return help_key(m, key);
 	if (m->editing)
 		return edit_key(m, key);

@@ -72,7 +72,7 @@ enum tui_field {
 enum tui_quantity { TUI_Q_FORCE, TUI_Q_VELOCITY, TUI_Q_DEFLECTION, TUI_Q_RF_LAMBDA,
 		    TUI_Q_RF_THICKNESS, TUI_Q_COUNT };
 
-enum tui_screen { TUI_SCREEN_MAIN, TUI_SCREEN_HELP, TUI_SCREEN_PLAN };
+enum tui_screen { TUI_SCREEN_MAIN, TUI_SCREEN_HELP, TUI_SCREEN_PLAN, TUI_SCREEN_NOTES };
 
 enum tui_row_state {
 	TUI_ROW_OFF,     /* model not selected */
