@@ -258,6 +258,18 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 	return ANVIL_OK;
 }
 
+/* The growing step (impact.h): past ANVIL_GROW_AFTER of the level's Hertz
+ * pulses (their nsteps steps each), where the force is as smooth at the
+ * doubled step as the Hertz pulse is at the level's: grow_eta = (pi /
+ * nsteps)^2, the pulse's |P''| dt^2 / P_max. */
+static void grow_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
+		      const struct anvil_wave_job *j)
+{
+	(void)pb;
+	io->grow_after = (size_t)(ANVIL_GROW_AFTER * j->nsteps);
+	io->grow_eta = (M_PI / j->nsteps) * (M_PI / j->nsteps);
+}
+
 /* One wave run in progress: the plan's problem and job, and what it holds. */
 struct waves {
 	const struct anvil_problem *pb;
@@ -315,6 +327,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	struct waves wv = { .pb = pb, .job = j };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
 					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
+	grow_opts(&wv.io, pb, j);
 	int st = ANVIL_OK;
 	if (method == ANVIL_METHOD_STATIC)
 		wv.rs.stat = j->stat;
@@ -445,6 +458,7 @@ static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 	io->merge_gap = anvil_accuracy_target(pb->accuracy);
 	io->merge_time = fmax(2.0 * (pb->dt > 0 ? pb->dt : j->dt), io->merge_gap * j->ts);
 	io->max_contacts = ANVIL_MAX_RUN_CONTACTS;
+	grow_opts(io, pb, j);
 }
 
 /* One physical impact of job j, the window grown as in waves_impact; the

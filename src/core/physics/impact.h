@@ -117,6 +117,18 @@ struct anvil_impact_opts {
 	 * with t_s = inf (no longer window helps) and a one-line reason; 0:
 	 * none. */
 	size_t max_contacts;
+	/* The growing step (implicit and physical; impact_grow.c): past
+	 * grow_after steps (0: never) of the first contact, where P is smooth
+	 * (four times its second difference over the last 16 steps at most
+	 * grow_eta P: the doubled step sees no rougher a force than the
+	 * level's step sees a Hertz pulse when grow_eta = (pi/nsteps)^2), the
+	 * step doubles, again and again; the product integration stays exact
+	 * (the frozen past on the new grid, impact_grow.c).  The dt/2 pass
+	 * follows the dt pass's schedule with halved steps.  max_steps then
+	 * bounds the window's steps at dt (the response's table), the nodes
+	 * actually marched are fewer. */
+	size_t grow_after;
+	double grow_eta;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

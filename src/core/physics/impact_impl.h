@@ -5,6 +5,9 @@
 
 #include <stddef.h>
 
+#include <gsl/gsl_fft_halfcomplex.h>
+#include <gsl/gsl_fft_real.h>
+
 #include "fastconv.h"
 #include "impact.h"
 
@@ -20,10 +23,20 @@
  * ANVIL_ENUM to the caller, with a message that says when and what to do. */
 #define IMPACT_END_LOST (-101)
 
-/* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
+/* The most segments (levels of the step) a pass can have (impact_grow.c). */
+#define IMPACT_MAX_SEGS 40
+/* The largest FFT of the frozen past: 2^(HIST_FFT_MAX - 1). */
+#define HIST_FFT_MAX 40
+
+/* One time-stepping pass.  Arrays are per node n = 0..n-1, at times t[n].
+ * The step is dt0 2^L on segment k (L = seg_L[k], from node seg_n[k]);
+ * dt is the current segment's (the whole pass's when it never grows). */
 struct pass {
-	double dt;
+	double dt, dt0;
 	size_t n, cap;
+	size_t nseg, seg_n[IMPACT_MAX_SEGS];
+	int seg_L[IMPACT_MAX_SEGS];
+	double *t;             /* node times (s) */
 	double *P, *W, *w, *v; /* one block, owned */
 	double *wc;            /* physical contact: the layer correction's deflection */
 	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
@@ -41,6 +54,18 @@ struct pass {
 	double pend_imp, pend_a, sep_gap;
 	size_t nmerged;  /* separations merged into their contact */
 	double Pmax_run; /* the largest P so far (co_moving) */
+};
+
+/* A frozen segment of a grown step (impact_grow.c): its nodes 1 .. S-1
+ * (x, z: P and Q from its node 0, the pass's arrays) at dt0 2^L from t =
+ * K dt0, against its weights g, dg (owned, ng of them); its last node
+ * (Pb, Qb at Kb dt0) with its step left and dt0 2^Ln right. */
+struct frozen {
+	const double *x, *z;
+	size_t S, K, Kb, ng;
+	int L, Ln;
+	double *g, *dg;
+	double Pb, Qb;
 };
 
 struct ctx {
@@ -64,6 +89,29 @@ struct ctx {
 	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
 	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
 	size_t max_contacts;          /* the budget (opts); 0: none */
+	/* The growing step (impact_grow.c; impact.h, grow_after). */
+	size_t grow_after;   /* nodes before the step may grow; 0: never */
+	double grow_eta;     /* the smoothness asked of P (impact.h) */
+	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
+	double *R0, *R20;    /* ramp and ramp2 at j dt0, j < nR (weights') */
+	size_t nR;
+	/* the current segment: from node seg0 at t = T0 = K0 dt0, step dt0 2^lev,
+	 * segcap nodes at most; Ih and M1h the frozen past's int P and int t P
+	 * (0 on the first segment) */
+	double dt0;
+	size_t seg0, K0, segcap;
+	int lev;
+	double T0, Ih, M1h;
+	/* the frozen segments, oldest first (impact_grow.c) */
+	size_t nfz;
+	struct frozen fz[IMPACT_MAX_SEGS];
+	/* its deflection at the segment's nodes hlo .. hlo + hn - 1 (a chunk) */
+	double *hbuf;
+	size_t hlo, hn, hcap;
+	/* its FFT tables, by log2 of the size, made when first needed */
+	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
+	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
+	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
 };
 
 /* The ramp responses off the grid that the far past needs at every
@@ -88,5 +136,28 @@ void impact_end_tab_free(struct end_tab *t);
  * ANVIL_OK, ANVIL_ENOMEM, ANVIL_ENUM, or IMPACT_END_LOST (*toff = t_k). */
 int impact_finish_exact(const struct ctx *c, const struct pass *s, double impulse, double *toff,
 			double *ioff);
+
+/* The growing step (impact_grow.c). */
+/* The level the segment starting at node n - 1 takes (> c->lev), or 0 when
+ * the step stays. */
+int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in);
+/* Freeze the current segment and start a new one at node s->n - 1 with the
+ * step dt0 2^L: the frozen past's moments, the new weights and convolution.
+ * ANVIL_OK, ANVIL_ENOMEM, or ANVIL_EINVAL (no room left in the window). */
+int impact_grow_switch(struct ctx *c, struct pass *s, int L);
+/* The frozen past's deflection (w; w_c when physical) at the current
+ * segment's node i, in chunks as the march goes (impact_hist), or alone
+ * (impact_hist_one: NaN when out of the weights).  ANVIL_OK, ANVIL_ENOMEM. */
+int impact_hist(struct ctx *c, size_t i, double *val);
+double impact_hist_one(const struct ctx *c, size_t i);
+/* Free the frozen segments' weights. */
+void impact_grow_reset(struct ctx *c);
+/* The frozen past's deflection at the current segment's node k plus d
+ * (0 <= d <= its step), by direct sums over its hats (off the grid: the
+ * contact end); v the current segment's view. */
+int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val);
+/* The pass's arrays from the current segment's node 0 on, as a pass of
+ * uniform step (n, cap local). */
+struct pass impact_view(const struct ctx *c, const struct pass *s);
 
 #endif
