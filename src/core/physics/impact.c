@@ -511,9 +511,13 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (tl > 0) {
 			wd0 = (conv - (1.0 - rl) * zl - rl * s->wc[n - 1]) / ((1.0 + rl) * tl);
 			e0 = g0 / ((1.0 + rl) * tl);
-		} else if (i >= 2) { /* BDF2 within a segment; Euler at a segment's first node */
+		} else if (i >= 2) { /* BDF2 within a segment */
 			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
 			e0 = 1.5 * g0 / dt;
+		} else if (c->seg0) { /* a grown segment's first node: BDF2 on the
+				       * steps dt/2 then dt */
+			wd0 = (5.0 * conv - 9.0 * s->wc[n - 1] + 4.0 * s->wc[n - 2]) / (3.0 * dt);
+			e0 = 5.0 * g0 / (3.0 * dt);
 		} else {
 			wd0 = (conv - s->wc[n - 1]) / dt;
 			e0 = g0 / dt;
