@@ -13,6 +13,9 @@
  *   dt and dt/2 and Richardson-extrapolated, which also gives the error.
  * The past enters through an online fast convolution (fastconv.h),
  * O(N log^2 N): 10^6 steps take about 2 s.
+ * In a long first contact the step doubles where the force is smooth
+ * (grow_after, grow_eta below; impact_grow.c), the product integration
+ * staying exact; the dt/2 pass follows the same steps halved.
  *
  * Repeated contacts (implicit): where alpha_H would be <= 0 the force is 0
  * and the march goes on, the impactor in free flight and the layer in its

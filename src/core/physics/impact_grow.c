@@ -4,22 +4,26 @@
  * multiple of dt0, so every lag between a node and a hat's corner is one,
  * and the ramp response at j dt0 (weights' table R0) gives every weight of
  * every level exactly: the hat of widths (l, r) at t_m deflects the anvil
- * at t by R(t - t_m + l)/l - R(t - t_m)(1/l + 1/r) + R(t - t_m - r)/r.
+ * at t by (R(t - t_m + l) - R(t - t_m))/l - (R(t - t_m) - R(t - t_m - r))/r.
  * The product integration stays exact (P piecewise linear through its
- * nodes, of any spacing): no interpolation of the history.
+ * nodes, of any spacing): no interpolation of the history.  (That hat as
+ * R/l - R (1/l + 1/r) + R/r rounds by eps R/dt the same way for every hat
+ * of a width: a bias growing as R with the lag, which put a grazing end
+ * 1e-4 off, five times its estimate; tests/test_grow.c.)
  *
  * At a switch (node n_s, level L -> L + 1) the past is frozen: its nodes
  * up to n_s (n_s's hat with the old step left and the new one right) enter
  * every later deflection through impact_hist: each frozen segment's hats
  * against its own level's weights (every later node lies on its grid: the
- * levels only rise), and its last node's asymmetric hat.  That sum is
- * direct, O(frozen nodes) per later node: a frozen segment's contribution
- * to the whole rest of the window by one FFT convolution (the first
- * design) cost more, as the window's end lies far beyond the nodes the
- * march goes on to (scripts/bench, section 13).  The new segment runs the
- * online fast convolution at the new step from its node 0 (excluded: it is
- * frozen).  The impactor's displacement takes the frozen past through its
- * moments int P, int t P.
+ * levels only rise), and its last node's asymmetric hat.  It is made in
+ * chunks as the march reaches them (64 nodes, then twice the last): per
+ * frozen segment one FFT correlation over the chunk's span of lags, or the
+ * direct sums when cheaper.  One convolution out to the window's end at
+ * the switch (the first design) cost more: the window's end lies far
+ * beyond where the march stops, and every later switch repeated it.  The
+ * new segment runs the online fast convolution at the new step from its
+ * node 0 (excluded: it is frozen).  The impactor's displacement takes the
+ * frozen past through its moments int P, int t P.
  *
  * When: the first contact only, past grow_after nodes, GROW_MIN nodes into
  * a segment, in contact, and P smooth at the doubled step: its second
