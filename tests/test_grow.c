@@ -98,14 +98,14 @@ static struct ref ode(const struct dash *d, double tol)
 	return r;
 }
 
-static int run(const struct dash *d, double dt, size_t grow_after, int physical,
-	       const struct dash *d2, struct anvil_result *r)
+static int run_hist(const struct dash *d, double dt, size_t grow_after, int physical,
+		    const struct dash *d2, size_t nhist, struct anvil_result *r)
 {
 	const struct anvil_params *p = d->p;
 	struct anvil_impact_opts o = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = dt,
 				       .max_steps = 10000000, .grow_after = grow_after,
 				       .grow_eta = (M_PI / 400) * (M_PI / 400),
-				       .physical = physical, .beta = 0 };
+				       .physical = physical, .beta = 0, .nhist = nhist };
 	if (d2) {
 		o.ramp2 = dash_ramp;
 		o.ramp2_ctx = (void *)d2;
@@ -120,6 +120,12 @@ static int run(const struct dash *d, double dt, size_t grow_after, int physical,
 	return st;
 }
 
+static int run(const struct dash *d, double dt, size_t grow_after, int physical,
+	       const struct dash *d2, struct anvil_result *r)
+{
+	return run_hist(d, dt, grow_after, physical, d2, 0, r);
+}
+
 /* |a - b| within tol (the estimates), for t_s, P_max, R_f. */
 static int within(const struct anvil_result *a, double ts, double Pmax, double Rf, double kt,
 		  double kp, double kr)
@@ -131,7 +137,7 @@ static int within(const struct anvil_result *a, double ts, double Pmax, double R
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(8);
+	plan(9);
 	struct anvil_params p;
 	paper_params(&p, INFINITY, 10);
 	/* the dashpot drains the impactor's momentum over about 10 T */
@@ -184,6 +190,27 @@ int main(void)
 	diag("patch: fixed t_s = %.8g T (%.2g), grown %.8g T (%.2g); R_f %.8g / %.8g", pf.ts.val / p.T,
 	     pf.ts.err / p.T, pg.ts.val / p.T, pg.ts.err / p.T, pf.Rf.val, pg.Rf.val);
 	ok(pg.ts.err <= 1e-3 * pg.ts.val, "... t_s to %.1e", pg.ts.err / pg.ts.val);
+	/* the history of a grown run: on the nodes of every level */
+	struct anvil_result gh;
+	st = run_hist(&d, dt, ga, 0, NULL, 4001, &gh);
+	const struct anvil_history *h = &gh.hist;
+	int rising = 1;
+	double pmin = 0, pmax = 0, imp = 0;
+	for (size_t i = 0; !st && i < h->n; i++) {
+		rising &= i == 0 || h->t[i] > h->t[i - 1];
+		pmin = fmin(pmin, h->P[i]);
+		pmax = fmax(pmax, h->P[i]);
+		if (i)
+			imp += 0.5 * (h->P[i] + h->P[i - 1]) * (h->t[i] - h->t[i - 1]);
+	}
+	/* the trapezoid on 4000 intervals of a force smooth on the scale T:
+	 * (t_s/4000/T)^2/12, about 1e-4 of the impulse m1 (V0 + V_s) */
+	double want = p.m1 * (p.V0 + gh.Vs.val);
+	ok(!st && h->n == 4001 && rising && pmin >= 0 && pmax <= gh.Pmax.val + gh.Pmax.err &&
+	   pmax >= 0.99 * gh.Pmax.val && h->P[h->n - 1] == 0 && fabs(imp / want - 1) < 1e-4,
+	   "grown run's history: times rising, 0 <= P <= P_max, P = 0 at t_s, its impulse m1 (V0 + V_s) to %.1e",
+	   fabs(imp / want - 1));
+	anvil_result_free(&gh);
 	anvil_result_free(&f);
 	anvil_result_free(&g);
 	anvil_result_free(&g2);
