@@ -265,8 +265,10 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 static void grow_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
 		      const struct anvil_wave_job *j)
 {
-	(void)pb;
-	io->grow_after = (size_t)(ANVIL_GROW_AFTER * j->nsteps);
+	/* in time: ANVIL_GROW_AFTER times the level's pulse (nsteps of the
+	 * automatic step), in steps of the one taken (solver.dt may set it) */
+	io->grow_after = pb->dt > 0 ? (size_t)ceil(ANVIL_GROW_AFTER * j->nsteps * j->dt / pb->dt)
+				    : (size_t)(ANVIL_GROW_AFTER * j->nsteps);
 	io->grow_eta = (M_PI / j->nsteps) * (M_PI / j->nsteps);
 }
 
