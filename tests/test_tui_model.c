@@ -586,7 +586,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(133);
+	plan(135);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();

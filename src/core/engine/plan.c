@@ -310,13 +310,31 @@ static double bending(const struct anvil_params *p)
 #define IMPACT_SQ_HS 1.1e-9
 #define IMPACT_LIN_LAYER 2.7e-6
 #define IMPACT_FFT_LAYER 3.2e-9
-/* One coupled run over a window of window_s seconds at step dt. */
-static double impact_cost(double window_s, double dt, int layer)
+/* The growing step (impact.h, impact_grow.c): past ANVIL_GROW_AFTER Hertz
+ * pulses of nsteps steps the step doubles where the force is smooth, and a
+ * long contact then marches about IMPACT_GROWN more pulses' worth of
+ * nodes, whatever its length (the bench's long contacts, normal: 4-19,
+ * their predicted/marched nodes 0.75-1.6); each such node pays the frozen
+ * past (IMPACT_HIST, s), and every step of the window at dt still costs
+ * the ramp's table and the convolution's tables (IMPACT_TAB, s; measured
+ * 0.7-1.2 us per window step in PHYS_RUNS' units).  On the 7 long contacts
+ * of scripts/bench section 13 (cold, one thread) the physical row's whole
+ * prediction is then 0.75-2.4 times its time (the 2.4: h = 0.05 r0, whose
+ * corrections were priced 2.7 times dear before). */
+#define IMPACT_GROWN 12.0
+#define IMPACT_HIST 8.0e-6
+#define IMPACT_TAB 1.0e-6
+/* One coupled run over a window of window_s seconds at step dt, the level
+ * asking nsteps steps of a Hertz pulse. */
+static double impact_cost(double window_s, double dt, int layer, double nsteps)
 {
-	double n = window_s / dt;
-	double l2 = log2(fmax(n, 2.0));
-	return layer ? n * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2)
-		     : IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
+	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
+	if (!layer)
+		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
+	double m = n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n; /* the nodes marched */
+	double l2 = log2(fmax(m, 2.0));
+	return m * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) +
+	       (m > g ? (m - g) * IMPACT_HIST + n * IMPACT_TAB : 0.0);
 }
 
 struct est {
@@ -354,7 +372,7 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 	*where = wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE ? ANVIL_CACHE_NONE
 		 : wm == ANVIL_CACHE_DISK || wt == ANVIL_CACHE_DISK ? ANVIL_CACHE_DISK
 								     : ANVIL_CACHE_MEMORY;
-	return COST_HALFSPACE + evals * COST_EVAL + 2.0 * impact_cost(e->window_lay, e->lay.dt, 1);
+	return COST_HALFSPACE + evals * COST_EVAL + 2.0 * impact_cost(e->window_lay, e->lay.dt, 1, e->lay.nsteps);
 }
 
 /* ---- figures ---- */
@@ -511,13 +529,13 @@ static int late_reflection(const struct est *e)
 
 static double static_cost(const struct est *e)
 {
-	return impact_cost(1.4 * e->t_static + 2.0 * e->p.r0 / e->p.c2, e->hs.dt, 0);
+	return impact_cost(1.4 * e->t_static + 2.0 * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
 }
 
 static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j)
 {
 	double window = anvil_wave_window(j, 0) * e->p.r0 / e->p.c2;
-	return COST_HALFSPACE + impact_cost(window, j->dt, 0);
+	return COST_HALFSPACE + impact_cost(window, j->dt, 0, 0.0);
 }
 
 /* The physical contact's layer row: its four corrections
@@ -530,7 +548,7 @@ static double physical_cost(const struct est *e, const struct anvil_cache *cache
 	struct anvil_wave_job j = e->lay;
 	j.patch = patch;
 	double corr = anvil_plan_phys_seconds(&j, e->p.nu, e->pb->accuracy, cache, where);
-	return COST_HALFSPACE + corr + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1);
+	return COST_HALFSPACE + corr + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1, j.nsteps);
 }
 
 /* The layer row: what the full model costs, and whether it needs the
@@ -689,7 +707,7 @@ static void physical_row(const struct est *e, const struct anvil_cache *cache, e
 	int small = layer && d_hs > 0 && e->pb->effects.waves == ANVIL_WAVES_AUTO &&
 		    ANVIL_PLAN_SAFETY * d_hs <= e->target;
 	layer = layer && !small;
-	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0);
+	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
 	enum anvil_cache_where where = ANVIL_CACHE_NONE;
 	/* the Hertz radius as figures() has it, on the patch grid */
 	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);

@@ -60,6 +60,9 @@
  * convolution is O(N log^2 N) (physics/fastconv.h): 1.7 s at 10^6 steps
  * (scripts/bench), so the limit is on memory and time, not the sum. */
 #define ANVIL_MAX_STEPS 1000000
+/* The impact's step may grow (impact.h) past this many Hertz pulses of the
+ * level's nsteps steps each: the paper's contacts never get there. */
+#define ANVIL_GROW_AFTER 8
 /* ... or making more contacts than this (impact.h, max_contacts): after
  * the sub-resolution separations are merged, a thin plate catches the
  * impactor again a few times (Zener); beyond this the contact chatters

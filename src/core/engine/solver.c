@@ -361,6 +361,20 @@ static int check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 	return ANVIL_OK;
 }
 
+/* The growing step (impact.h): past ANVIL_GROW_AFTER of the level's Hertz
+ * pulses (their nsteps steps each), where the force is as smooth at the
+ * doubled step as the Hertz pulse is at the level's: grow_eta = (pi /
+ * nsteps)^2, the pulse's |P''| dt^2 / P_max. */
+static void grow_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
+		      const struct anvil_wave_job *j)
+{
+	/* in time: ANVIL_GROW_AFTER times the level's pulse (nsteps of the
+	 * automatic step), in steps of the one taken (solver.dt may set it) */
+	io->grow_after = pb->dt > 0 ? (size_t)ceil(ANVIL_GROW_AFTER * j->nsteps * j->dt / pb->dt)
+				    : (size_t)(ANVIL_GROW_AFTER * j->nsteps);
+	io->grow_eta = (M_PI / j->nsteps) * (M_PI / j->nsteps);
+}
+
 /* One wave run in progress: the plan's problem and job, and what it holds. */
 struct waves {
 	const struct anvil_problem *pb;
@@ -579,6 +593,7 @@ static void merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 	 * that R_f's half of it and the passes' difference meet the target
 	 * (check_target: R_f's error against 0.1) */
 	io->rest_tol = 0.1 * io->merge_gap;
+	grow_opts(io, pb, j);
 }
 
 /* One physical impact of job j in progress: its load, the responses it

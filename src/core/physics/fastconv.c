@@ -182,14 +182,9 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 		anvil_fastconv_free(f);
 		return NULL;
 	}
-	for (int k = 0; k < f->nlev; k++) {
-		if (((size_t)1 << k) <= f->direct_max)
-			continue;
-		if (level_init(f, k)) {
-			anvil_fastconv_free(f);
-			return NULL;
-		}
-	}
+	/* the levels' spectra when first needed (push): a convolution that
+	 * stops early (a grown step's segment, a short contact) makes none of
+	 * the large ones; the same bits whenever made */
 	return f;
 }
 
@@ -303,6 +298,8 @@ int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y)
 	size_t B = (size_t)1 << k;
 	if (f->nz <= L - B)
 		return 0; /* sources all zero (free flight): the square adds nothing */
+	if (k < f->nlev && B > f->direct_max && !f->lev[k].spec[0] && level_init(f, k))
+		return -2;
 	if (k < f->nlev && f->lev[k].spec[0])
 		square_fft(f, L, B, k);
 	else

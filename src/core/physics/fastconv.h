@@ -62,11 +62,13 @@ void anvil_fastconv_reset(struct anvil_fastconv *f);
  * is in it).  0 when n >= cap. */
 double anvil_fastconv_next(const struct anvil_fastconv *f);
 
-/* Push x_n; returns 0, or -1 when cap values have been pushed already. */
+/* Push x_n; returns 0, -1 when cap values have been pushed already, or -2
+ * when out of memory (a level's spectrum is made when first needed). */
 int anvil_fastconv_push(struct anvil_fastconv *f, double x);
 
 /* Push x_n and y_n to a pair (a single convolution takes y_n = 0 only);
- * returns 0, or -1 when full or y_n != 0 on a single one. */
+ * returns 0, -1 when full or y_n != 0 on a single one, -2 when out of
+ * memory. */
 int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
 
 /* The number of values pushed. */

@@ -24,9 +24,12 @@ static void pass_free(struct pass *s)
 static int pass_alloc(struct pass *s, size_t cap, double dt)
 {
 	memset(s, 0, sizeof *s);
-	s->P = calloc(6 * cap, sizeof *s->P);
+	s->P = calloc(7 * cap, sizeof *s->P);
 	if (!s->P)
 		return ANVIL_ENOMEM;
+	s->t = s->P + 6 * cap;
+	s->nseg = 1; /* segment 0: node 0, level 0 */
+	s->dt0 = dt;
 	s->W = s->P + cap;
 	s->w = s->P + 2 * cap;
 	s->v = s->P + 3 * cap;
@@ -72,16 +75,18 @@ static int weights(struct ctx *c, double dt, size_t cap)
 	for (size_t j = 0; j < cap && !st; j++)
 		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
 	c->ng = cap;
+	c->R0 = R, c->nR = cap + 1; /* kept: every level's weights (impact_grow.c) */
 	if (c->ramp2 && !st) { /* dg = g2 - g */
+		double *R2 = malloc((cap + 2) * sizeof *R2);
 		c->dg = malloc(cap * sizeof *c->dg);
-		if (!c->dg)
+		c->R20 = R2;
+		if (!c->dg || !R2)
 			st = ANVIL_ENOMEM;
 		for (size_t j = 0; j < cap + 1 && !st; j++)
-			st = impact_ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R[j]);
+			st = impact_ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R2[j]);
 		for (size_t j = 0; j < cap && !st; j++)
-			c->dg[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt - c->g[j];
+			c->dg[j] = (R2[j + 1] - 2.0 * R2[j] + (j ? R2[j - 1] : 0.0)) / dt - c->g[j];
 	}
-	free(R);
 	return st;
 }
 
@@ -154,7 +159,7 @@ static int cubic_vertex(const double *P, size_t j0, size_t k, double x, double *
  * nearest the peak (the next term of the same interpolation), or a whole
  * step where the force is not smooth enough for that (a kink at a wave
  * arrival, the peak at an end of the record). */
-static void peak(struct pass *s)
+static void peak_uniform(struct pass *s)
 {
 	size_t k = 0;
 	for (size_t i = 1; i < s->n; i++)
@@ -182,6 +187,29 @@ static void peak(struct pass *s)
 	}
 }
 
+/* The peak on the segment that holds the largest P (its last node the
+ * next segment's first), in the pass's time. */
+static void peak(struct pass *s)
+{
+	if (s->nseg == 1) {
+		peak_uniform(s);
+		return;
+	}
+	size_t k = 0, j = 0;
+	for (size_t i = 1; i < s->n; i++)
+		if (s->P[i] > s->P[k])
+			k = i;
+	while (j + 1 < s->nseg && s->seg_n[j + 1] <= k)
+		j++;
+	size_t o = s->seg_n[j], e = j + 1 < s->nseg ? s->seg_n[j + 1] + 1 : s->n;
+	struct pass v = *s;
+	v.P += o, v.n = (e < s->n ? e : s->n) - o;
+	v.dt = ldexp(s->dt0, s->seg_L[j]);
+	peak_uniform(&v);
+	s->tmax = s->t[o] + v.tmax;
+	s->Pmax = v.Pmax, s->tmax_ie = v.tmax_ie, s->curv = v.curv;
+}
+
 /* The end of contact between steps n-1 and n, where alpha would be a_n <= 0;
  * V_s from the impulse, the last partial interval with P ~ (t_s - t)^(3/2)
  * since alpha_H falls linearly to zero. */
@@ -206,10 +234,10 @@ static void finish(struct pass *s, const struct anvil_params *p, double a_n, dou
 static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n, double impulse,
 		       double *ioff)
 {
-	struct pass v = *s; /* the pass up to node k (the arrays shared) */
+	struct pass v = impact_view(c, s); /* the segment up to node k (arrays shared) */
 	double toff = NAN;
 	int st = ANVIL_OK;
-	v.n = k + 1;
+	v.n = k + 1 - c->seg0;
 	if (v.n >= 3) {
 		st = impact_finish_exact(c, &v, impulse, &toff, ioff);
 	} else {
@@ -217,6 +245,7 @@ static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n
 		toff = v.ts;
 		*ioff = c->p->m1 * (c->p->V0 + v.Vs);
 	}
+	toff = c->T0 + toff; /* the segment's time to the pass's */
 	if (!st && s->ncont <= ANVIL_MAX_CONTACTS)
 		s->off[s->ncont - 1] = toff;
 	s->ts = toff; /* IMPACT_END_LOST: where it was lost */
@@ -247,28 +276,39 @@ static int sep_resolve(const struct ctx *c, struct pass *s, double *ioff)
 
 /* Out of contact at node n (A = a_n <= 0): the pending separation decided
  * when it is resolved by the scheme. */
+/* merge_time (impact.h: at least two of the dt pass's steps); on a grown
+ * step (impact_grow.c) at least two of the dt pass's steps at the level,
+ * the same time in both passes. */
+static double merge_time(const struct ctx *c)
+{
+	if (!c->lev)
+		return c->merge_time;
+	return fmax(c->merge_time, ldexp((c->sched ? 4.0 : 2.0) * c->dt0, c->lev));
+}
+
 static int sep_step(const struct ctx *c, struct pass *s, size_t n, double a_n, double amax,
 		    double *ioff)
 {
 	if (!s->pend_k)
 		return ANVIL_OK;
-	/* the gap W - w is the difference of two displacements each known to
+	/* The gap W - w is the difference of two displacements each known to
 	 * merge_gap of its size: its error is merge_gap times the larger of
 	 * alpha_max and the impactor's displacement at the separation */
 	double res = c->merge_gap * fmax(amax, fabs(s->W[s->pend_k]));
 	s->sep_gap = fmax(s->sep_gap, -a_n);
 	if (s->sep_gap > res ||
-	    (double)(n - s->pend_k) * s->dt > c->merge_time)
+	    (double)(n - s->pend_k) * s->dt > merge_time(c))
 		return sep_resolve(c, s, ioff);
 	return ANVIL_OK;
 }
 
 /* A new contact between nodes n-1 and n: A rose through 0 (linear). */
-static void contact_start(struct pass *s, size_t n, double a_prev, double a_n)
+static void contact_start(const struct ctx *c, struct pass *s, size_t n, double a_prev,
+			  double a_n)
 {
 	s->ncont++;
 	if (s->ncont <= ANVIL_MAX_CONTACTS)
-		s->on[s->ncont - 1] = s->dt * ((double)n - a_n / (a_n - a_prev));
+		s->on[s->ncont - 1] = c->T0 + s->dt * ((double)(n - c->seg0) - a_n / (a_n - a_prev));
 }
 
 /* The contact's state at node n from A = A_n (alpha_H if P_n were 0):
@@ -286,7 +326,7 @@ static int contact_state(const struct ctx *c, struct pass *s, size_t n, double A
 		s->pend_k = 0;
 		s->nmerged++;
 	} else if (!*in) {
-		contact_start(s, n, a_prev, A);
+		contact_start(c, s, n, a_prev, A);
 	}
 	*in = A > 0;
 	if (!st && c->max_contacts && s->ncont > c->max_contacts)
@@ -315,7 +355,7 @@ static int parted(const struct ctx *c, const struct pass *s, size_t n, double im
  * convolution).  Where A_n (alpha_H if P_n were 0) <= 0 there is no
  * contact: P_n = 0, and the march goes on (free flight, the layer's free
  * response) through any new contact until the two have parted for good. */
-static int pass_implicit(const struct ctx *c, struct pass *s)
+static int pass_implicit(struct ctx *c, struct pass *s)
 {
 	const struct anvil_params *p = c->p;
 	double dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1);
@@ -329,9 +369,21 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 	anvil_fastconv_reset(c->fc);
 	anvil_fastconv_push(c->fc, 0.0);
 	for (size_t n = 1; n < s->cap; n++) {
-		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc);
-		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0;
-		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		int L = impact_grow_due(c, s, n, in), st;
+		if (L && (st = impact_grow_switch(c, s, L)))
+			return st;
+		if (L)
+			dt = s->dt, B = c->g[0] + dt * dt / (6.0 * p->m1), S0 = S1 = 0;
+		size_t i = n - c->seg0; /* the segment's node; n on the first */
+		if (i >= c->segcap)
+			break;
+		double tn = (double)i * dt, conv = anvil_fastconv_next(c->fc);
+		double hw = 0.0, mh = (c->T0 + tn) * c->Ih - c->M1h;
+		if (c->nfz && (st = impact_hist(c, i, &hw)))
+			return st;
+		double A = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - conv - hw - mh / p->m1;
+		double P = 0;
+		st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
 		/* at rest on the plate before the chatter, or before a contact's
 		 * end was lost (impact_rest.c) */
 		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
@@ -343,14 +395,17 @@ static int pass_implicit(const struct ctx *c, struct pass *s)
 		a_prev = A - B * P;
 		amax = fmax(amax, a_prev);
 		s->P[n] = P;
-		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
-		s->w[n] = conv + P * c->g[0];
+		s->W[n] = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1) -
+			  mh / p->m1;
+		s->w[n] = conv + P * c->g[0] + hw;
+		s->t[n] = (double)(c->K0 + (i << c->lev)) * s->dt0;
 		impulse += 0.5 * dt * (s->P[n - 1] + P);
 		s->v[n] = p->V0 - impulse / p->m1;
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		anvil_fastconv_push(c->fc, P);
+		if (anvil_fastconv_push(c->fc, P) == -2)
+			return ANVIL_ENOMEM;
 		if (impact_rest_check(c, s, n, in))
 			break;
 		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
@@ -423,7 +478,7 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * response), until the two have parted for good.  The past's sums come
  * from the online fast convolution: P against g (fc) and, with the true
  * radius, Q against dg = g2 - g (fc a pair). */
-static int pass_physical(const struct ctx *c, struct pass *s, double beta)
+static int pass_physical(struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
 	double dt = s->dt, b = 1.5 * beta / p->k0;
@@ -438,7 +493,19 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 	anvil_fastconv_reset(c->fc);
 	anvil_fastconv_push(c->fc, 0.0);
 	for (size_t n = 1; n < s->cap; n++) {
-		double tn = (double)n * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
+		int L = impact_grow_due(c, s, n, in), st;
+		if (L && (st = impact_grow_switch(c, s, L)))
+			return st;
+		if (L)
+			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0;
+		size_t i = n - c->seg0; /* the segment's node; n on the first */
+		if (i >= c->segcap)
+			break;
+		double tn = (double)i * dt, conv = anvil_fastconv_next(c->fc), g0 = c->g[0];
+		double hw = 0.0, mh = (c->T0 + tn) * c->Ih - c->M1h;
+		if (c->nfz && (st = impact_hist(c, i, &hw)))
+			return st;
+		conv += hw; /* the frozen past's w_c */
 		if (c->dg) {
 			/* the true radius, a^2/a_ref^2 = alpha/alpha_ref, of each past load
 			 * (in conv: fc's second kernel, Q against dg); the current one's
@@ -449,8 +516,9 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 			g0 += (2.0 * q1 - q2) * c->dg[0];
 		}
 		double B = g0 + dt * dt / (6.0 * p->m1);
-		double A = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - conv, P = 0, Q = 0;
-		int st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
+		double A = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - conv - mh / p->m1;
+		double P = 0, Q = 0;
+		st = contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
 		/* at rest on the plate before the chatter, or before a contact's
 		 * end was lost (impact_rest.c) */
 		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
@@ -463,11 +531,15 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		if (tl > 0) {
 			wd0 = (conv - (1.0 - rl) * zl - rl * s->wc[n - 1]) / ((1.0 + rl) * tl);
 			e0 = g0 / ((1.0 + rl) * tl);
-		} else if (n >= 2) {
+		} else if (i >= 2) { /* BDF2 within a segment */
 			wd0 = (3.0 * conv - 4.0 * s->wc[n - 1] + s->wc[n - 2]) / (2.0 * dt);
 			e0 = 1.5 * g0 / dt;
+		} else if (c->seg0) { /* a grown segment's first node: BDF2 on the
+				       * steps dt/2 then dt */
+			wd0 = (5.0 * conv - 9.0 * s->wc[n - 1] + 4.0 * s->wc[n - 2]) / (3.0 * dt);
+			e0 = 5.0 * g0 / (3.0 * dt);
 		} else {
-			wd0 = (conv - s->wc[0]) / dt;
+			wd0 = (conv - s->wc[n - 1]) / dt;
 			e0 = g0 / dt;
 		}
 		if (in) {
@@ -487,12 +559,15 @@ static int pass_physical(const struct ctx *c, struct pass *s, double beta)
 		s->v[n] = p->V0 - impulse / p->m1;
 		if (in)
 			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
-		s->W[n] = p->V0 * tn - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1);
+		s->W[n] = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1) -
+			  mh / p->m1;
 		s->w[n] = s->wc[n] - beta * Q;
+		s->t[n] = (double)(c->K0 + (i << c->lev)) * s->dt0;
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		anvil_fastconv_push_pair(c->fc, P, s->Q[n]);
+		if (anvil_fastconv_push_pair(c->fc, P, s->Q[n]) == -2)
+			return ANVIL_ENOMEM;
 		if (impact_rest_check(c, s, n, in))
 			break;
 		if (!in && !s->pend_k && parted(c, s, n, impulse, amax)) {
@@ -566,7 +641,12 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 	int st = pass_alloc(s, cap, dt);
 	free(c->g);
 	free(c->dg);
-	c->g = c->dg = NULL;
+	free(c->R0);
+	free(c->R20);
+	impact_grow_reset(c);
+	c->g = c->dg = c->R0 = c->R20 = NULL;
+	c->seg0 = c->K0 = 0, c->lev = 0, c->T0 = c->Ih = c->M1h = 0, c->segcap = cap;
+	c->dt0 = dt;
 	if (!st)
 		st = weights(c, dt, cap);
 	anvil_fastconv_free(c->fc);
@@ -587,13 +667,22 @@ static int resample(const struct pass *s, const struct anvil_params *p, size_t n
 		    struct anvil_history *h)
 {
 	int st = anvil_history_alloc(h, nhist);
+	size_t kprev = 0;
 	for (size_t i = 0; !st && i < nhist; i++) {
-		double t = s->ts * (double)i / (double)(nhist - 1);
-		double x = t / s->dt;
-		size_t k = (size_t)floor(x);
-		if (k + 1 >= s->n)
-			k = s->n - 2;
-		double f = x - (double)k;
+		double t = s->ts * (double)i / (double)(nhist - 1), f;
+		size_t k;
+		if (s->nseg == 1) {
+			double x = t / s->dt;
+			k = (size_t)floor(x);
+			if (k + 1 >= s->n)
+				k = s->n - 2;
+			f = x - (double)k;
+		} else { /* a grown step: the node before t (t rises with i) */
+			for (k = i ? kprev : 0; k + 2 < s->n && s->t[k + 1] <= t; k++)
+				;
+			kprev = k;
+			f = (t - s->t[k]) / (s->t[k + 1] - s->t[k]);
+		}
 		h->t[i] = t;
 		h->P[i] = fmax(0.0, (1 - f) * s->P[k] + f * s->P[k + 1]);
 		h->W[i] = (1 - f) * s->W[k] + f * s->W[k + 1];
@@ -642,7 +731,7 @@ static void fill_contacts(struct anvil_result *r, const struct anvil_params *p,
 	memcpy(r->contact_off, b->off, nc * sizeof *b->off);
 	if (nc && b->ncont <= ANVIL_MAX_CONTACTS)
 		r->contact_off[nc - 1] = r->ts.val;
-	r->t_free = (double)(b->n - 1) * b->dt;
+	r->t_free = b->nseg == 1 ? (double)(b->n - 1) * b->dt : b->t[b->n - 1];
 	if (a->ncont == b->ncont)
 		return;
 	r->ts.val = b->ts, r->ts.err = fmax(r->ts.err, fabs(b->ts - a->ts));
@@ -698,7 +787,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .merge_gap = o->merge_gap > 0 ? o->merge_gap : 0.0,
 			 .merge_time = o->merge_time > 0 ? o->merge_time : 0.0,
 			 .max_contacts = o->max_contacts,
-			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0 };
+			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0,
+			 .grow_after = o->scheme == ANVIL_SCHEME_PAPER ? 0 : o->grow_after,
+			 .grow_eta = o->grow_eta };
 	c.rest_stop = c.rest_tol > 0 && o->rest_at > 0 ? o->rest_at : 0.0;
 	c.rest_long = impact_rest_long(p);
 	c.rest_last = o->rest_last;
@@ -717,6 +808,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	struct pass *last = &a; /* the pass that ran last, for the messages */
 	c.rest_stop = a.rest ? a.ts : c.rest_stop; /* the finer pass stops there too */
+	c.sched = &a; /* the dt/2 pass: the dt pass's steps, halved */
 	if (!st)
 		st = run_pass(&c, o->scheme, 0.5 * dt, o->direct_max, last = &b);
 	if (!st && o->single) { /* the dt pass alone; its error vs dt/2 */
@@ -754,6 +846,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	free(c.g);
 	anvil_fastconv_free(c.fc);
 	free(c.dg);
+	free(c.R0);
+	free(c.R20);
+	impact_grow_reset(&c);
 	impact_end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);
 	pass_free(&a);

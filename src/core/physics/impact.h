@@ -13,6 +13,9 @@
  *   dt and dt/2 and Richardson-extrapolated, which also gives the error.
  * The past enters through an online fast convolution (fastconv.h),
  * O(N log^2 N): 10^6 steps take about 2 s.
+ * In a long first contact the step doubles where the force is smooth
+ * (grow_after, grow_eta below; impact_grow.c), the product integration
+ * staying exact; the dt/2 pass follows the same steps halved.
  *
  * Repeated contacts (implicit): where alpha_H would be <= 0 the force is 0
  * and the march goes on, the impactor in free flight and the layer in its
@@ -137,6 +140,18 @@ struct anvil_impact_opts {
 	 * (the error-estimate runs of a row at rest are compared with it at
 	 * its own time, not at wherever their bound happens to fall). */
 	double rest_at;
+	/* The growing step (implicit and physical; impact_grow.c): past
+	 * grow_after steps (0: never) of the first contact, where P is smooth
+	 * (four times its second difference over the last 16 steps at most
+	 * grow_eta P: the doubled step sees no rougher a force than the
+	 * level's step sees a Hertz pulse when grow_eta = (pi/nsteps)^2), the
+	 * step doubles, again and again; the product integration stays exact
+	 * (the frozen past on the new grid, impact_grow.c).  The dt/2 pass
+	 * follows the dt pass's schedule with halved steps.  max_steps then
+	 * bounds the window's steps at dt (the response's table), the nodes
+	 * actually marched are fewer. */
+	size_t grow_after;
+	double grow_eta;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

@@ -154,7 +154,9 @@ static double alpha_end(double d, void *vp)
 	}
 	/* the asymmetric last hat: int (tau - t') hat dt' = (tau - t_{k-1}) dt/2 - dt^2/3 + d^2/3 */
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
-	return p->V0 * tau - mom / p->m1 - w;
+	/* a grown step: the segment's times from T0, the frozen past's moment */
+	mom += (c->T0 + tau) * c->Ih - c->M1h;
+	return p->V0 * (c->T0 + tau) - mom / p->m1 - w;
 }
 
 static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pass *s, size_t k)
@@ -169,6 +171,21 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
 	int st = ANVIL_OK;
 	for (int i = 0; i < 4 && e->m0 > 1 && !st; i++)
 		st = far_exact(e, i, &e->far[i]);
+	/* a grown step: the frozen past (impact_grow.c), in the same cubic in
+	 * d, on the grid from hist, off it by its direct sums */
+	for (int i = 0; i < 4 && c->nfz && !st; i++) {
+		double h;
+		if (i == 0 || (i == 3 && k + 1 < c->segcap))
+			h = impact_hist_one(c, k + (i == 3));
+		else
+			st = impact_hist_at(c, s, k, s->dt * i / 3.0, &h) ? ANVIL_ENUM
+												 : ANVIL_OK;
+		if (isnan(h))
+			st = ANVIL_ENUM;
+		e->far[i] += h;
+	}
+	if (st)
+		return st;
 	e->R = st ? NULL : malloc((k - e->m0 + 3) * sizeof *e->R);
 	return e->R ? ANVIL_OK : ANVIL_ENOMEM;
 }

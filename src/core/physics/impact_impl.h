@@ -5,6 +5,9 @@
 
 #include <stddef.h>
 
+#include <gsl/gsl_fft_halfcomplex.h>
+#include <gsl/gsl_fft_real.h>
+
 #include "fastconv.h"
 #include "impact.h"
 
@@ -20,10 +23,20 @@
  * ANVIL_ENUM to the caller, with a message that says when and what to do. */
 #define IMPACT_END_LOST (-101)
 
-/* One time-stepping pass at a fixed dt.  Arrays are per step n = 0..n-1. */
+/* The most segments (levels of the step) a pass can have (impact_grow.c). */
+#define IMPACT_MAX_SEGS 40
+/* The largest FFT of the frozen past: 2^(HIST_FFT_MAX - 1). */
+#define HIST_FFT_MAX 40
+
+/* One time-stepping pass.  Arrays are per node n = 0..n-1, at times t[n].
+ * The step is dt0 2^L on segment k (L = seg_L[k], from node seg_n[k]);
+ * dt is the current segment's (the whole pass's when it never grows). */
 struct pass {
-	double dt;
+	double dt, dt0;
 	size_t n, cap;
+	size_t nseg, seg_n[IMPACT_MAX_SEGS];
+	int seg_L[IMPACT_MAX_SEGS];
+	double *t;             /* node times (s) */
 	double *P, *W, *w, *v; /* one block, owned */
 	double *wc;            /* physical contact: the layer correction's deflection */
 	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
@@ -43,11 +56,22 @@ struct pass {
 	double Pmax_run; /* the largest P so far (co_moving) */
 	/* the rest state (impact_rest.c): rest_k the first node at rest (0:
 	 * none), with the contacts then and the rebound's bound (relative to
-	 * V0); rest 1 when the pass ended there (t_s = rest_k dt); Sg the
-	 * running sum of the weights g_0..g_n (the layer's step response) */
+	 * V0); rest 1 when the pass ended there (t_s = t[rest_k]) */
 	int rest;
 	size_t rest_k, rest_ncont;
-	double rest_bound, Sg;
+	double rest_bound;
+};
+
+/* A frozen segment of a grown step (impact_grow.c): its nodes 1 .. S-1
+ * (x, z: P and Q from its node 0, the pass's arrays) at dt0 2^L from t =
+ * K dt0, against its weights g, dg (owned, ng of them); its last node
+ * (Pb, Qb at Kb dt0) with its step left and dt0 2^Ln right. */
+struct frozen {
+	const double *x, *z;
+	size_t S, K, Kb, ng;
+	int L, Ln;
+	double *g, *dg;
+	double Pb, Qb;
 };
 
 struct ctx {
@@ -75,6 +99,29 @@ struct ctx {
 	double rest_stop; /* s: the coarse pass came to rest here, the finer stops too; 0: none */
 	double rest_long; /* s: a contact longer co-moves (impact_rest_long) */
 	int rest_last;    /* the caller's last window (opts): fall back to rest at its end */
+	/* The growing step (impact_grow.c; impact.h, grow_after). */
+	size_t grow_after;   /* nodes before the step may grow; 0: never */
+	double grow_eta;     /* the smoothness asked of P (impact.h) */
+	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
+	double *R0, *R20;    /* ramp and ramp2 at j dt0, j < nR (weights') */
+	size_t nR;
+	/* the current segment: from node seg0 at t = T0 = K0 dt0, step dt0 2^lev,
+	 * segcap nodes at most; Ih and M1h the frozen past's int P and int t P
+	 * (0 on the first segment) */
+	double dt0;
+	size_t seg0, K0, segcap;
+	int lev;
+	double T0, Ih, M1h;
+	/* the frozen segments, oldest first (impact_grow.c) */
+	size_t nfz;
+	struct frozen fz[IMPACT_MAX_SEGS];
+	/* its deflection at the segment's nodes hlo .. hlo + hn - 1 (a chunk) */
+	double *hbuf;
+	size_t hlo, hn, hcap;
+	/* its FFT tables, by log2 of the size, made when first needed */
+	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
+	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
+	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
 };
 
 /* The ramp responses off the grid that the far past needs at every
@@ -107,7 +154,7 @@ double impact_rest_long(const struct anvil_params *p);
  * pass (in: in contact; the pass's arrays filled to n): keeps the first
  * node at rest; 1 when the pass is to stop there (a forced stop,
  * rest_stop: s ended as by impact_rest_fallback), 0 to go on.  Call once
- * per node, in order (it keeps s->Sg). */
+ * per node, after the node's time and values are set. */
 int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in);
 /* The pass ends at its first node at rest, if it had one (1; s->rest,
  * n, ncont, ts, Vs set: the contact goes on); else 0, s unchanged. */
@@ -117,5 +164,27 @@ int impact_rest_fallback(struct pass *s);
  * r->rest_bound. */
 void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, const struct pass *a,
 		      const struct pass *b);
+/* The growing step (impact_grow.c). */
+/* The level the segment starting at node n - 1 takes (> c->lev), or 0 when
+ * the step stays. */
+int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in);
+/* Freeze the current segment and start a new one at node s->n - 1 with the
+ * step dt0 2^L: the frozen past's moments, the new weights and convolution.
+ * ANVIL_OK, ANVIL_ENOMEM, or ANVIL_EINVAL (no room left in the window). */
+int impact_grow_switch(struct ctx *c, struct pass *s, int L);
+/* The frozen past's deflection (w; w_c when physical) at the current
+ * segment's node i, in chunks as the march goes (impact_hist), or alone
+ * (impact_hist_one: NaN when out of the weights).  ANVIL_OK, ANVIL_ENOMEM. */
+int impact_hist(struct ctx *c, size_t i, double *val);
+double impact_hist_one(const struct ctx *c, size_t i);
+/* Free the frozen segments' weights. */
+void impact_grow_reset(struct ctx *c);
+/* The frozen past's deflection at the current segment's node k plus d
+ * (0 <= d <= its step), by direct sums over its hats (off the grid: the
+ * contact end); v the current segment's view. */
+int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val);
+/* The pass's arrays from the current segment's node 0 on, as a pass of
+ * uniform step (n, cap local). */
+struct pass impact_view(const struct ctx *c, const struct pass *s);
 
 #endif

@@ -63,25 +63,38 @@ double impact_rest_long(const struct anvil_params *p)
 	return REST_LONG * anvil_hertz_tau_s() * p->T;
 }
 
+/* The layer's local compliance u(t) - t h(t) at node n (t = K dt0: every
+ * node of a grown step lies on the dt0 grid), from the ramp table at dt0
+ * as the weights are made: sum_{j<=K} g_j = (R_{K+1} - R_K)/dt0 = u, and
+ * g_K = h dt0 (impact.c weights()).  The table, not a running sum of the
+ * weights, because the weights change as the step grows. */
+static double rest_cloc(const struct ctx *c, const struct pass *s, size_t n)
+{
+	double dt0 = s->dt0, x = floor(s->t[n] / dt0 + 0.5);
+	size_t K = x > 0 ? (size_t)x : 0;
+	if (K + 1 >= c->nR)
+		return NAN;
+	const double *R = c->R0;
+	double u = (R[K + 1] - R[K]) / dt0;
+	double g = (R[K + 1] - 2.0 * R[K] + (K ? R[K - 1] : 0.0)) / dt0;
+	return u - ((double)K + 0.5) * g;
+}
+
 /* The rebound's bound at node n, relative to V0 (see above). */
 static double rest_bound(const struct ctx *c, const struct pass *s, size_t n)
 {
 	const struct anvil_params *p = c->p;
 	double P = s->P[n];
-	double c_loc = s->Sg - ((double)n + 0.5) * c->g[n];
+	double c_loc = rest_cloc(c, s, n);
 	double eh = 0.4 * P * p->k0 * cbrt(P * P), el = 0.5 * fabs(c_loc) * P * P;
 	return (fabs(s->v[n]) + sqrt(2.0 * (eh + el) / p->m1)) / p->V0;
 }
 
 int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in)
 {
-	if (n == 1)
-		s->Sg = c->g[0];
-	if (n < c->ng)
-		s->Sg += c->g[n];
-	if (!(c->rest_tol > 0) || n >= c->ng)
+	if (!(c->rest_tol > 0) || isnan(rest_cloc(c, s, n)))
 		return 0;
-	double tn = (double)n * s->dt;
+	double tn = s->t[n];
 	/* the finer pass stops where the coarse one came to rest (the same
 	 * time in both: rest_stop is a node of each), and so do the error
 	 * estimate's runs (rest_at) */
@@ -111,17 +124,24 @@ int impact_rest_fallback(struct pass *s)
 	s->rest = 1;
 	s->n = k + 1;
 	s->ncont = s->rest_ncont;
-	s->ts = (double)k * s->dt;
+	s->ts = s->t[k];
 	s->Vs = -s->v[k];
 	return 1;
 }
 
-/* The velocity of pass s at time t (its nearest node, within its run). */
+/* The velocity of pass s at time t: its nearest node at or after t (the
+ * node times grow with a grown step), within its run. */
 static double v_at(const struct pass *s, double t)
 {
-	double x = floor(t / s->dt + 0.5);
-	size_t k = x > 0 ? (size_t)x : 0;
-	return s->v[k < s->n ? k : s->n - 1];
+	size_t lo = 0, hi = s->n - 1;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		if (s->t[mid] < t * (1.0 - 1e-12))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return s->v[lo];
 }
 
 void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, const struct pass *a,
@@ -130,7 +150,7 @@ void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, cons
 	/* each pass's bound (or, for one that parted, its rebound), and the
 	 * scheme's error on v where both ran: the whole difference, as
 	 * extrap takes it */
-	double ta = (double)(a->n - 1) * a->dt, tb = (double)(b->n - 1) * b->dt, tc = fmin(ta, tb);
+	double ta = a->t[a->n - 1], tb = b->t[b->n - 1], tc = fmin(ta, tb);
 	double dv = fabs(v_at(a, tc) - v_at(b, tc)) / p->V0;
 	double ba = a->rest ? a->rest_bound : fabs(a->Vs) / p->V0;
 	double bb = b->rest ? b->rest_bound : fabs(b->Vs) / p->V0;

@@ -1,0 +1,376 @@
+/* impact_grow.c: a time step that grows where the force is smooth (issue 11).
+ *
+ * The step of a pass is dt0 2^L on segments of nodes; every node is a
+ * multiple of dt0, so every lag between a node and a hat's corner is one,
+ * and the ramp response at j dt0 (weights' table R0) gives every weight of
+ * every level exactly: the hat of widths (l, r) at t_m deflects the anvil
+ * at t by (R(t - t_m + l) - R(t - t_m))/l - (R(t - t_m) - R(t - t_m - r))/r.
+ * The product integration stays exact (P piecewise linear through its
+ * nodes, of any spacing): no interpolation of the history.  (That hat as
+ * R/l - R (1/l + 1/r) + R/r rounds by eps R/dt the same way for every hat
+ * of a width: a bias growing as R with the lag, which put a grazing end
+ * 1e-4 off, five times its estimate; tests/test_grow.c.)
+ *
+ * At a switch (node n_s, level L -> L + 1) the past is frozen: its nodes
+ * up to n_s (n_s's hat with the old step left and the new one right) enter
+ * every later deflection through impact_hist: each frozen segment's hats
+ * against its own level's weights (every later node lies on its grid: the
+ * levels only rise), and its last node's asymmetric hat.  It is made in
+ * chunks as the march reaches them (64 nodes, then twice the last): per
+ * frozen segment one FFT correlation over the chunk's span of lags, or the
+ * direct sums when cheaper.  One convolution out to the window's end at
+ * the switch (the first design) cost more: the window's end lies far
+ * beyond where the march stops, and every later switch repeated it.  The
+ * new segment runs the online fast convolution at the new step from its
+ * node 0 (excluded: it is frozen).  The impactor's displacement takes the
+ * frozen past through its moments int P, int t P.
+ *
+ * When: the first contact only, past grow_after nodes, GROW_MIN nodes into
+ * a segment, in contact, and P smooth at the doubled step: its second
+ * differences over the last GROW_MIN nodes, times 4, at most grow_eta P.
+ * The dt/2 pass follows the dt pass's schedule (the same times and the
+ * same levels over its own dt0): the Richardson difference then measures
+ * the scheme as run.  The step never shrinks: a pass grows only within its
+ * first contact, which it ends at the level reached (the exact end works on
+ * any segment); the march after it goes on at that level. */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_fft_halfcomplex.h>
+#include <gsl/gsl_fft_real.h>
+
+#include "impact_impl.h"
+
+/* Nodes a segment runs before its step may double (and the smoothness
+ * test's span): enough second differences that one passing through zero
+ * does not decide. */
+#define GROW_MIN 16
+/* The most levels (a step of dt0 2^GROW_LMAX). */
+#define GROW_LMAX 30
+/* The first chunk of a segment's frozen-past deflections (impact_hist);
+ * each next one is twice the last. */
+#define HIST_CHUNK 64
+/* A chunk's FFT correlation against the direct sums: the direct one's
+ * S C products cost as much as this many times N log2 N (bench_conv's
+ * cross-over of fastconv's squares, the same trade). */
+#define HIST_FFT_COST 3.0
+
+struct pass impact_view(const struct ctx *c, const struct pass *s)
+{
+	struct pass v = *s;
+	size_t o = c->seg0;
+	v.t += o, v.P += o, v.W += o, v.w += o, v.v += o, v.wc += o, v.Q += o;
+	v.n = s->n - o;
+	v.cap = c->segcap;
+	return v;
+}
+
+int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in)
+{
+	if (c->sched) { /* the dt/2 pass: the dt pass's schedule, node for node twice */
+		size_t k = s->nseg;
+		if (k < c->sched->nseg && n - 1 == 2 * c->sched->seg_n[k])
+			return c->sched->seg_L[k];
+		return 0;
+	}
+	if (!c->grow_after || n - 1 < c->grow_after || !in || s->pend_k || s->ncont != 1 ||
+	    s->nseg >= IMPACT_MAX_SEGS || c->lev >= GROW_LMAX || n - 1 - c->seg0 < GROW_MIN)
+		return 0;
+	size_t Ks = c->K0 + (n - 1 - c->seg0) * ((size_t)1 << c->lev);
+	if (Ks + 1 >= c->nR || ((c->nR - 1 - Ks) >> (c->lev + 1)) < 4 * GROW_MIN)
+		return 0; /* too near the window's end to be worth it */
+	const double *P = s->P;
+	double d2 = 0;
+	for (size_t j = n - GROW_MIN + 1; j < n; j++) {
+		if (!(P[j - 2] > 0))
+			return 0;
+		d2 = fmax(d2, fabs(P[j] - 2.0 * P[j - 1] + P[j - 2]));
+	}
+	double ref = P[n - 1];
+	return 4.0 * d2 <= c->grow_eta * ref ? c->lev + 1 : 0;
+}
+
+/* R_r(u dt0) from the table (r = 1: ramp2 - ramp). */
+static double tab(const struct ctx *c, int r, size_t u)
+{
+	return r ? c->R20[u] - c->R0[u] : c->R0[u];
+}
+
+/* The weights of level L from the table (as weights() makes level 0's). */
+static int level_weights(struct ctx *c, int L, size_t capn, double dn)
+{
+	size_t mn = (size_t)1 << L;
+	double *g = malloc(capn * sizeof *g), *dg = NULL;
+	if (!g || (c->R20 && !(dg = malloc(capn * sizeof *dg)))) {
+		free(g);
+		return ANVIL_ENOMEM;
+	}
+	for (size_t j = 0; j < capn; j++) {
+		g[j] = (c->R0[(j + 1) * mn] - 2.0 * c->R0[j * mn] + (j ? c->R0[(j - 1) * mn] : 0.0)) / dn;
+		if (dg)
+			dg[j] = (c->R20[(j + 1) * mn] - 2.0 * c->R20[j * mn] +
+				 (j ? c->R20[(j - 1) * mn] : 0.0)) / dn - g[j];
+	}
+	c->g = g, c->dg = dg, c->ng = capn; /* the old ones: frozen with their segment */
+	return ANVIL_OK;
+}
+
+int impact_grow_switch(struct ctx *c, struct pass *s, int L)
+{
+	size_t ns = s->n - 1, S = ns - c->seg0;
+	size_t mp = (size_t)1 << c->lev, mn = (size_t)1 << L;
+	size_t Ks = c->K0 + S * mp;
+	if (L <= c->lev || Ks + mn >= c->nR || c->nfz + 1 >= IMPACT_MAX_SEGS)
+		return ANVIL_EINVAL;
+	size_t capn = (c->nR - 1 - Ks) >> L;
+	if (capn < 2)
+		return ANVIL_EINVAL;
+	double dp = s->dt, dn = ldexp(s->dt0, L);
+	const double *x = s->P + c->seg0;
+	double Pn = s->P[ns];
+	c->fz[c->nfz++] = (struct frozen){ .x = x, .z = c->dg ? s->Q + c->seg0 : NULL, .S = S,
+					   .K = c->K0, .Kb = Ks, .ng = c->ng, .L = c->lev, .Ln = L,
+					   .g = c->g, .dg = c->dg, .Pb = Pn,
+					   .Qb = c->dg ? s->Q[ns] : 0.0 };
+	c->g = c->dg = NULL;
+	/* the moments: the old segment's hats (node 0's is in already), n_s's */
+	for (size_t m = 1; m < S; m++) {
+		c->Ih += x[m] * dp;
+		c->M1h += x[m] * s->t[c->seg0 + m] * dp;
+	}
+	c->Ih += Pn * 0.5 * (dp + dn);
+	c->M1h += Pn * (s->t[ns] * 0.5 * (dp + dn) + (dn * dn - dp * dp) / 6.0);
+	int st = level_weights(c, L, capn, dn);
+	if (st)
+		return st;
+	anvil_fastconv_free(c->fc);
+	c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, capn, 0, c->fft)
+		      : anvil_fastconv_alloc_fft(c->g, capn, 0, c->fft);
+	if (!c->fc)
+		return ANVIL_ENOMEM;
+	anvil_fastconv_push(c->fc, 0.0); /* node 0: in the frozen past */
+	impact_end_tab_free(c->tab);    /* a new step */
+	c->seg0 = ns, c->K0 = Ks, c->lev = L, c->segcap = capn;
+	c->hlo = c->hn = 0; /* the chunk was the old segment's */
+	c->T0 = (double)Ks * s->dt0;
+	s->t[ns] = c->T0;
+	s->dt = dn;
+	s->seg_n[s->nseg] = ns;
+	s->seg_L[s->nseg] = L;
+	s->nseg++;
+	return ANVIL_OK;
+}
+
+void impact_grow_reset(struct ctx *c)
+{
+	for (size_t j = 0; j < c->nfz; j++) {
+		free(c->fz[j].g);
+		free(c->fz[j].dg);
+	}
+	c->nfz = 0;
+	free(c->hbuf);
+	c->hbuf = NULL;
+	for (int k = 0; k < HIST_FFT_MAX; k++) {
+		gsl_fft_real_wavetable_free(c->rw[k]);
+		gsl_fft_halfcomplex_wavetable_free(c->hw[k]);
+		gsl_fft_real_workspace_free(c->ws[k]);
+		c->rw[k] = NULL, c->hw[k] = NULL, c->ws[k] = NULL;
+	}
+	c->hlo = c->hn = c->hcap = 0;
+}
+
+/* sum_{1 <= m < S} x_m g_{o-m}: four chains summed in a fixed order (the
+ * adder's latency, not the products, bounds a single chain). */
+static double dot_rev(const double *x, const double *g, size_t o, size_t S)
+{
+	double a0 = 0, a1 = 0, a2 = 0, a3 = 0;
+	const double *gr = g + o; /* gr[-m] = g_{o-m} */
+	size_t m = 1;
+	for (; m + 4 <= S; m += 4) {
+		a0 += x[m] * gr[-(ptrdiff_t)m];
+		a1 += x[m + 1] * gr[-(ptrdiff_t)m - 1];
+		a2 += x[m + 2] * gr[-(ptrdiff_t)m - 2];
+		a3 += x[m + 3] * gr[-(ptrdiff_t)m - 3];
+	}
+	for (; m < S; m++)
+		a0 += x[m] * gr[-(ptrdiff_t)m];
+	return (a0 + a1) + (a2 + a3);
+}
+
+/* Frozen segment f's hats at the targets o0 + q k (its grid), k < C,
+ * added to out[k]: directly, or by one FFT correlation over the dense
+ * span of lags (GSL radix 2) when that is cheaper: a chunk of the
+ * march's nodes costs O((S + q C) log) instead of O(S C). */
+static int frozen_chunk(struct ctx *c, const struct frozen *f, size_t o0, size_t q, size_t C,
+			double *out)
+{
+	size_t S = f->S;
+	if (S < 2)
+		return ANVIL_OK;
+	size_t V = S - 1 + q * (C - 1), N = 64;
+	int lg = 6;
+	while (N < V)
+		N <<= 1, lg++;
+	if ((double)(S - 1) * (double)C <= HIST_FFT_COST * (double)N * (double)lg) {
+		for (size_t k = 0; k < C; k++)
+			out[k] += dot_rev(f->x, f->g, o0 + q * k, S) +
+				  (f->z ? dot_rev(f->z, f->dg, o0 + q * k, S) : 0.0);
+		return ANVIL_OK;
+	}
+	/* the tables of size N, made once per pass */
+	if (lg >= HIST_FFT_MAX)
+		return ANVIL_EINVAL;
+	if (!c->ws[lg] && (!(c->rw[lg] = gsl_fft_real_wavetable_alloc(N)) ||
+			   !(c->hw[lg] = gsl_fft_halfcomplex_wavetable_alloc(N)) ||
+			   !(c->ws[lg] = gsl_fft_real_workspace_alloc(N))))
+		return ANVIL_ENOMEM;
+	/* d[n] = sum_{m'} a[m'] b[n + S - 2 - m'], a[m'] = x_{m'+1}, b[v] =
+	 * g[o0 - S + 1 + v]: a cyclic convolution of size N >= V is exact at
+	 * the indices S - 2 .. V - 1 wanted */
+	int nb = f->z ? 4 : 2;
+	double *a = calloc((size_t)nb * N, sizeof *a);
+	if (!a)
+		return ANVIL_ENOMEM;
+	for (int r = 0; r < nb / 2; r++) {
+		const double *x = r ? f->z : f->x, *g = (r ? f->dg : f->g) + (o0 - S + 1);
+		double *u = a + (size_t)(2 * r) * N, *w = u + N;
+		for (size_t m = 0; m + 1 < S; m++)
+			u[m] = x[m + 1];
+		memcpy(w, g, V * sizeof *w);
+		gsl_fft_real_transform(u, 1, N, c->rw[lg], c->ws[lg]);
+		gsl_fft_real_transform(w, 1, N, c->rw[lg], c->ws[lg]);
+		/* the product in GSL's mixed-radix half-complex packing: u[0],
+		 * u[N-1] real; (u[2j-1], u[2j]) = (re, im) of frequency j */
+		u[0] *= w[0];
+		u[N - 1] *= w[N - 1];
+		for (size_t i = 1; i + 1 < N; i += 2) {
+			double re = u[i] * w[i] - u[i + 1] * w[i + 1];
+			double im = u[i] * w[i + 1] + u[i + 1] * w[i];
+			u[i] = re, u[i + 1] = im;
+		}
+		if (r)
+			for (size_t i = 0; i < N; i++)
+				a[i] += u[i];
+	}
+	gsl_fft_halfcomplex_inverse(a, 1, N, c->hw[lg], c->ws[lg]);
+	for (size_t k = 0; k < C; k++)
+		out[k] += a[q * k + S - 2];
+	free(a);
+	return ANVIL_OK;
+}
+
+/* The frozen past at the current segment's nodes i0 .. i0 + C - 1 into
+ * out: each frozen segment's hats against its own weights (every later
+ * node lies on its grid: the levels only rise) and its last node's
+ * asymmetric hat through the table. */
+static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
+{
+	memset(out, 0, C * sizeof *out);
+	for (size_t j = 0; j < c->nfz; j++) {
+		const struct frozen *f = &c->fz[j];
+		size_t u0 = c->K0 + (i0 << c->lev); /* the first target, in dt0 */
+		size_t q = (size_t)1 << (c->lev - f->L);
+		size_t mp = (size_t)1 << f->L, mn = (size_t)1 << f->Ln;
+		size_t o0 = (u0 - f->K) >> f->L;
+		if (o0 + q * (C - 1) >= f->ng)
+			return ANVIL_EINVAL; /* beyond its weights: never, by the capacities */
+		int st = frozen_chunk(c, f, o0, q, C, out);
+		if (st)
+			return st;
+		double hp = c->dt0 * (double)mp, hn = c->dt0 * (double)mn;
+		for (size_t k = 0; k < C; k++) {
+			size_t ub = u0 + (k << c->lev) - f->Kb;
+			/* as the difference of two slopes: R(t)/l - R(t)(1/l + 1/r)
+			 * would round by eps R/dt, the same way for every hat of a
+			 * width, a bias that grows as R with the lag */
+			for (int r = 0; r < (f->z ? 2 : 1); r++) {
+				double A = tab(c, r, ub + mp), B = tab(c, r, ub), E = tab(c, r, ub - mn);
+				out[k] += (r ? f->Qb : f->Pb) * ((A - B) / hp - (B - E) / hn);
+			}
+		}
+	}
+	return ANVIL_OK;
+}
+
+double impact_hist_one(const struct ctx *c, size_t i)
+{
+	double h = 0; /* one node: direct sums, no table touched */
+	return hist_chunk((struct ctx *)c, i, 1, &h) ? NAN : h;
+}
+
+int impact_hist(struct ctx *c, size_t i, double *val)
+{
+	if (i >= c->hlo && i < c->hlo + c->hn) {
+		*val = c->hbuf[i - c->hlo];
+		return ANVIL_OK;
+	}
+	if (i < c->hlo) { /* behind the chunk: alone */
+		*val = impact_hist_one(c, i);
+		return isnan(*val) ? ANVIL_EINVAL : ANVIL_OK;
+	}
+	/* the next chunk, twice the last (a segment's first: HIST_CHUNK) */
+	size_t C = c->hn ? 2 * c->hn : HIST_CHUNK;
+	if (C > c->segcap - i)
+		C = c->segcap - i;
+	if (C > c->hcap) {
+		double *b = realloc(c->hbuf, C * sizeof *b);
+		if (!b)
+			return ANVIL_ENOMEM;
+		c->hbuf = b, c->hcap = C;
+	}
+	int st = hist_chunk(c, i, C, c->hbuf);
+	c->hlo = i, c->hn = st ? 0 : C;
+	*val = st ? 0.0 : c->hbuf[0];
+	return st;
+}
+
+/* The hat of widths lw, rw (in dt0) at node time K dt0, through ramp r, at
+ * the target u dt0 + d: every lag a whole number of dt0 plus d, as the
+ * weights' table has it (the node times' own rounding, the same for every
+ * node, would bias the sum against the march's weights). */
+static int hat_at(const struct ctx *c, int r, size_t u, double d, size_t K, size_t lw, size_t rw,
+		  double *val)
+{
+	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
+	void *fx = r ? c->rctx2 : c->rctx;
+	double l = (double)lw * c->dt0, rr = (double)rw * c->dt0, a, b, e;
+	int st = impact_ramp_of(c, fn, fx, (double)(u - K + lw) * c->dt0 + d, &a);
+	if (!st)
+		st = impact_ramp_of(c, fn, fx, (double)(u - K) * c->dt0 + d, &b);
+	if (!st)
+		st = u >= K + rw ? impact_ramp_of(c, fn, fx, (double)(u - K - rw) * c->dt0 + d, &e)
+				 : impact_ramp_of(c, fn, fx, d - (double)(K + rw - u) * c->dt0, &e);
+	*val = (a - b) / l - (b - e) / rr; /* slopes: no R-sized rounding (hist_chunk) */
+	if (r && !st) {
+		double h0;
+		st = hat_at(c, 0, u, d, K, lw, rw, &h0);
+		*val -= h0;
+	}
+	return st;
+}
+
+int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val)
+{
+	/* the whole pass's nodes, from the current segment's view; their
+	 * times as whole numbers of dt0 */
+	const double *tn = v->t - c->seg0, *P = v->P - c->seg0, *Q = v->Q - c->seg0;
+	size_t u = c->K0 + (k << c->lev), Kp = 0, Km = 0, Kn = 0;
+	double w = 0;
+	int st = ANVIL_OK;
+	for (size_t m = 1; m <= c->seg0 && !st; m++) {
+		Kp = Km;
+		Km = m == 1 ? (size_t)llround(tn[1] / c->dt0) : Kn;
+		Kn = m < c->seg0 ? (size_t)llround(tn[m + 1] / c->dt0) : Km + ((size_t)1 << c->lev);
+		double h;
+		st = hat_at(c, 0, u, d, Km, Km - Kp, Kn - Km, &h);
+		w += P[m] * h;
+		if (c->dg && !st) {
+			st = hat_at(c, 1, u, d, Km, Km - Kp, Kn - Km, &h);
+			w += Q[m] * h;
+		}
+	}
+	*val = w;
+	return st;
+}
