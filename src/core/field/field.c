@@ -207,6 +207,28 @@ int anvil_field_check_grid(const struct anvil_field *f, const struct anvil_field
 	return st;
 }
 
+/* CPU seconds per term and k panel: the layer solved (shared by the
+ * depths), and one depth's sums; fitted on `anvil field --at` runs (h =
+ * 0.35 and 0.5 r0, one and two depths, 1800 terms on 800-900 panels:
+ * 7.9-13 s, within 10 %) on the development machine. */
+#define FIELD_COST_SOLVE 3.4e-6
+#define FIELD_COST_DEPTH 1.9e-6
+
+int anvil_field_check_work(const struct anvil_field *f, const struct anvil_field_window *w,
+			   const struct anvil_field_kgrid *g, size_t depth_panels, const char *what,
+			   struct anvil_err *err)
+{
+	double terms = (double)w->M + 1.0;
+	double s = terms * (FIELD_COST_SOLVE * (double)g->np + FIELD_COST_DEPTH * (double)depth_panels);
+	if (!(s > ANVIL_FIELD_BUDGET_S))
+		return ANVIL_OK;
+	return anvil_err_set(err, ANVIL_ETOL,
+			     "%s: at least %.2g min of work (%zu Fourier terms on %zu k panels: the load lasts %.4g ms, %.3g times 2h/c1), over the budget of %g min; anvil run judges such a contact by quasi-static Hertz",
+			     what, s / 60.0, w->M + 1, g->np, anvil_field_t_load(f) * 1e3,
+			     isfinite(anvil_field_h(f)) ? anvil_field_t_load(f) * f->c2 * sqrt(f->kap2) / (2.0 * anvil_field_h(f)) : 0.0,
+			     ANVIL_FIELD_BUDGET_S / 60.0);
+}
+
 /* The message of a failed map or history: ANVIL_EINVAL there is a window
  * or k-grid past its bound (window_init, kgrid_init). */
 int anvil_field_fail(const struct anvil_field *f, int st, const char *what,

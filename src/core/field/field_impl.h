@@ -119,6 +119,17 @@ int anvil_field_check_point(const struct anvil_field *f, double r, double z,
 			    struct anvil_err *err);
 int anvil_field_check_grid(const struct anvil_field *f, const struct anvil_field_grid *g,
 			   struct anvil_err *err);
+/* The work of a field at least: each of the M + 1 Fourier terms solves
+ * the layer at every k node (np panels) once, and sums every depth's
+ * panels (depth_panels, summed over the depths).  Refused (ANVIL_ETOL,
+ * with the estimate) beyond ANVIL_FIELD_BUDGET_S: a contact thousands of
+ * times 2h/c1 long needs tens of thousands of terms on tens of thousands
+ * of panels (a 500 g rod on a 2 mm plate: 45 min), which no one waits
+ * for at a terminal. */
+#define ANVIL_FIELD_BUDGET_S 600.0
+int anvil_field_check_work(const struct anvil_field *f, const struct anvil_field_window *w,
+			   const struct anvil_field_kgrid *g, size_t depth_panels, const char *what,
+			   struct anvil_err *err);
 /* Status st with its message (ANVIL_EINVAL: a bound of the line or the
  * panels); returns st. */
 int anvil_field_fail(const struct anvil_field *f, int st, const char *what,

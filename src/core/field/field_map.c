@@ -300,6 +300,14 @@ int anvil_field_map_level(struct anvil_field *f, const flevel_t *lv, size_t nt, 
 		tau[i] = t[i] * s;
 	if (!st)
 		st = anvil_field_kgrid_init(&m.g, f, lv, &m.w, g->r_hi / f->r0);
+	size_t sum = 0;
+	for (size_t iz = 0; !st && iz < g->nz; iz++)
+		sum += anvil_field_kgrid_panels(&m.g, m.z_lo + m.dz * (double)iz);
+	if (!st && (st = anvil_field_check_work(f, &m.w, &m.g, sum, "field map", err))) {
+		mapjob_free(&m);
+		free(tau);
+		return st;
+	}
 	if (!st)
 		st = mapjob_alloc(&m);
 	if (!st) {

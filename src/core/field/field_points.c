@@ -196,6 +196,14 @@ int anvil_field_points(struct anvil_field *f, size_t npt, const double *r,
 	}
 	for (size_t i = 0; tau && i < nt; i++)
 		tau[i] = t[i] * f->c2 / f->r0;
+	size_t sum = 0;
+	for (size_t i = 0; !st && i < npt; i++)
+		sum += j.npan[i];
+	if (!st && (st = anvil_field_check_work(f, &j.w, &j.g, sum, "field", err))) {
+		ptjob_free(&j);
+		free(tau);
+		return st;
+	}
 	if (!st)
 		st = points_panels(&j);
 	if (!st)

@@ -522,7 +522,8 @@ static int field_compute(struct fctx *c, const struct fargs *a, const double *r,
 	for (int j = 0; j < FIELD_SAMPLES; j++)
 		t[j] = c->r.ts.val * j / (FIELD_SAMPLES - 1);
 	if (code < 0 && anvil_field_points(c->f, (size_t)a->nat, r, z, FIELD_SAMPLES, t, v, &err)) {
-		cli_error("field: %s", err.msg);
+		/* the core's messages name the field already */
+		cli_error("%s%s", strncmp(err.msg, "field", 5) ? "field: " : "", err.msg);
 		code = cli_exit_code(err.status);
 	}
 	cli_progress_done(&c->prog);
