@@ -707,6 +707,21 @@ static void draw_plot(const struct tui_model *m, const struct tui_view *v,
 
 /* ---- the bottom lines ---- */
 
+/* How many bytes of p make its first line in w columns: up to the last
+ * space that fits when p goes on, never inside a UTF-8 character. */
+static int line_break(const char *p, int w)
+{
+	int cols = 0, cut = -1, i = 0;
+	for (; p[i] && cols < w; i++) {
+		cols += ((unsigned char)p[i] & 0xC0) != 0x80;
+		if (p[i] == ' ')
+			cut = i;
+	}
+	while (p[i] && ((unsigned char)p[i] & 0xC0) == 0x80)
+		i++;
+	return p[i] && cut > 0 ? cut : i;
+}
+
 /* A message too long for one line, wrapped at spaces onto the lines above
  * bottom (over the foot of the plot), at most STATUS_MAX_LINES. */
 #define STATUS_MAX_LINES 4
@@ -716,16 +731,7 @@ static void put_wrapped(int bottom, attr_t a, const char *msg)
 	int len[STATUS_MAX_LINES], n = 0, w = COLS - 1;
 	const char *p = msg;
 	while (*p && n < STATUS_MAX_LINES) {
-		int cols = 0, cut = -1, i = 0;
-		for (; p[i] && cols < w; i++) {
-			cols += ((unsigned char)p[i] & 0xC0) != 0x80;
-			if (p[i] == ' ')
-				cut = i;
-		}
-		while (p[i] && ((unsigned char)p[i] & 0xC0) == 0x80)
-			i++; /* never split a character */
-		if (p[i] && cut > 0)
-			i = cut; /* break at the last space */
+		int i = line_break(p, w);
 		line[n] = p;
 		len[n++] = i;
 		p += i;
@@ -860,16 +866,7 @@ static void draw_plan(const struct tui_model *m, const struct tui_view *v)
 static int put_block(int y, int bottom, int x, int w, attr_t a, const char *s)
 {
 	while (*s && y <= bottom) {
-		int cols = 0, cut = -1, i = 0;
-		for (; s[i] && cols < w; i++) {
-			cols += ((unsigned char)s[i] & 0xC0) != 0x80;
-			if (s[i] == ' ')
-				cut = i;
-		}
-		while (s[i] && ((unsigned char)s[i] & 0xC0) == 0x80)
-			i++; /* never split a character */
-		if (s[i] && cut > 0)
-			i = cut;
+		int i = line_break(s, w);
 		char line[NOTE_LEN];
 		snprintf(line, sizeof line, "%.*s", i, s);
 		put(y++, x, w, a, line);
