@@ -59,12 +59,16 @@ static const struct thin scenes[] = {
 	  PHYS },
 	/* a rebound from a thin plate (R_f 0.0074 at draft): no rest */
 	{ "h = 0.5 r0, 12.2 g, 10 m/s", "0.5r0", "12.2g", "10m/s", NULL, NULL, DRAFT, 0, 0, 0, PHYS },
-	/* the co-moving phase merged: one contact, R_f ~ 1e-7 */
-	{ "h = 0.1 r0, 12.2 g, 10 m/s", "0.1r0", "12.2g", "10m/s", NULL, NULL, DRAFT, 0, 0, 1, PHYS },
-	/* at normal the bodies part and touch again every 2 us while the
-	 * impactor still moves at half of V0: no rest, and the refusal says so */
-	{ "h = 0.1 r0, 12.2 g, 10 m/s, normal", "0.1r0", "12.2g", "10m/s", NULL,
-	  "not at rest on the plate", NORMAL, 0, 0, 0, PHYS },
+	/* the co-moving phase merged: one contact, R_f ~ 1e-6.  At normal it
+	 * was refused (more than 64 contacts): the correction's truncated
+	 * series rang at the band's edge, P oscillated at its period (1.94 us)
+	 * and grew until the bodies parted every period; filtered (green.h),
+	 * one contact, P_max 158 +- 10 N (draft 168 +- 29, Zener 156) */
+	{ "h = 0.1 r0, 12.2 g, 10 m/s", "0.1r0", "12.2g", "10m/s", NULL, NULL, DRAFT, 1, 0, 1, PHYS },
+	/* refused at normal in the same way, by its error run at half the
+	 * band (263 us, 0.19 m/s): now at rest on the plate, P_max 0.627 +-
+	 * 0.039 N (Zener 0.624) */
+	{ "r7: h = 0.02 r0, 0.1 g, 1 m/s", "0.02r0", "0.1g", "1m/s", NULL, NULL, NORMAL, 0, 1, 0, PHYS },
 	{ "500 g steel rod on 1 mm steel, 1 m/s", "1mm", "500g", "1m/s", "steel", NULL, DRAFT, 1, 0, 0,
 	  PHYS },
 	/* the paper's contact chattered here with no merge and no budget:

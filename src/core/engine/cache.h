@@ -51,10 +51,12 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 5 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 6 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
-				 before holds the stepped join and other bits) */
+				 before holds the stepped join and other bits; 6: the
+				 physical contact's corrections filtered at the band's
+				 edge, green.h) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

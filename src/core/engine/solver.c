@@ -557,6 +557,7 @@ static const struct anvil_green *physical_corr(struct anvil_solver *s, const str
 	struct anvil_green_settings gs;
 	anvil_green_settings(pb->accuracy, &gs);
 	gs.omega_max = anvil_cache_grid(omega_idx);
+	gs.filter = 1; /* no ringing at the band's edge (green.h) */
 	struct anvil_green *g = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, pb->p.nu,
 							patch, anvil_cache_grid(tau_idx), &gs,
 							s->progress, s->progress_ctx, err);

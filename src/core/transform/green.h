@@ -46,6 +46,10 @@ struct anvil_green_settings {
 	double ktail;   /* integrand cut-off: exp(-2 Re(alpha1) H) below this */
 	int no_plate;   /* 1: invert over the whole window, never the plate beyond
 			   (plate.h; for tests: the second method) */
+	int filter;     /* 1: Vandeven's filter on the band (durbin.h), each
+			   inversion (the twin's too) on its own terms: the
+			   physical contact's corrections (green.c says why);
+			   0: the plain truncated series (the paper's contact) */
 };
 
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);
