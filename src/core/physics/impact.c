@@ -741,6 +741,19 @@ static void fill_contacts(struct anvil_result *r, const struct anvil_params *p,
 	r->Ea.err = ea_err(p, r);
 }
 
+/* The rounding of a pass's rebound velocity: v = V0 - impulse/m1 sums
+ * its n trapezoids one by one, and a recursive sum of n terms is off by
+ * at most (n - 1) u sum|terms| (Higham, Accuracy and Stability of
+ * Numerical Algorithms, 2002, eq. 4.4), u = eps/2; sum|terms| = impulse/m1
+ * = V0 - V_s (P >= 0).  It matters only where V_s is a cancellation far
+ * below V0: a 500 g rod on 1 mm steel rebounds at 6e-8 V0, and the
+ * levels' passes, grown on different schedules, differed by 2.8e-12 V0
+ * against a Richardson estimate of 2.5e-12. */
+static double vs_rounding(const struct anvil_params *p, const struct pass *s)
+{
+	return (double)s->n * 0.5 * DBL_EPSILON * (p->V0 + fabs(s->Vs));
+}
+
 static void fill(struct anvil_result *r, const struct anvil_params *p,
 		 const struct pass *a, const struct pass *b, enum anvil_scheme scheme)
 {
@@ -757,6 +770,9 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 		r->Pmax.val = extrap(a->Pmax, b->Pmax, &r->Pmax.err);
 		r->Vs.val = extrap(a->Vs, b->Vs, &r->Vs.err);
 	}
+	/* extrap takes 4/3 of the fine pass's and 1/3 of the coarse's rounding */
+	r->Vs.err += scheme == ANVIL_SCHEME_PAPER ? vs_rounding(p, a)
+		     : (4.0 * vs_rounding(p, b) + vs_rounding(p, a)) / 3.0;
 	r->Rf.val = r->Vs.val / p->V0;
 	r->Rf.err = r->Vs.err / p->V0;
 	r->Ea.val = 0.5 * p->m1 * (p->V0 * p->V0 - r->Vs.val * r->Vs.val);
