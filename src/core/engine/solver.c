@@ -974,10 +974,13 @@ static int run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 	if (row->model_err > 0) /* the layer's reflections left out (plan.c) */
 		add_model_error(r, p, row->model_err);
 	tmax_from_pmax(r, corr ? anvil_cache_grid(ld.omega_idx) * p->c2 / p->r0 : 0.0);
+	/* a_max at the computed peak force (on a thin plate far below the
+	 * rigid anvil's, which sized the patch) */
 	if (corr)
 		snprintf(r->note, sizeof r->note,
-			 "physical contact: Hertz + the layer's remainder with the true contact radius (a_max = %.3g mm), reflections from 2h/c1 = %.3g us",
-			 a * 1e3, 2e6 * p->h / p->c1);
+			 "physical contact: Hertz + the layer's remainder with the true contact radius (a_max = %.3g mm; its a^2 term fitted on a %.3g mm patch), reflections from 2h/c1 = %.3g us",
+			 sqrt(p->r0 * p->k0 * pow(r->Pmax.val, 2.0 / 3.0)) * 1e3, ld.patch * p->r0 * 1e3,
+			 2e6 * p->h / p->c1);
 	else if (row->model_err > 0)
 		snprintf(r->note, sizeof r->note,
 			 "physical contact on the half-space: the reflections from 2h/c1 = %.3g us change the results by about %.2g (estimated), below the target: left out",

@@ -57,7 +57,7 @@ struct anvil_result {
 	 * supported within them, answers otherwise. */
 	double reach_p, reach_bend;
 	double seconds;      /* wall time spent on this model */
-	char note[320];      /* what the model left out, or "" */
+	char note[512];      /* what the model left out, or "" */
 	/* How the run ended: ANVIL_OK; a warning (> 0, e.g. ANVIL_WTOL: the
 	 * values and error estimates stand, the target was missed); a failure
 	 * (< 0: no usable values).  why says it in words ("" for ANVIL_OK). */
