@@ -314,6 +314,54 @@ static void test_gk21(void)
 	   cabs(v - exact), e);
 }
 
+/* The physical contact's filtered corrections (green.c, band_finish) move
+ * before the reflection returns, more than the series' abserr: the cache
+ * must read back what the solver computed (a fresh solver reading one from
+ * disk recomputed it: tests/test_plan), and still refuse a precursor of
+ * the response's own size. */
+static void test_import_filtered(void)
+{
+	struct setup su = { .hh = 2, .nu = 0.3, .tau_end = 12 };
+	struct anvil_green_settings gs;
+	struct anvil_err e;
+	anvil_green_settings(ANVIL_ACC_NORMAL, &gs);
+	gs.omega_max = 6;
+	gs.filter = 1;
+	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, su.hh, su.nu,
+						  su.tau_end, &gs, NULL, NULL, &e);
+	struct anvil_green_samples s, x;
+	anvil_green_export(g, &s);
+	double pre = 0, peak = 0, t_refl = 2 * su.hh * sqrt((1 - 2 * su.nu) / (2 * (1 - su.nu)));
+	for (size_t j = 0; j < s.n; j++) {
+		peak = fmax(peak, fabs(s.ramp[j]));
+		if ((double)j * s.dtau < t_refl)
+			pre = fmax(pre, fabs(s.ramp[j]));
+	}
+	struct anvil_green *h = anvil_green_import(&s, &e);
+	ok(s.filtered && h && pre > s.abserr,
+	   "a filtered response imports (moves %.2g before 2h/c1, abserr %.2g)", pre, s.abserr);
+	if (h) {
+		double tau = 0.37 * su.tau_end, a = 0, b = 1;
+		anvil_green_ramp(h, tau, &a);
+		anvil_green_ramp(g, tau, &b);
+		ok(a == b, "  and evaluates to the bit");
+	} else {
+		ok(0, "  and evaluates to the bit");
+	}
+	anvil_green_free(h);
+	x = s;
+	x.filtered = 0;
+	ok(!anvil_green_import(&x, &e), "  the same samples unfiltered: refused (the plain series' bound)");
+	double *r = malloc(s.n * sizeof *r);
+	memcpy(r, s.ramp, s.n * sizeof *r);
+	r[(size_t)(1.0 / s.dtau)] += 2e-3 * peak;
+	x = s;
+	x.ramp = r;
+	ok(!anvil_green_import(&x, &e), "  a precursor of 2e-3 of its peak: refused");
+	free(r);
+	anvil_green_free(g);
+}
+
 /* Issue 13: the importer checks sizes before any cast and the samples'
  * plausibility, so that a crafted file with a valid checksum is refused. */
 static void test_import(void)
@@ -345,6 +393,7 @@ static void test_import(void)
 	r[s.n / 2] = s.ramp[s.n / 2];
 	x.abserr = 0;
 	ok(!anvil_green_import(&x, &e), "abserr = 0: refused");
+	test_import_filtered();
 	x = s;
 	x.tau_end = 1e300;
 	ok(!anvil_green_import(&x, &e) && strstr(e.msg, "sizes"), "tau_end = 1e300: refused before any cast");

@@ -324,6 +324,7 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->dtau = s->dtau;
 	hd->abserr = s->abserr;
 	hd->n = s->n;
+	hd->filtered = (uint32_t)(s->filtered != 0);
 }
 
 static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp)
@@ -403,7 +404,7 @@ static int header_match(const struct anvil_cache_header *hd, const char *path,
 	if (hd->hh != key->hh || hd->nu != key->nu || hd->acc != (uint32_t)key->acc ||
 	    hd->omega_idx != key->omega_idx || hd->tau_idx != key->tau_idx || hd->mode != ANVIL_GREEN_LAYER_CORRECTION ||
 	    hd->twin != (uint16_t)(key->twin != 0) || hd->load != (uint32_t)key->load ||
-	    hd->patch != key->patch || hd->reserved != 0)
+	    hd->patch != key->patch || hd->filtered > 1)
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: holds another response", path);
 	return ANVIL_OK;
 }
@@ -428,7 +429,8 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 	else if (checksum(hd, ramp) != hd->checksum)
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (bad checksum)", path);
 	else {
-		struct anvil_green_samples s = { .mode = ANVIL_GREEN_LAYER_CORRECTION, .hh = hd->hh,
+		struct anvil_green_samples s = { .mode = ANVIL_GREEN_LAYER_CORRECTION,
+						 .filtered = hd->filtered != 0, .hh = hd->hh,
 						 .nu = hd->nu, .tau_end = hd->tau_end,
 						 .dtau = hd->dtau, .abserr = hd->abserr,
 						 .n = (size_t)hd->n, .ramp = ramp };

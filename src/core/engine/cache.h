@@ -51,12 +51,13 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 6 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 7 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
 				 physical contact's corrections filtered at the band's
-				 edge, green.h) */
+				 edge, green.h; 7: the filter flag in the header, which
+				 the reader's causality check needs) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -161,7 +162,7 @@ struct anvil_cache_header {
 	int32_t omega_idx;
 	int32_t tau_idx;
 	uint32_t load;       /* the key's load (format 4) */
-	uint32_t reserved;   /* 0 */
+	uint32_t filtered;   /* 0 or 1: samples.filtered (format 7) */
 	double hh, nu, patch, omega, tau_end, dtau, abserr;
 	uint64_t n, checksum;
 };

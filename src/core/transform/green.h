@@ -121,6 +121,7 @@ size_t anvil_green_evals(const struct anvil_green *g);
  * ramp[j] at tau = j dtau, j < n, ramp[0] = 0, n = floor(tau_end/dtau) + 2. */
 struct anvil_green_samples {
 	enum anvil_green_mode mode;
+	int filtered; /* 1: made with gs.filter (its precursor, green.c) */
 	double hh, nu, tau_end, dtau, abserr;
 	size_t n;
 	const double *ramp;
