@@ -172,6 +172,12 @@ void impact_grow_reset(struct ctx *c)
 	c->nfz = 0;
 	free(c->hbuf);
 	c->hbuf = NULL;
+	c->hlo = c->hn = c->hcap = 0;
+}
+
+void impact_grow_free(struct ctx *c)
+{
+	impact_grow_reset(c);
 	for (int k = 0; k < HIST_FFT_MAX; k++) {
 		gsl_fft_real_wavetable_free(c->rw[k]);
 		gsl_fft_halfcomplex_wavetable_free(c->hw[k]);
@@ -219,7 +225,7 @@ static int frozen_chunk(struct ctx *c, const struct frozen *f, size_t o0, size_t
 				  (f->z ? dot_rev(f->z, f->dg, o0 + q * k, S) : 0.0);
 		return ANVIL_OK;
 	}
-	/* the tables of size N, made once per pass */
+	/* the tables of size N, made once per impact (both passes) */
 	if (lg >= HIST_FFT_MAX)
 		return ANVIL_EINVAL;
 	if (!c->ws[lg] && (!(c->rw[lg] = gsl_fft_real_wavetable_alloc(N)) ||
