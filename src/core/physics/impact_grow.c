@@ -56,6 +56,8 @@
  * S C products cost as much as this many times N log2 N (bench_conv's
  * cross-over of fastconv's squares, the same trade). */
 #define HIST_FFT_COST 3.0
+/* A chunk's span of lags against the widest frozen segment's (hist_cmax). */
+#define HIST_SPAN 8
 
 struct pass impact_view(const struct ctx *c, const struct pass *s)
 {
@@ -300,6 +302,25 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 	return ANVIL_OK;
 }
 
+/* The largest chunk worth making: a frozen segment's FFT correlation
+ * costs N log N for a chunk of C targets, N >= its span of S lags plus the
+ * chunk's q C; once q C is past a few times S, a larger chunk only adds
+ * log N per target (and the last chunk's unused end, up to half of it,
+ * where the march stops short of the window).  So q C is held to the
+ * room left in the power of two past HIST_SPAN times the widest segment's
+ * span (both in dt0). */
+static size_t hist_cmax(const struct ctx *c)
+{
+	size_t span = 0, N = 64;
+	for (size_t j = 0; j < c->nfz; j++)
+		if (c->fz[j].S > 1 && ((c->fz[j].S - 1) << c->fz[j].L) > span)
+			span = (c->fz[j].S - 1) << c->fz[j].L;
+	while (N < HIST_SPAN * span)
+		N <<= 1;
+	size_t cm = (N - span) >> c->lev;
+	return cm > HIST_CHUNK ? cm : HIST_CHUNK;
+}
+
 double impact_hist_one(const struct ctx *c, size_t i)
 {
 	double h = 0; /* one node: direct sums, no table touched */
@@ -316,8 +337,11 @@ int impact_hist(struct ctx *c, size_t i, double *val)
 		*val = impact_hist_one(c, i);
 		return isnan(*val) ? ANVIL_EINVAL : ANVIL_OK;
 	}
-	/* the next chunk, twice the last (a segment's first: HIST_CHUNK) */
-	size_t C = c->hn ? 2 * c->hn : HIST_CHUNK;
+	/* the next chunk, twice the last (a segment's first: HIST_CHUNK), at
+	 * most hist_cmax */
+	size_t C = c->hn ? 2 * c->hn : HIST_CHUNK, cm = hist_cmax(c);
+	if (C > cm)
+		C = cm;
 	if (C > c->segcap - i)
 		C = c->segcap - i;
 	if (C > c->hcap) {
