@@ -341,7 +341,7 @@ void anvil_green_free(struct anvil_green *g)
  * quadrature bounds, summed in order n = 0, 1, ... (fixed: the same bits
  * whatever the threads). */
 static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
-			const double *err, const struct plate *pl)
+			const double *err, const struct plate *pl, struct anvil_plate_memo *memo)
 {
 	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
 	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
@@ -371,7 +371,8 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 			g->ramp[j] += plate_t(pl, t);
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
-	if (n1 < g->n && (st = anvil_plate_extend(g->hh, g->nu, g->dtau, n1, g->n, g->ramp, &ext_err)))
+	if (n1 < g->n && (st = anvil_plate_extend_memo(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
+							  &ext_err, memo)))
 		return st;
 	g->abserr = amp * qsum + amp * tail + ext_err;
 	for (size_t j = 0; j < g->n; j++)
@@ -432,10 +433,14 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	 * error estimate is in err, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
 		st = ANVIL_OK;
+	/* the plate's K(t) table: the caller's memo, or one for g and its twin */
+	struct anvil_plate_memo *own = !gs->plate && tw && t1 > 0 ? anvil_plate_memo_alloc() : NULL;
+	struct anvil_plate_memo *memo = gs->plate ? gs->plate : own;
 	if (!st)
-		st = green_finish(g, &dl, spec, err, &pl);
+		st = green_finish(g, &dl, spec, err, &pl, memo);
 	if (!st && tw)
-		st = green_finish(tw, &dt, spec, err, &pl);
+		st = green_finish(tw, &dt, spec, err, &pl, memo);
+	anvil_plate_memo_free(own);
 	free(err);
 	free(spec);
 	return st;
