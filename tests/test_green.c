@@ -22,6 +22,7 @@
 #include "gk21.h"
 #include "green.h"
 #include "halfspace.h"
+#include "plate.h"
 #include "direct_bc.h"
 #include "tap.h"
 
@@ -487,6 +488,52 @@ static void test_plate_join(void)
 	anvil_green_free(g);
 }
 
+/* The plate's K(t) memo (plate.h) is a pure function's: a response made
+ * with a memo that is empty, that holds this plate's table (from a
+ * response at another patch), or that holds another plate's, has the bits
+ * of one made with none. */
+static int same_bits(const struct anvil_green *a, const struct anvil_green *b)
+{
+	struct anvil_green_samples x, y;
+	anvil_green_export(a, &x);
+	anvil_green_export(b, &y);
+	return x.n == y.n && x.abserr == y.abserr && !memcmp(x.ramp, y.ramp, x.n * sizeof *x.ramp);
+}
+
+static void test_plate_memo(void)
+{
+	double hh = 0.25, tau_end = 8.0 * 64.0;
+	struct anvil_green_settings gs;
+	struct anvil_err e;
+	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+	gs.omega_max = 2.0;
+	struct anvil_green *none = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3, tau_end,
+						     &gs, NULL, NULL, &e);
+	struct anvil_plate_memo *m = anvil_plate_memo_alloc();
+	gs.plate = m;
+	struct anvil_green *first = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3, tau_end,
+						      &gs, NULL, NULL, &e);
+	struct anvil_green *patch = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3,
+							    0.5, tau_end, &gs, NULL, NULL, &e);
+	struct anvil_green *held = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3, tau_end,
+						     &gs, NULL, NULL, &e);
+	struct anvil_green *other = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 0.5, 0.3,
+						      tau_end, &gs, NULL, NULL, &e);
+	struct anvil_green *again = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3, tau_end,
+						      &gs, NULL, NULL, &e);
+	int made = none && first && patch && held && other && again;
+	ok(made && same_bits(none, first) && same_bits(none, held) && same_bits(none, again),
+	   "h = 0.25 r0, window 8 T1: the same bits with the plate's memo empty, held (after "
+	   "the patch's response) or another plate's, as with none");
+	anvil_green_free(none);
+	anvil_green_free(first);
+	anvil_green_free(patch);
+	anvil_green_free(held);
+	anvil_green_free(other);
+	anvil_green_free(again);
+	anvil_plate_memo_free(m);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
@@ -501,6 +548,7 @@ int main(void)
 	test_plate_limit();
 	test_plate_window();
 	test_plate_join();
+	test_plate_memo();
 	plan(tap_n);
 	return done_testing();
 }

@@ -315,14 +315,15 @@ static double bending(const struct anvil_params *p)
  * long contact then marches about IMPACT_GROWN more pulses' worth of
  * nodes, whatever its length (the bench's long contacts, normal: 4-19,
  * their predicted/marched nodes 0.75-1.6); each such node pays the frozen
- * past (IMPACT_HIST, s), and every step of the window at dt still costs
- * the ramp's table and the convolution's tables (IMPACT_TAB, s; measured
- * 0.7-1.2 us per window step in PHYS_RUNS' units).  On the 7 long contacts
- * of scripts/bench section 13 (cold, one thread) the physical row's whole
- * prediction is then 0.75-2.4 times its time (the 2.4: h = 0.05 r0, whose
- * corrections were priced 2.7 times dear before). */
+ * past (IMPACT_HIST, s: 8 us before its chunks were held to a few spans
+ * of the frozen segments, impact_grow.c hist_cmax, and the plate's K(t)
+ * was made once per window, plan_work.c), and every step of the window at
+ * dt still costs the ramp's table (IMPACT_TAB, s; measured 0.7-1.2 us per
+ * window step in PHYS_RUNS' units).  On the 9 long contacts of
+ * scripts/bench section 13 that run (cold, one thread) the physical row's
+ * whole prediction is then 1.0-1.5 times the process' CPU time. */
 #define IMPACT_GROWN 12.0
-#define IMPACT_HIST 8.0e-6
+#define IMPACT_HIST 3.5e-6
 #define IMPACT_TAB 1.0e-6
 /* One coupled run over a window of window_s seconds at step dt, the level
  * asking nsteps steps of a Hertz pulse. */

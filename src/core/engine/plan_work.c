@@ -134,6 +134,7 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
 		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
 		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+	int plate_paid = 0;
 	*where = ANVIL_CACHE_MEMORY;
 	if (seconds)
 		*seconds = NAN;
@@ -147,8 +148,11 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 			double om = anvil_cache_grid(load[i].omega_idx);
 			double e = PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr), om, tq, acc);
 			evals += e;
+			/* the plate's nodes once: the solver keeps its K(t) table
+			 * for the next correction (plate.h, anvil_plate_memo) */
 			sec += e * PHYS_COST_EVAL + anvil_plan_corr_samples(j->hh, om, tq) * PHYS_COST_SAMPLE +
-			       plate_nodes(j->hh, tq) * PHYS_COST_NODE;
+			       (plate_paid ? 0.0 : plate_nodes(j->hh, tq) * PHYS_COST_NODE);
+			plate_paid = 1;
 		}
 		if (w == ANVIL_CACHE_NONE || (w == ANVIL_CACHE_DISK && *where == ANVIL_CACHE_MEMORY))
 			*where = w;

@@ -16,6 +16,7 @@
 #include "halfspace.h"
 #include "hertz.h"
 #include "impact.h"
+#include "plate.h"
 #include "plan.h"
 #include "radiation.h"
 #include "solver.h"
@@ -32,6 +33,9 @@ struct anvil_solver {
 	/* the responses, each made once and shared by every impact that needs
 	 * it ("plan once, execute many times") */
 	struct anvil_cache *cache;
+	/* the plate's K(t) table, kept from one response to the next (plate.h):
+	 * a long window's correction, its twin and its patch's share it */
+	struct anvil_plate_memo *plate;
 	unsigned long layer_computed;
 	size_t layer_evals;
 };
@@ -40,7 +44,8 @@ struct anvil_solver *anvil_solver_alloc(void)
 {
 	char dir[4096];
 	struct anvil_solver *s = calloc(1, sizeof *s);
-	if (s && !(s->cache = anvil_cache_alloc())) {
+	if (s && (!(s->cache = anvil_cache_alloc()) || !(s->plate = anvil_plate_memo_alloc()))) {
+		anvil_cache_free(s->cache);
 		free(s);
 		return NULL;
 	}
@@ -55,6 +60,7 @@ void anvil_solver_free(struct anvil_solver *s)
 	if (!s)
 		return;
 	anvil_cache_free(s->cache);
+	anvil_plate_memo_free(s->plate);
 	free(s);
 }
 
@@ -147,6 +153,7 @@ static const struct anvil_green *get_corr(struct anvil_solver *s, const struct a
 	struct anvil_green_settings gs;
 	anvil_green_settings(key->acc, &gs);
 	gs.omega_max = anvil_cache_grid(mk.omega_idx);
+	gs.plate = s->plate;
 	struct anvil_green *tw = NULL;
 	struct anvil_green *ng = anvil_green_alloc_twin(ANVIL_GREEN_LAYER_CORRECTION, key->hh, key->nu,
 							anvil_cache_grid(key->tau_idx), &gs, s->progress,
@@ -558,6 +565,7 @@ static const struct anvil_green *physical_corr(struct anvil_solver *s, const str
 	anvil_green_settings(pb->accuracy, &gs);
 	gs.omega_max = anvil_cache_grid(omega_idx);
 	gs.filter = 1; /* no ringing at the band's edge (green.h) */
+	gs.plate = s->plate;
 	struct anvil_green *g = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, pb->p.nu,
 							patch, anvil_cache_grid(tau_idx), &gs,
 							s->progress, s->progress_ctx, err);

@@ -15,7 +15,7 @@
 struct anvil_fastconv_fft {
 	int nlev;
 	size_t direct_max;
-	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: level k direct */
+	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: not made yet (or level k direct) */
 	gsl_fft_halfcomplex_wavetable **bw;
 };
 
@@ -35,7 +35,7 @@ struct anvil_fastconv {
 	double *buf[2]; /* scratch, 2 B_max */
 	struct level *lev; /* lev[k].spec[0] NULL: level k is summed directly */
 	int nlev;
-	const struct anvil_fastconv_fft *fft; /* the tables: shared, or own */
+	struct anvil_fastconv_fft *fft; /* the tables: shared, or own */
 	struct anvil_fastconv_fft *own;
 };
 
@@ -81,18 +81,22 @@ struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_ma
 		anvil_fastconv_fft_free(t);
 		return NULL;
 	}
-	for (int k = 0; k < t->nlev; k++) {
-		size_t B = (size_t)1 << k;
-		if (B <= t->direct_max)
-			continue;
-		t->fw[k] = gsl_fft_real_wavetable_alloc(2 * B);
-		t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(2 * B);
-		if (!t->fw[k] || !t->bw[k]) {
-			anvil_fastconv_fft_free(t);
-			return NULL;
-		}
-	}
+	/* each level's tables when first needed (fft_level): a grown step's
+	 * segments stop far short of the window that sized them, and the
+	 * large levels' sines cost more than their transforms */
 	return t;
+}
+
+/* Level k's tables, made on first use: the same bits whenever made.
+ * -1 when out of memory. */
+static int fft_level(struct anvil_fastconv_fft *t, int k)
+{
+	size_t N = (size_t)2 << k;
+	if (!t->fw[k] && !(t->fw[k] = gsl_fft_real_wavetable_alloc(N)))
+		return -1;
+	if (!t->bw[k] && !(t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(N)))
+		return -1;
+	return 0;
 }
 
 void anvil_fastconv_free(struct anvil_fastconv *f)
@@ -121,7 +125,7 @@ static int level_init(struct anvil_fastconv *f, int k)
 {
 	size_t B = (size_t)1 << k;
 	struct level *l = &f->lev[k];
-	if (!(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
+	if (fft_level(f->fft, k) || !(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
 		return -1;
 	for (int i = 0; i < f->nk; i++) {
 		double *sp = l->spec[i] = calloc(2 * B, sizeof *sp);
@@ -135,24 +139,24 @@ static int level_init(struct anvil_fastconv *f, int k)
 }
 
 static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
-					    size_t direct_max, const struct anvil_fastconv_fft *fft);
+					    size_t direct_max, struct anvil_fastconv_fft *fft);
 
 struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
-						const struct anvil_fastconv_fft *fft)
+						struct anvil_fastconv_fft *fft)
 {
 	return alloc_kernels(&g, 1, cap, direct_max, fft);
 }
 
 struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
 						 size_t direct_max,
-						 const struct anvil_fastconv_fft *fft)
+						 struct anvil_fastconv_fft *fft)
 {
 	const double *gh[2] = { g, h };
 	return alloc_kernels(gh, 2, cap, direct_max, fft);
 }
 
 static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
-					    size_t direct_max, const struct anvil_fastconv_fft *fft)
+					    size_t direct_max, struct anvil_fastconv_fft *fft)
 {
 	if (!cap)
 		return NULL;

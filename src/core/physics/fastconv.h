@@ -35,9 +35,10 @@ void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
 
 /* The FFT tables (GSL wavetables, each level's size) of every convolution
  * of capacity up to cap with squares summed directly up to direct_max
- * (as anvil_fastconv_alloc's; or fewer), made once: read-only, shared by
- * any number of convolutions, which must not outlive them.  NULL when out
- * of memory. */
+ * (as anvil_fastconv_alloc's; or fewer), each level's made when a
+ * convolution first needs it (the same bits whenever made): shared by any
+ * number of convolutions of one thread, which must not outlive them.
+ * NULL when out of memory. */
 struct anvil_fastconv_fft;
 struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max);
 void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t); /* NULL is a no-op */
@@ -45,7 +46,7 @@ void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t); /* NULL is a no-op *
 /* anvil_fastconv_alloc with the tables fft (borrowed; NULL: its own).
  * NULL also when fft does not cover cap and direct_max. */
 struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
-						const struct anvil_fastconv_fft *fft);
+						struct anvil_fastconv_fft *fft);
 
 /* A pair: c_n = sum_{m < n} (x_m g_{n-m} + y_m h_{n-m}), pushed together
  * (anvil_fastconv_push_pair); the two products of an FFT square are added
@@ -53,7 +54,7 @@ struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, siz
  * convolutions cost four.  As anvil_fastconv_alloc_fft otherwise. */
 struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
 						 size_t direct_max,
-						 const struct anvil_fastconv_fft *fft);
+						 struct anvil_fastconv_fft *fft);
 
 /* Forget the pushed values (same kernel): as new. */
 void anvil_fastconv_reset(struct anvil_fastconv *f);

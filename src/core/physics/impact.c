@@ -864,7 +864,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	free(c.dg);
 	free(c.R0);
 	free(c.R20);
-	impact_grow_reset(&c);
+	impact_grow_free(&c);
 	impact_end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);
 	pass_free(&a);

@@ -56,6 +56,8 @@
  * S C products cost as much as this many times N log2 N (bench_conv's
  * cross-over of fastconv's squares, the same trade). */
 #define HIST_FFT_COST 3.0
+/* A chunk's span of lags against the widest frozen segment's (hist_cmax). */
+#define HIST_SPAN 8
 
 struct pass impact_view(const struct ctx *c, const struct pass *s)
 {
@@ -172,6 +174,12 @@ void impact_grow_reset(struct ctx *c)
 	c->nfz = 0;
 	free(c->hbuf);
 	c->hbuf = NULL;
+	c->hlo = c->hn = c->hcap = 0;
+}
+
+void impact_grow_free(struct ctx *c)
+{
+	impact_grow_reset(c);
 	for (int k = 0; k < HIST_FFT_MAX; k++) {
 		gsl_fft_real_wavetable_free(c->rw[k]);
 		gsl_fft_halfcomplex_wavetable_free(c->hw[k]);
@@ -219,7 +227,7 @@ static int frozen_chunk(struct ctx *c, const struct frozen *f, size_t o0, size_t
 				  (f->z ? dot_rev(f->z, f->dg, o0 + q * k, S) : 0.0);
 		return ANVIL_OK;
 	}
-	/* the tables of size N, made once per pass */
+	/* the tables of size N, made once per impact (both passes) */
 	if (lg >= HIST_FFT_MAX)
 		return ANVIL_EINVAL;
 	if (!c->ws[lg] && (!(c->rw[lg] = gsl_fft_real_wavetable_alloc(N)) ||
@@ -294,6 +302,25 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 	return ANVIL_OK;
 }
 
+/* The largest chunk worth making: a frozen segment's FFT correlation
+ * costs N log N for a chunk of C targets, N >= its span of S lags plus the
+ * chunk's q C; once q C is past a few times S, a larger chunk only adds
+ * log N per target (and the last chunk's unused end, up to half of it,
+ * where the march stops short of the window).  So q C is held to the
+ * room left in the power of two past HIST_SPAN times the widest segment's
+ * span (both in dt0). */
+static size_t hist_cmax(const struct ctx *c)
+{
+	size_t span = 0, N = 64;
+	for (size_t j = 0; j < c->nfz; j++)
+		if (c->fz[j].S > 1 && ((c->fz[j].S - 1) << c->fz[j].L) > span)
+			span = (c->fz[j].S - 1) << c->fz[j].L;
+	while (N < HIST_SPAN * span)
+		N <<= 1;
+	size_t cm = (N - span) >> c->lev;
+	return cm > HIST_CHUNK ? cm : HIST_CHUNK;
+}
+
 double impact_hist_one(const struct ctx *c, size_t i)
 {
 	double h = 0; /* one node: direct sums, no table touched */
@@ -310,8 +337,11 @@ int impact_hist(struct ctx *c, size_t i, double *val)
 		*val = impact_hist_one(c, i);
 		return isnan(*val) ? ANVIL_EINVAL : ANVIL_OK;
 	}
-	/* the next chunk, twice the last (a segment's first: HIST_CHUNK) */
-	size_t C = c->hn ? 2 * c->hn : HIST_CHUNK;
+	/* the next chunk, twice the last (a segment's first: HIST_CHUNK), at
+	 * most hist_cmax */
+	size_t C = c->hn ? 2 * c->hn : HIST_CHUNK, cm = hist_cmax(c);
+	if (C > cm)
+		C = cm;
 	if (C > c->segcap - i)
 		C = c->segcap - i;
 	if (C > c->hcap) {

@@ -92,7 +92,7 @@ struct ctx {
 	 * that adds sum_m Q_m dg_{n-m} (physical, ramp2 given) */
 	struct anvil_fastconv *fc;
 	struct end_tab *tab; /* the contact ends' ramp values, for the pass at hand */
-	const struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
+	struct anvil_fastconv_fft *fft; /* FFT tables of both passes */
 	double merge_gap, merge_time; /* merge_sep (opts): relative to alpha_max, s */
 	size_t max_contacts;          /* the budget (opts); 0: none */
 	double rest_tol;  /* the rest state (opts); 0: off */
@@ -118,7 +118,8 @@ struct ctx {
 	/* its deflection at the segment's nodes hlo .. hlo + hn - 1 (a chunk) */
 	double *hbuf;
 	size_t hlo, hn, hcap;
-	/* its FFT tables, by log2 of the size, made when first needed */
+	/* its FFT tables, by log2 of the size, made when first needed, kept
+	 * for both passes (impact_grow_free) */
 	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
 	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
 	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
@@ -177,8 +178,10 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L);
  * (impact_hist_one: NaN when out of the weights).  ANVIL_OK, ANVIL_ENOMEM. */
 int impact_hist(struct ctx *c, size_t i, double *val);
 double impact_hist_one(const struct ctx *c, size_t i);
-/* Free the frozen segments' weights. */
+/* Free the frozen segments' weights (a new pass). */
 void impact_grow_reset(struct ctx *c);
+/* impact_grow_reset and the frozen past's FFT tables (the impact's end). */
+void impact_grow_free(struct ctx *c);
 /* The frozen past's deflection at the current segment's node k plus d
  * (0 <= d <= its step), by direct sums over its hats (off the grid: the
  * contact end); v the current segment's view. */

@@ -342,7 +342,7 @@ void anvil_green_free(struct anvil_green *g)
  * quadrature bounds, summed in order n = 0, 1, ... (fixed: the same bits
  * whatever the threads). */
 static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
-			const double *err, const struct plate *pl)
+			const double *err, const struct plate *pl, struct anvil_plate_memo *memo)
 {
 	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
 	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
@@ -372,7 +372,8 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 			g->ramp[j] += plate_t(pl, t);
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
-	if (n1 < g->n && (st = anvil_plate_extend(g->hh, g->nu, g->dtau, n1, g->n, g->ramp, &ext_err)))
+	if (n1 < g->n && (st = anvil_plate_extend_memo(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
+							  &ext_err, memo)))
 		return st;
 	g->abserr = amp * qsum + amp * tail + ext_err;
 	for (size_t j = 0; j < g->n; j++)
@@ -399,17 +400,18 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
  * it), an error the caller measures as the band's own, by an inversion at
  * half the bandwidth, filtered on its own terms (solver.c). */
 static int band_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
-		       const double *err, const struct plate *pl, int filter)
+		       const double *err, const struct plate *pl,
+		       struct anvil_plate_memo *memo, int filter)
 {
 	g->filtered = filter != 0;
 	if (!filter)
-		return green_finish(g, dl, spec, err, pl);
+		return green_finish(g, dl, spec, err, pl, memo);
 	cplx *sf = malloc((dl->M + 1) * sizeof *sf);
 	if (!sf)
 		return ANVIL_ENOMEM;
 	for (size_t n = 0; n <= dl->M; n++)
 		sf[n] = spec[n] * anvil_durbin_filter(n, dl->M);
-	int st = green_finish(g, dl, sf, err, pl);
+	int st = green_finish(g, dl, sf, err, pl, memo);
 	free(sf);
 	return st;
 }
@@ -464,10 +466,14 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	 * error estimate is in err, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
 		st = ANVIL_OK;
+	/* the plate's K(t) table: the caller's memo, or one for g and its twin */
+	struct anvil_plate_memo *own = !gs->plate && tw && t1 > 0 ? anvil_plate_memo_alloc() : NULL;
+	struct anvil_plate_memo *memo = gs->plate ? gs->plate : own;
 	if (!st)
-		st = band_finish(g, &dl, spec, err, &pl, gs->filter);
+		st = band_finish(g, &dl, spec, err, &pl, memo, gs->filter);
 	if (!st && tw)
-		st = band_finish(tw, &dt, spec, err, &pl, gs->filter);
+		st = band_finish(tw, &dt, spec, err, &pl, memo, gs->filter);
+	anvil_plate_memo_free(own);
 	free(err);
 	free(spec);
 	return st;

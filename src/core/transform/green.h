@@ -39,6 +39,8 @@ enum anvil_green_mode {
 
 /* Numerical settings of one inversion; anvil_green_settings() gives the ones
  * an accuracy level uses. */
+struct anvil_plate_memo; /* plate.h */
+
 struct anvil_green_settings {
 	double c0T;     /* c0 times the half period T' */
 	double omega_max; /* highest frequency summed (dimensionless) */
@@ -50,6 +52,9 @@ struct anvil_green_settings {
 			   inversion (the twin's too) on its own terms: the
 			   physical contact's corrections (green.c says why);
 			   0: the plain truncated series (the paper's contact) */
+	struct anvil_plate_memo *plate; /* the plate's K(t) table kept from one
+			   response to the next (plate.h; borrowed, NULL: kept for a
+			   response and its twin only) */
 };
 
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);

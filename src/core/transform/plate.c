@@ -117,6 +117,46 @@ static int kspline_make(double beta, double hh, double t0, double t1, struct ksp
 	return st;
 }
 
+struct anvil_plate_memo {
+	int ok;
+	double beta, hh, t0, t1; /* kspline_make's arguments, compared exactly */
+	struct kspline ks;
+};
+
+struct anvil_plate_memo *anvil_plate_memo_alloc(void)
+{
+	return calloc(1, sizeof(struct anvil_plate_memo));
+}
+
+void anvil_plate_memo_free(struct anvil_plate_memo *m)
+{
+	if (m && m->ok)
+		kspline_free(&m->ks);
+	free(m);
+}
+
+/* The table into *ks: the memo's (when it is this one), or made (and then
+ * the memo's, or own: *own set, the caller frees it). */
+static int kspline_get(struct anvil_plate_memo *m, double beta, double hh, double t0, double t1,
+		       struct kspline *ks, int *own)
+{
+	*own = 0;
+	if (m && m->ok && m->beta == beta && m->hh == hh && m->t0 == t0 && m->t1 == t1) {
+		*ks = m->ks;
+		return ANVIL_OK;
+	}
+	int st = kspline_make(beta, hh, t0, t1, ks);
+	if (st || !m) {
+		*own = !st;
+		return st;
+	}
+	if (m->ok)
+		kspline_free(&m->ks);
+	*m = (struct anvil_plate_memo){ .ok = 1, .beta = beta, .hh = hh, .t0 = t0, .t1 = t1,
+					.ks = *ks };
+	return ANVIL_OK;
+}
+
 /* ---- the fit ---- */
 
 struct model {
@@ -203,13 +243,20 @@ static void blend(const struct model *m, const double c[3], double dtau, size_t 
 int anvil_plate_extend(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
 		       double *ext_err)
 {
+	return anvil_plate_extend_memo(hh, nu, dtau, n1, n, ramp, ext_err, NULL);
+}
+
+int anvil_plate_extend_memo(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
+			    double *ext_err, struct anvil_plate_memo *memo)
+{
 	struct model m = { .beta = hh / sqrt(6.0 * (1.0 - nu)), .hh = hh,
 			   .shs = 3.0 / (16.0 * (1.0 - anvil_kappa2(nu))),
 			   .t1 = (double)(n1 - 2) * dtau };
 	double tend = (double)(n - 1) * dtau, c[3], cv[3], v = 0;
 	/* nodes a little beyond both ends: log t at the last sample must not
 	 * round past the last node */
-	int st = kspline_make(m.beta, hh, m.t1 / 17.0, 1.01 * tend, &m.ks);
+	int own;
+	int st = kspline_get(memo, m.beta, hh, m.t1 / 17.0, 1.01 * tend, &m.ks, &own);
 	if (st)
 		return st;
 	/* the validation: fitted on [T1/8, T1/2], checked on [T1/2, T1] */
@@ -223,6 +270,7 @@ int anvil_plate_extend(double hh, double nu, double dtau, size_t n1, size_t n, d
 	if (!st)
 		blend(&m, c, dtau, n1, ramp);
 	*ext_err = v * tend / m.t1;
-	kspline_free(&m.ks);
+	if (own)
+		kspline_free(&m.ks);
 	return st;
 }

@@ -47,4 +47,18 @@ double anvil_plate_t1(double hh, double tau_end);
 int anvil_plate_extend(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
 		       double *ext_err);
 
+/* The last K(t) table that anvil_plate_extend_memo made (its quadratures,
+ * a third of a long window's response), for the next extension of the
+ * same plate and span: a layer correction, its twin and the patch's
+ * correction of one window share it.  A pure function's memo: the same
+ * bits whether it held the table or not.  Owned by one thread at a time
+ * (the solver's, beside its cache).  NULL when out of memory. */
+struct anvil_plate_memo;
+struct anvil_plate_memo *anvil_plate_memo_alloc(void);
+void anvil_plate_memo_free(struct anvil_plate_memo *m); /* NULL is a no-op */
+
+/* anvil_plate_extend through memo (NULL: none). */
+int anvil_plate_extend_memo(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
+			    double *ext_err, struct anvil_plate_memo *memo);
+
 #endif
