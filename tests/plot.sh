@@ -118,8 +118,22 @@ check "a short contact's time axis in us" \
 assert "t in us" grep -q "^set xlabel 't (µs)'" "$tmp/out"
 check "a drop weight's time axis in ms (0.54 s contact: not 540000 us)" \
 	"$ANVIL" plot force -s solver.models=hertz,zener -s layer.thickness=0.25r0 -s impactor.mass=2kg --script -
-assert "t in ms" grep -q "^set xlabel 't (ms)'" "$tmp/out"
+assert "t in ms, on a log axis (Hertz's contact is 1e-3 of Zener's)" grep -q "^set xlabel 't (ms), log scale'" "$tmp/out"
 assert "the curve's last time in ms" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $1 > m { m = $1 } END { exit !(m > 500 && m < 600) }' "$tmp/out"
+assert "the log axis from a hundredth of the shortest contact" awk '/^set logscale x/ { l = 1 } /^set xrange \[/ && l { split($3, a, /[\[\]:]/); lo = a[2] } END { exit !(l && lo > 0 && lo < 0.01) }' "$tmp/out"
+check "a short contact's axis stays linear" \
+	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
+assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"
+assert "the paper's cases with the paper's contact, said" grep -q "with the paper''s contact (effects.contact)" "$tmp/out"
+printf '[layer]\nthickness = 2 mm\n[solver]\naccuracy = draft\nmodels = layer\n' > "$tmp/user.scene"
+check "a user's scene: its histories with its run's contact" \
+	"$ANVIL" plot force "$tmp/user.scene" --script -
+assert "the physical contact, said" grep -q "with the physical contact (effects.contact)" "$tmp/out"
+check "...the same scene's table row" "$ANVIL" run "$tmp/user.scene" -f tsv
+pmax=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "Pmax_kN") c = i } $1 == "layer" { print $c }' "$tmp/out")
+"$ANVIL" plot force "$tmp/user.scene" --script - > "$tmp/userplot" 2>/dev/null
+assert "...whose peak force ($pmax kN) the chart reaches" awk -v p="$pmax" \
+	'/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $2 > m { m = $2 } END { exit !(p > 0 && m > 0.97 * p && m <= 1.001 * p) }' "$tmp/userplot"
 check "the examples' title names both materials: not said twice" \
 	"$ANVIL" plot force -s solver.models=hertz --script -
 assert "subtitle: title, then the numbers" grep -q "(Pyr'*yev et al. 2024): m = 12.2 g, r₀ = 4 mm" "$tmp/out"

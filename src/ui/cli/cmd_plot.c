@@ -773,10 +773,17 @@ static int plot_scene(struct plot_args *a)
 	if (st)
 		return cli_exit_code(st);
 	/* The paper's figures with the paper's values beside them: its contact
-	 * model, unless the scene names one (models draws both). */
+	 * model, unless the scene names one (models draws both).  A user's
+	 * SCENE drawn as histories is not the paper's figure: the contact of
+	 * its 'anvil run' rows (auto: physical), so that the chart shows what
+	 * the table says (a ball on a thin plate peaked at 0.53 kN on the
+	 * chart, the paper's contact, and 0.31 kN in the table). */
+	int history = a->kind == PLOT_FORCE || a->kind == PLOT_VELOCITY ||
+		      a->kind == PLOT_DEFLECTION || a->kind == PLOT_HISTORY;
 	if (sc.effects.contact == ANVIL_CONTACT_AUTO && a->kind != PLOT_MODELS &&
 	    a->kind != PLOT_RESTITUTION_VELOCITY) /* not the paper's: auto, physical */
-		sc.effects.contact = ANVIL_CONTACT_PAPER;
+		sc.effects.contact = history && a->scene ? ANVIL_CONTACT_PHYSICAL
+							 : ANVIL_CONTACT_PAPER;
 	/* Fail on a missing gnuplot before minutes of layer runs. */
 	if (a->out && plot_gnuplot_check(&err)) {
 		cli_error("%s", err.msg);
@@ -793,6 +800,13 @@ static int plot_scene(struct plot_args *a)
 					      a->kind == PLOT_RESTITUTION_LAMBDA));
 		if (!a->materials) /* with them, plot_sweep.c wrote it */
 			plot_chart_subtitle(&c, &sc, vary_h, vary_v);
+		enum anvil_contact cm = sc.effects.contact;
+		unsigned waves = 1u << ANVIL_MODEL_LAYER | 1u << ANVIL_MODEL_HALFSPACE;
+		if (history && !c.footnote[0] && (anvil_scene_models(&sc) & waves) &&
+		    (cm == ANVIL_CONTACT_PAPER || cm == ANVIL_CONTACT_PHYSICAL))
+			snprintf(c.footnote, sizeof c.footnote,
+				 "layer and half-space with the %s contact (effects.contact)",
+				 cm == ANVIL_CONTACT_PAPER ? "paper's" : "physical");
 		code = render(&c, a);
 	} else if (st == ANVIL_EPARSE) {
 		code = EXIT_USAGE;

@@ -439,7 +439,7 @@ static void history_keys(struct plot_chart *c, const struct plot_run *runs, int 
 		if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(r->h_r0))
 			snprintf(label, sizeof label, "half-space, h = ∞");
 		else
-			snprintf(label, sizeof label, "h = %g r_0", r->h_r0);
+			snprintf(label, sizeof label, "h = %.3g r_0", r->h_r0);
 		plot_chart_key(c, label, r->model == ANVIL_MODEL_HALFSPACE ? PLOT_BAND : PLOT_LINE,
 			       run_colour(r), 0);
 	}
@@ -454,19 +454,38 @@ static void history_keys(struct plot_chart *c, const struct plot_run *runs, int 
 
 /* The time axis' unit for the longest history of runs: us up to 20 ms,
  * ms up to 20 s, else s (a 0.5 s drop-weight contact read in us is
- * "500000").  Returns the scale from s; sets c->tlabel. */
+ * "500000").  Returns the scale from s; sets c->tlabel.  When the longest
+ * history outlasts the shortest LOG_TIME_RATIO times (a 7 ms contact on a
+ * thin plate beside the half-space's 0.25 ms), a linear axis squeezes the
+ * short ones into its first pixels: the axis is logarithmic then, from a
+ * hundredth of the shortest (P ~ t^(3/2) is at 1e-3 of its peak there). */
+#define LOG_TIME_RATIO 20.0
 static double history_time_unit(struct plot_chart *c, const struct plot_run *runs, int n)
 {
-	double tmax = 0;
+	double tmax = 0, tmin = INFINITY, ts;
 	for (int i = 0; i < n; i++)
-		if (ok_run(&runs[i]) && runs[i].r->hist.n > 0)
-			tmax = fmax(tmax, runs[i].r->hist.t[runs[i].r->hist.n - 1]);
+		if (ok_run(&runs[i]) && runs[i].r->hist.n > 1) {
+			double end = runs[i].r->hist.t[runs[i].r->hist.n - 1];
+			tmax = fmax(tmax, end);
+			if (end > 0)
+				tmin = fmin(tmin, end);
+		}
+	int lg = tmin < INFINITY && tmax > LOG_TIME_RATIO * tmin;
 	if (tmax <= 20e-3) {
-		c->tlabel = "t (µs)";
-		return 1e6;
+		c->tlabel = lg ? "t (µs), log scale" : "t (µs)";
+		ts = 1e6;
+	} else if (tmax <= 20.0) {
+		c->tlabel = lg ? "t (ms), log scale" : "t (ms)";
+		ts = 1e3;
+	} else {
+		c->tlabel = lg ? "t (s), log scale" : "t (s)";
+		ts = 1.0;
 	}
-	c->tlabel = tmax <= 20.0 ? "t (ms)" : "t (s)";
-	return tmax <= 20.0 ? 1e3 : 1.0;
+	if (lg)
+		snprintf(c->setup, sizeof c->setup,
+			 "set logscale x\nset xrange [%.6g:%.6g]\nset format x '%%g'\n",
+			 0.01 * tmin * ts, 1.3 * tmax * ts);
+	return ts;
 }
 
 /* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
@@ -567,7 +586,7 @@ int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
 		if (!isfinite(runs[i].h_r0) || runs[i].model == ANVIL_MODEL_HALFSPACE)
 			snprintf(label, sizeof label, "half-space, h = ∞");
 		else
-			snprintf(label, sizeof label, "h = %g r_0", runs[i].h_r0);
+			snprintf(label, sizeof label, "h = %.3g r_0", runs[i].h_r0);
 		plot_chart_key(c, label, PLOT_LINE, run_colour(&runs[i]), 0);
 	}
 	(void)any_hs;
@@ -780,7 +799,7 @@ int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, in
 	}
 	for (int i = 0; i < nh; i++) {
 		char label[PLOT_LABEL_MAX];
-		snprintf(label, sizeof label, "h = %g r_0", h[i]);
+		snprintf(label, sizeof label, "h = %.3g r_0", h[i]);
 		plot_chart_key(c, label, PLOT_LINE, plot_h_colour(h[i]), 0);
 	}
 	for (int i = 0; i < nh && !st; i++) {

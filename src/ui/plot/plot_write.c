@@ -281,8 +281,8 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 		fprintf(f, "# panel %d: %s\nset tmargin at screen %g\nset bmargin at screen %g\n",
 			p + 1, plot_kind_name(panels[p]), t, t - h);
 		/* The titles are drawn with the first panel only. */
-		fprintf(f, "%sset ylabel '%s'\n%s", p ? "unset label\n" : "", ylabels[p],
-			plot_kind_info(panels[p])->setup);
+		fprintf(f, "%sset ylabel '%s'\n%s%s", p ? "unset label\n" : "", ylabels[p],
+			plot_kind_info(panels[p])->setup, c->setup);
 		if (p < 2)
 			fputs("set format x ''\nunset xlabel\nset key off\n", f);
 		else
