@@ -275,6 +275,55 @@ static void test_history(void)
 	anvil_result_free(&r);
 }
 
+/* Long contacts keep their peak (result.h): a history evenly spaced over
+ * a contact 100 times its rise had its first sample past the peak.  The
+ * spacing's own properties, then a thin plate's Zener history. */
+static void test_history_long(void)
+{
+	double ts = 1e-2, tpk = 2e-5, beta = anvil_history_warp(tpk, ts);
+	const size_t n = 401, k = 7, nk = k * (n - 1) + 1;
+	ok(anvil_history_warp(tpk, 19.9 * tpk) == 0 && anvil_history_warp(0, ts) == 0 &&
+		   anvil_history_warp(tpk, INFINITY) == 0,
+	   "even spacing up to t_s = 20 t_pk (and without a peak or an end)");
+	ok(anvil_history_time(7, n, 3e-5, 0) == 3e-5 * 7 / (double)(n - 1),
+	   "  to the bit as the even histories were");
+	double first = anvil_history_time(1, n, ts, beta), mono = 1, dec = 0;
+	for (size_t i = 1; i < n; i++) {
+		mono = fmin(mono, anvil_history_time(i, n, ts, beta) - anvil_history_time(i - 1, n, ts, beta));
+		dec = fmax(dec, fabs(anvil_history_time(i * k, nk, ts, beta) - anvil_history_time(i, n, ts, beta)));
+	}
+	/* sinh's curvature over the first step: beta^2 / (6 (n - 1)^2) = 5e-5 */
+	is_rel(first, ANVIL_HISTORY_RISE * tpk / (double)(n - 1), 1e-4,
+	       "t_s = 500 t_pk: beta %.3g, the first step 8 t_pk / (n - 1)", beta);
+	ok(mono > 0 && anvil_history_time(n - 1, n, ts, beta) == ts, "  rising, ending at t_s exactly");
+	ok(dec <= 4 * DBL_EPSILON * ts, "  every %zu-th of %zu samples is the %zu-sample grid (%.1g s apart)",
+	   k, nk, n, dec);
+	struct anvil_history hh = { .n = 3, .t = (double[]){ 0, 1, 3 } };
+	double y[] = { 0, 2, 6 };
+	ok(anvil_history_at(&hh, y, 2.0) == 4.0 && anvil_history_at(&hh, y, 3.0) == 6.0 &&
+		   anvil_history_at(&hh, y, 3.5) == 0.0 && anvil_history_at(&hh, y, -1) == 0.0,
+	   "  linear interpolation between uneven samples, 0 outside");
+
+	struct anvil_params p;
+	struct anvil_result r;
+	struct anvil_err e;
+	paper_params(&p, 0.05, 1.0);
+	anvil_result_init(&r, ANVIL_MODEL_ZENER);
+	int st = anvil_zener_run(&p, n, &r, &e);
+	if (!ok(st == ANVIL_OK && r.ts.val > 20 * r.tmax.val,
+		"h = 0.05 r0, 1 m/s: a long contact (t_s = %.0f t_max)", r.ts.val / r.tmax.val))
+		return;
+	size_t imax = 0;
+	for (size_t i = 0; i < n; i++)
+		if (r.hist.P[i] > r.hist.P[imax])
+			imax = i;
+	ok(r.hist.P[imax] > 0.999 * r.Pmax.val && r.hist.P[imax] <= r.Pmax.val * (1 + 1e-12) &&
+		   imax > 20,
+	   "  its P history peaks within 1e-3 of P_max (%.5g of it, sample %zu; even: %zu samples before t_max)",
+	   r.hist.P[imax] / r.Pmax.val, imax, (size_t)(r.tmax.val / (r.ts.val / (double)(n - 1))));
+	anvil_result_free(&r);
+}
+
 static void test_errors(void)
 {
 	struct anvil_zener_sol s;
@@ -308,6 +357,7 @@ int main(void)
 	test_long();
 	test_convergence();
 	test_history();
+	test_history_long();
 	test_errors();
 	plan(tap_n);
 	return done_testing();

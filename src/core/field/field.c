@@ -104,7 +104,22 @@ struct anvil_field *anvil_field_from_result(const struct anvil_params *lp,
 	if (r->model == ANVIL_MODEL_HALFSPACE)
 		p.h = INFINITY;
 	double rel = r->Pmax.val > 0 && isfinite(r->Pmax.err) ? r->Pmax.err / r->Pmax.val : 0.0;
-	return anvil_field_alloc(&p, h->P, h->n, h->t[1] - h->t[0], rel, acc, err);
+	double dt = h->t[1] - h->t[0], ts = h->t[h->n - 1];
+	if (fabs(ts - (double)(h->n - 1) * dt) <= 1e-9 * ts)
+		return anvil_field_alloc(&p, h->P, h->n, dt, rel, acc, err);
+	/* A long contact's history is denser near its peak (result.h); the
+	 * field's convolution takes an even load, as many samples over t_s. */
+	double *even = malloc(h->n * sizeof *even);
+	if (!even) {
+		anvil_err_set(err, ANVIL_ENOMEM, "field: out of memory");
+		return NULL;
+	}
+	dt = ts / (double)(h->n - 1);
+	for (size_t i = 0; i < h->n; i++)
+		even[i] = anvil_history_at(h, h->P, i + 1 < h->n ? (double)i * dt : ts);
+	struct anvil_field *f = anvil_field_alloc(&p, even, h->n, dt, rel, acc, err);
+	free(even);
+	return f;
 }
 
 void anvil_field_free(struct anvil_field *f)

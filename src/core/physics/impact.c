@@ -662,14 +662,27 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 	return st;
 }
 
-/* Linear resampling of a pass onto nhist points over [0, t_s]. */
+/* The time of the pass's peak force (its nodes'), for the history's
+ * spacing (result.h). */
+static double pass_peak_time(const struct pass *s)
+{
+	size_t kp = 0;
+	for (size_t k = 1; k < s->n; k++)
+		if (s->P[k] > s->P[kp])
+			kp = k;
+	return s->nseg == 1 ? (double)kp * s->dt : s->t[kp];
+}
+
+/* Linear resampling of a pass onto nhist points over [0, t_s], spaced as
+ * result.h says. */
 static int resample(const struct pass *s, const struct anvil_params *p, size_t nhist,
 		    struct anvil_history *h)
 {
 	int st = anvil_history_alloc(h, nhist);
 	size_t kprev = 0;
+	double beta = anvil_history_warp(pass_peak_time(s), s->ts);
 	for (size_t i = 0; !st && i < nhist; i++) {
-		double t = s->ts * (double)i / (double)(nhist - 1), f;
+		double t = anvil_history_time(i, nhist, s->ts, beta), f;
 		size_t k;
 		if (s->nseg == 1) {
 			double x = t / s->dt;

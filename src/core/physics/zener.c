@@ -313,19 +313,19 @@ double anvil_zener_rf_fit(double lambda_star)
 	return exp(-ZENER_RF_SLOPE * lambda_star);
 }
 
-/* Histories at n equally spaced tau in [0, tau_s], integrating from one
- * sample to the next at the workspace's tolerance. */
+/* Histories at n tau in [0, tau_s] (evenly spaced unless the contact
+ * outlasts its peak at tau_max many times: result.h), integrating from
+ * one sample to the next at the workspace's tolerance. */
 static int zener_history(struct zener_ws *w, const struct anvil_params *p,
-			 double tau_s, struct anvil_history *hist)
+			 double tau_s, double tau_max, struct anvil_history *hist)
 {
+	double beta = anvil_history_warp(tau_max, tau_s);
 	double L = p->T * p->V0, t = 0.0, y[Y_DIM] = { 0.0, 1.0, 1.0, 0.0 };
 	size_t n = hist->n;
 	int st = gsl_odeiv2_driver_reset_hstart(w->probe, ZENER_H0);
 
 	for (size_t i = 0; !st && i < n; i++) {
-		double ti = n > 1 ? tau_s * (double)i / (double)(n - 1) : 0.0;
-		if (i + 1 == n && n > 1)
-			ti = tau_s;
+		double ti = anvil_history_time(i, n, tau_s, beta);
 		if (ti > t)
 			st = gsl_odeiv2_driver_apply(w->probe, &t, ti, y);
 		double a = fmax(y[Y_A], 0.0);
@@ -399,7 +399,7 @@ int anvil_zener_run(const struct anvil_params *p, size_t nhist,
 			st = anvil_err_set(err, st, "zener: out of memory for %zu samples", nhist);
 			goto out;
 		}
-		st = zener_history(&w, p, sol.tau_s, &r->hist);
+		st = zener_history(&w, p, sol.tau_s, sol.tau_max, &r->hist);
 		if (st)
 			st = anvil_err_set(err, ANVIL_ENUM, "zener: history failed: %s",
 					   gsl_strerror(st));

@@ -129,14 +129,10 @@ static void fctx_free(struct fctx *c)
 	anvil_result_free(&c->r);
 }
 
-/* P at time t from the impact's (uniform) history, N. */
+/* P at time t from the impact's history, N. */
 static double load_at(const struct anvil_history *h, double t)
 {
-	double x = t / (h->t[1] - h->t[0]);
-	if (!(x >= 0) || x >= (double)(h->n - 1))
-		return 0.0;
-	size_t i = (size_t)x;
-	return h->P[i] + (x - (double)i) * (h->P[i + 1] - h->P[i]);
+	return anvil_history_at(h, h->P, t);
 }
 
 static const char *fq_unit(int q)
