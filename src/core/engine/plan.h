@@ -144,11 +144,17 @@ double anvil_plan_patch_below(double patch);
  * run` of its scene within the stated error estimates (its own are
  * computed with the shared responses). */
 struct anvil_plan_share {
-	int used;          /* scenes added */
+	int used;          /* rows added */
 	double hh, nu;     /* the group: h/r0, layer nu, accuracy */
 	enum anvil_accuracy acc;
-	int omega_idx;     /* the widest bandwidth's grid index */
-	int tau_idx;       /* the longest first window's grid index */
+	/* the envelope of each contact's rows ([0] the paper's, [1] the
+	 * physical one's): they share no response (a patch-r0 ramp, point and
+	 * patch corrections), and the physical band is sized by the force's
+	 * rise too (plan.c, phys_band), so one envelope would widen a paper
+	 * row of a one-scene sweep past its `anvil run` */
+	int n[2];          /* rows in each */
+	int omega_idx[2];  /* the widest bandwidth's grid index */
+	int tau_idx[2];    /* the longest first window's grid index */
 	double patch;      /* the largest physical patch (anvil_plan_patch) */
 };
 /* Widen sh to cover plan pl's layer row (its own job, as planned alone);
