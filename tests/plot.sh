@@ -121,6 +121,9 @@ check "a drop weight's time axis in ms (0.54 s contact: not 540000 us)" \
 assert "t in ms, on a log axis (Hertz's contact is 1e-3 of Zener's)" grep -q "^set xlabel 't (ms), log scale'" "$tmp/out"
 assert "the curve's last time in ms" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $1 > m { m = $1 } END { exit !(m > 500 && m < 600) }' "$tmp/out"
 assert "the log axis from a hundredth of the shortest contact" awk '/^set logscale x/ { l = 1 } /^set xrange \[/ && l { split($3, a, /[\[\]:]/); lo = a[2] } END { exit !(l && lo > 0 && lo < 0.01) }' "$tmp/out"
+check "one long contact whose force peaks early: a log axis too" \
+	"$ANVIL" plot force -s solver.models=zener -s layer.thickness=0.1r0 --script -
+assert "...log scale (Zener's plate: P peaks at 4 us of 16 ms)" grep -q "^set xlabel 't (µs), log scale'" "$tmp/out"
 check "a short contact's axis stays linear" \
 	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
 assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"
