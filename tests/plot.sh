@@ -124,6 +124,7 @@ assert "the log axis from a hundredth of the shortest contact" awk '/^set logsca
 check "one long contact whose force peaks early: a log axis too" \
 	"$ANVIL" plot force -s solver.models=zener -s layer.thickness=0.1r0 --script -
 assert "...log scale (Zener's plate: P peaks at 4 us of 16 ms)" grep -q "^set xlabel 't (µs), log scale'" "$tmp/out"
+assert "...its force in N (it peaks at 0.16 kN)" grep -q "^set ylabel 'contact force P (N)'" "$tmp/out"
 check "a short contact's axis stays linear" \
 	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
 assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"

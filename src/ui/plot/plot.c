@@ -398,11 +398,11 @@ static int ok_run(const struct plot_run *run)
 	return run->r != NULL && (unsigned)run->model < ANVIL_MODEL_COUNT;
 }
 
-static const double *history_y(const struct anvil_history *h, int panel, double *ys)
+static const double *history_y(const struct anvil_history *h, int panel, int in_n, double *ys)
 {
 	switch (panel) {
 	case 0:
-		*ys = 1e-3; /* N -> kN */
+		*ys = in_n ? 1.0 : 1e-3; /* N, or N -> kN */
 		return h->P;
 	case 1:
 		*ys = 1.0;
@@ -496,11 +496,24 @@ static double history_time_unit(struct plot_chart *c, const struct plot_run *run
 	return ts;
 }
 
+/* P in N when every history peaks below 1 kN: a thin plate's 0.31 kN read
+ * "0.25" on the axis, whose four characters pushed the label off the
+ * image's edge; in N it reads "250". */
+static int force_unit_n(const struct plot_run *runs, int n)
+{
+	double top = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]))
+			for (size_t j = 0; j < runs[i].r->hist.n; j++)
+				top = fmax(top, runs[i].r->hist.P[j]);
+	return top > 0 && top < 1e3;
+}
+
 /* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
 static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel, double ts)
 {
 	double ys;
-	const double *y = history_y(&run->r->hist, panel, &ys);
+	const double *y = history_y(&run->r->hist, panel, c->force_in_n, &ys);
 	int st = plot_chart_add(c, "", model_mark(run->model), run_colour(run),
 				run->r->hist.t, y, run->r->hist.n, ts, ys, 0);
 	if (!st)
@@ -526,6 +539,7 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 		 kind == PLOT_HISTORY ? "Contact force, impactor velocity and deflection"
 		 : what[p0], n > 0 ? runs[0].V0 : 0.0);
 	double ts = history_time_unit(c, runs, n);
+	c->force_in_n = force_unit_n(runs, n);
 	/* The half-space first: its band goes under the layers. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < n && !st; i++) {

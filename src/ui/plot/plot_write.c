@@ -265,7 +265,7 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 	fputs("set xlabel ", f);
 	plot_put_quoted(f, c->tlabel ? c->tlabel : k->xlabel);
 	fputs("\nset ylabel ", f);
-	plot_put_quoted(f, k->ylabel);
+	plot_put_quoted(f, c->kind == PLOT_FORCE && c->force_in_n ? "contact force P (N)" : k->ylabel);
 	fputc('\n', f);
 }
 
@@ -273,7 +273,7 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 static void write_history(FILE *f, const struct plot_chart *c, double top, double bottom)
 {
 	static const enum plot_kind panels[3] = {PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION};
-	static const char *const ylabels[3] = {"P (kN)", "v (m/s)", "w (µm)"};
+	const char *const ylabels[3] = {c->force_in_n ? "P (N)" : "P (kN)", "v (m/s)", "w (µm)"};
 	const double gap = 0.02, h = (top - bottom - 2 * gap) / 3;
 	fputs("set multiplot\n", f);
 	for (int p = 0; p < 3; p++) {
