@@ -125,11 +125,11 @@ static double plate_nodes(double hh, double tau_end)
  * evaluated once per node for all of them, so the set's evaluations are
  * those of its widest (the others' own nodes were 0.01-0.03 % of them on
  * bench section 13), and each other member's integrand calls cost a
- * memo lookup and its patch's transform, PHYS_COST_HIT each (0.025 us:
+ * memo lookup and its patch's transform, PHYS_COST_HIT each (0.013 us:
  * h = 10 r0, 10 kg, 0.1 m/s, all kernel work, 1.65 s alone, 0.71 s as a
- * set, 3.75 M evaluations and 8.9 M lookups). */
+ * set (0.63 s), 3.75 M evaluations and 8.9 M values from the memo). */
 #define PHYS_EVAL_F 1.3
-#define PHYS_COST_HIT 2.5e-8
+#define PHYS_COST_HIT 1.3e-8
 /* The four corrections' predicted evaluations and (seconds, may be NULL)
  * the time to make them, those in the cache left out. */
 static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,

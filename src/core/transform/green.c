@@ -68,38 +68,59 @@ struct quad {
 	cplx s;
 	size_t evals;
 	struct kmemo *memo; /* the layer correction's kernel at this s (a set's), or NULL */
+	cplx *seg;          /* the memo's values for the piece being integrated, or NULL */
+	int seg_hit, seg_at; /* they are known (else being filled); the next node's */
 };
 
 /* The layer correction's kernel W(k, s) does not depend on the load's
  * patch: the responses of a set (anvil_green_alloc_set) share it.  At one
  * s their adaptive k-integrals start from the same pieces and bisect them
- * at the same midpoints, so most of their Gauss-Kronrod nodes coincide
- * (3.7 sets of nodes of which 1.1 distinct on h = 0.05 r0): a hash table
- * from the node k (its bits) to W, emptied for the next s by a new
- * generation.  A value from it is the one the kernel would give: the
+ * at the same midpoints, so most of their pieces coincide (3.4 pieces of
+ * which 1.0 distinct on h = 0.05 r0): a hash table from a piece [a, b]
+ * (its bits) to W at its 21 Gauss-Kronrod nodes, in the order the rule
+ * asks for them (gk21.c: always the same), emptied for the next s by a
+ * new generation.  A value from it is the one the kernel would give: the
  * responses' bits do not depend on which others were computed with them.
  * Hand-written: GSL has no hash table. */
+#define GK_NODES 21
+
 struct kslot {
-	double k;
+	double a, b;
 	unsigned gen;
-	cplx w;
+	size_t at; /* its values: pool[at .. at + GK_NODES) */
 };
 
 struct kmemo {
 	struct kslot *s;
-	size_t cap, n; /* cap a power of two; n entries of this generation */
+	size_t cap, n; /* cap a power of two; n pieces of this generation */
 	unsigned gen;
+	cplx *pool;
 };
 
-#define KMEMO_CAP0 ((size_t)1 << 12)
-#define KMEMO_CAP_MAX ((size_t)1 << 20)
+#define KMEMO_CAP0 ((size_t)1 << 10)
+#define KMEMO_CAP_MAX ((size_t)1 << 16)
 
-static size_t kmemo_slot(const struct kmemo *m, double k)
+static int kmemo_init(struct kmemo *m)
 {
-	uint64_t b;
-	memcpy(&b, &k, sizeof b);
-	size_t i = (size_t)((b * 0x9E3779B97F4A7C15ull) >> 32) & (m->cap - 1);
-	while (m->s[i].gen == m->gen && m->s[i].k != k)
+	*m = (struct kmemo){ calloc(KMEMO_CAP0, sizeof *m->s), KMEMO_CAP0, 0, 1,
+			     malloc(KMEMO_CAP0 / 2 * GK_NODES * sizeof *m->pool) };
+	return m->s && m->pool;
+}
+
+static void kmemo_free(struct kmemo *m)
+{
+	free(m->s);
+	free(m->pool);
+}
+
+static size_t kmemo_slot(const struct kmemo *m, double a, double b)
+{
+	uint64_t x, y;
+	memcpy(&x, &a, sizeof x);
+	memcpy(&y, &b, sizeof y);
+	size_t i = (size_t)(((x ^ (y * 0xC2B2AE3D27D4EB4Full)) * 0x9E3779B97F4A7C15ull) >> 32) &
+		   (m->cap - 1);
+	while (m->s[i].gen == m->gen && !(m->s[i].a == a && m->s[i].b == b))
 		i = (i + 1) & (m->cap - 1);
 	return i;
 }
@@ -110,41 +131,49 @@ static void kmemo_next(struct kmemo *m)
 	m->n = 0;
 }
 
-/* Twice the slots, this generation's entries kept; none kept (the table
- * left as it is) when memory is short. */
+/* Twice the slots and the pool, this generation's pieces kept; nothing
+ * changed when memory is short. */
 static void kmemo_grow(struct kmemo *m)
 {
-	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, 1 };
-	if (!b.s)
+	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, m->gen,
+			   realloc(m->pool, m->cap * GK_NODES * sizeof *m->pool) };
+	if (b.pool)
+		m->pool = b.pool;
+	if (!b.s || !b.pool) {
+		free(b.s);
 		return;
+	}
 	for (size_t i = 0; i < m->cap; i++)
 		if (m->s[i].gen == m->gen) {
-			struct kslot x = m->s[i];
-			x.gen = 1;
-			b.s[kmemo_slot(&b, x.k)] = x;
+			b.s[kmemo_slot(&b, m->s[i].a, m->s[i].b)] = m->s[i];
 			b.n++;
 		}
 	free(m->s);
 	*m = b;
 }
 
-static int kmemo_get(const struct kmemo *m, double k, cplx *w)
+/* The values of piece [a, b] into q->seg: known (seg_hit), or a place to
+ * fill; NULL when the table is full (at most half its slots used: the
+ * probes stay short). */
+static void kmemo_piece(struct kmemo *m, double a, double b, struct quad *q)
 {
-	const struct kslot *x = &m->s[kmemo_slot(m, k)];
-	if (x->gen != m->gen)
-		return 0;
-	*w = x->w;
-	return 1;
-}
-
-/* Keep W(k) (at most half the slots filled: the probes stay short). */
-static void kmemo_put(struct kmemo *m, double k, cplx w)
-{
-	if (2 * (m->n + 1) > m->cap && m->cap < KMEMO_CAP_MAX)
+	size_t i = kmemo_slot(m, a, b);
+	q->seg_at = 0;
+	q->seg = NULL;
+	if (m->s[i].gen == m->gen) {
+		q->seg = m->pool + m->s[i].at;
+		q->seg_hit = 1;
+		return;
+	}
+	if (2 * (m->n + 1) > m->cap && m->cap < KMEMO_CAP_MAX) {
 		kmemo_grow(m);
+		i = kmemo_slot(m, a, b);
+	}
 	if (2 * (m->n + 1) > m->cap)
 		return;
-	m->s[kmemo_slot(m, k)] = (struct kslot){ k, m->gen, w };
+	m->s[i] = (struct kslot){ a, b, m->gen, m->n * GK_NODES };
+	q->seg = m->pool + m->s[i].at;
+	q->seg_hit = 0;
 	m->n++;
 }
 
@@ -159,12 +188,14 @@ static cplx integrand(double k, void *vq)
 		       anvil_kernel_zhat(k);
 	}
 	cplx w;
-	if (!q->memo || !kmemo_get(q->memo, k, &w)) {
+	if (q->seg && q->seg_hit) {
+		w = q->seg[q->seg_at++];
+	} else {
 		q->evals++;
 		anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
 		w = anvil_layer_bc_w_correction(&bc);
-		if (q->memo)
-			kmemo_put(q->memo, k, w);
+		if (q->seg)
+			q->seg[q->seg_at++] = w;
 	}
 	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
 	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
@@ -220,6 +251,8 @@ static struct seg heap_pop(struct heap *h)
 static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
 {
 	struct seg x = { .a = a, .b = b };
+	if (q->memo)
+		kmemo_piece(q->memo, a, b, q);
 	anvil_gk21_complex(integrand, q, a, b, &x.val, &x.err);
 	*sum += x.val;
 	*err += x.err;
@@ -376,10 +409,11 @@ static int sample_spectra(const struct quad *q0, const struct spectrum *sp, size
 	{
 		struct quad q = *q0;
 		struct heap *h = malloc(sizeof *h);
-		struct kmemo km = { nsp > 1 ? calloc(KMEMO_CAP0, sizeof *km.s) : NULL, KMEMO_CAP0, 0, 0 };
+		struct kmemo km = { 0 };
 		size_t nev[SPECTRA_MAX] = { 0 };
-		int mine = h && (nsp == 1 || km.s) ? ANVIL_OK : ANVIL_ENOMEM;
-		q.memo = km.s ? &km : NULL;
+		int mine = h && (nsp == 1 || kmemo_init(&km)) ? ANVIL_OK : ANVIL_ENOMEM;
+		q.memo = nsp > 1 ? &km : NULL;
+		q.seg = NULL;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
@@ -424,7 +458,7 @@ static int sample_spectra(const struct quad *q0, const struct spectrum *sp, size
 				stop = 1;
 			}
 		}
-		free(km.s);
+		kmemo_free(&km);
 		free(h);
 #ifdef _OPENMP
 #pragma omp critical(anvil_green_status)
