@@ -534,6 +534,59 @@ static void test_plate_memo(void)
 	anvil_plate_memo_free(m);
 }
 
+/* A set of corrections (anvil_green_alloc_set) has the bits each one
+ * has alone, whatever the others in the set and their order, and costs
+ * less: the physical contact's four (point and patch at the band, the
+ * patch below, the point at half the band), on a thin plate with the
+ * plate's continuation (window 8 T1) and a thick layer without it. */
+static void test_set(void)
+{
+	static const double hhs[2] = { 0.25, 3.0 }, taus[2] = { 8.0 * 64.0, 60.0 };
+	for (int c = 0; c < 2; c++) {
+		struct anvil_green_settings gs;
+		struct anvil_err e;
+		anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+		gs.filter = 1;
+		const struct anvil_green_load load[4] = {
+			{ 0.0, 4.0 }, { 0.25, 4.0 }, { 0.25 / sqrt(2.0), 4.0 }, { 0.0, 2.0 } };
+		struct anvil_green *set[4], *rev[2], *one[4];
+		size_t alone = 0, shared = 0;
+		int st = anvil_green_alloc_set(hhs[c], 0.3, taus[c], &gs, load, 4, NULL, NULL, set, &e);
+		/* the half-band point first, then the patch below: another order, another pair */
+		const struct anvil_green_load two[2] = { load[3], load[2] };
+		int st2 = anvil_green_alloc_set(hhs[c], 0.3, taus[c], &gs, two, 2, NULL, NULL, rev, &e);
+		int same = !st && !st2;
+		for (int i = 0; i < 4; i++) {
+			gs.omega_max = load[i].omega_max;
+			one[i] = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hhs[c], 0.3,
+							 load[i].patch, taus[c], &gs, NULL, NULL, &e);
+			same = same && one[i] && same_bits(set[i], one[i]);
+			alone += one[i] ? anvil_green_evals(one[i]) : 0;
+			shared += !st ? anvil_green_evals(set[i]) : 0;
+		}
+		same = same && same_bits(rev[0], one[3]) && same_bits(rev[1], one[2]);
+		ok(same && 2 * shared < alone,
+		   "h = %g r0, window %g: four corrections made as a set have the bits of each made "
+		   "alone (also two in another order), with %zu kernel evaluations against %zu",
+		   hhs[c], taus[c], shared, alone);
+		for (int i = 0; i < 4; i++) {
+			anvil_green_free(one[i]);
+			if (!st)
+				anvil_green_free(set[i]);
+		}
+		for (int i = 0; !st2 && i < 2; i++)
+			anvil_green_free(rev[i]);
+	}
+	struct anvil_green_settings gs;
+	struct anvil_green *out[1];
+	const struct anvil_green_load bad = { 1.5, 4.0 };
+	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+	ok(anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &bad, 1, NULL, NULL, out, NULL) ==
+		   ANVIL_EINVAL && !out[0] &&
+	   anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &bad, 0, NULL, NULL, out, NULL) == ANVIL_EINVAL,
+	   "a set refuses a patch beyond r0 and an empty set");
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
@@ -549,6 +602,7 @@ int main(void)
 	test_plate_window();
 	test_plate_join();
 	test_plate_memo();
+	test_set();
 	plan(tap_n);
 	return done_testing();
 }

@@ -142,7 +142,7 @@ static void physical_sample(void)
 
 /* Bench section 13's long contacts (physical, normal; the 100 kg scene is
  * refused when planned and left out): the four corrections made as the
- * solver makes them (solver.c physical_corr), their evaluations against
+ * solver makes them (one set: solver.c phys_prefetch), their evaluations against
  * anvil_plan_phys_evals within 2x, and each one's time samples (what a long
  * window costs beyond its evaluations) equal to anvil_plan_corr_samples:
  * the pieces the planner's seconds are made of (plan_work.c). */
@@ -188,25 +188,26 @@ static void long_sample(void)
 			{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
 			{ j->omega_idx, anvil_plan_patch_below(j->patch) },
 			{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+		struct anvil_green_settings gs;
+		struct anvil_green_load set[4];
+		struct anvil_green *g[4];
+		anvil_green_settings(pl.pb.accuracy, &gs);
+		gs.filter = 1;
+		for (int k = 0; k < 4; k++)
+			set[k] = (struct anvil_green_load){ load[k].patch, anvil_cache_grid(load[k].oi) };
+		if (anvil_green_alloc_set(j->hh, pl.pb.p.nu, anvil_cache_grid(tau_idx), &gs, set, 4,
+					  NULL, NULL, g, &e)) {
+			diag("scene %zu: %s", i, e.msg);
+			continue;
+		}
 		for (int k = 0; k < 4; k++) {
-			struct anvil_green_settings gs;
 			struct anvil_green_samples smp;
-			anvil_green_settings(pl.pb.accuracy, &gs);
-			gs.omega_max = anvil_cache_grid(load[k].oi);
-			struct anvil_green *g = anvil_green_alloc_patch(
-				ANVIL_GREEN_LAYER_CORRECTION, j->hh, pl.pb.p.nu, load[k].patch,
-				anvil_cache_grid(tau_idx), &gs, NULL, NULL, &e);
-			if (!g) {
-				diag("scene %zu: %s", i, e.msg);
-				got = NAN;
-				break;
-			}
-			anvil_green_export(g, &smp);
+			anvil_green_export(g[k], &smp);
 			ncorr++;
-			samples_ok += (double)smp.n == anvil_plan_corr_samples(j->hh, gs.omega_max,
+			samples_ok += (double)smp.n == anvil_plan_corr_samples(j->hh, set[k].omega_max,
 									       anvil_cache_grid(tau_idx));
-			got += (double)anvil_green_evals(g);
-			anvil_green_free(g);
+			got += (double)anvil_green_evals(g[k]);
+			anvil_green_free(g[k]);
 		}
 		if (!(got > 0))
 			continue;

@@ -120,8 +120,16 @@ static double plate_nodes(double hh, double tau_end)
  * integrand does not decay with k: PHYS_EVAL_F, fitted on 30 scenes, h/r0
  * 0.3-9, 3 g-0.3 kg, 0.3-30 m/s: predicted/actual evaluations 0.8-1.15;
  * the price of the r0 response alone was 3.6-5.2 times short).  Corrections
- * already in the cache cost nothing. */
+ * already in the cache cost nothing.  Those missing are made as one set
+ * (solver.c phys_prefetch, green.h anvil_green_alloc_set): the kernel is
+ * evaluated once per node for all of them, so the set's evaluations are
+ * those of its widest (the others' own nodes were 0.01-0.03 % of them on
+ * bench section 13), and each other member's integrand calls cost a
+ * memo lookup and its patch's transform, PHYS_COST_HIT each (0.013 us:
+ * h = 10 r0, 10 kg, 0.1 m/s, all kernel work, 1.65 s alone, 0.71 s as a
+ * set (0.63 s), 3.75 M evaluations and 8.9 M values from the memo). */
 #define PHYS_EVAL_F 1.3
+#define PHYS_COST_HIT 1.3e-8
 /* The four corrections' predicted evaluations and (seconds, may be NULL)
  * the time to make them, those in the cache left out. */
 static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
@@ -129,7 +137,7 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 			double *seconds)
 {
 	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
-	double tq = anvil_cache_grid(tau_idx), evals = 0, sec = 0, xr;
+	double tq = anvil_cache_grid(tau_idx), sum = 0, widest = 0, sec = 0, xr;
 	struct { int omega_idx; double patch; } load[4] = {
 		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
 		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
@@ -147,10 +155,11 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 		if (w == ANVIL_CACHE_NONE) {
 			double om = anvil_cache_grid(load[i].omega_idx);
 			double e = PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr), om, tq, acc);
-			evals += e;
+			sum += e;
+			widest = fmax(widest, e);
 			/* the plate's nodes once: the solver keeps its K(t) table
 			 * for the next correction (plate.h, anvil_plate_memo) */
-			sec += e * PHYS_COST_EVAL + anvil_plan_corr_samples(j->hh, om, tq) * PHYS_COST_SAMPLE +
+			sec += anvil_plan_corr_samples(j->hh, om, tq) * PHYS_COST_SAMPLE +
 			       (plate_paid ? 0.0 : plate_nodes(j->hh, tq) * PHYS_COST_NODE);
 			plate_paid = 1;
 		}
@@ -158,8 +167,8 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 			*where = w;
 	}
 	if (seconds)
-		*seconds = sec;
-	return evals;
+		*seconds = sec + widest * PHYS_COST_EVAL + (sum - widest) * PHYS_COST_HIT;
+	return widest;
 }
 
 double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,

@@ -829,6 +829,67 @@ static int phys_threads(int n)
 	return t < n ? t : n;
 }
 
+/* The corrections that the runs of set not yet done need in window
+ * `attempt` (those the window does not refuse) and the cache lacks, made
+ * together when there are two or more (green.h, anvil_green_alloc_set:
+ * each the bits it has alone, the four at about 1.2 times the kernel
+ * evaluations of one) and left in the cache, where phys_window finds
+ * them.  A cold row's first window takes its error runs' corrections
+ * with its own: made later, apart, they would cost twice as much; wasted
+ * only when thin_check refuses the row.  A failure here is left to
+ * phys_window, which makes the correction alone and reports it. */
+#define PHYS_SET_MAX (2 * PHYS_RUNS)
+
+static void phys_prefetch(struct anvil_solver *s, const struct anvil_problem *pb,
+			  const struct anvil_wave_job *j, int attempt, const struct phys_set *set,
+			  int k0, int k1)
+{
+	double tau_end = anvil_wave_window(j, attempt);
+	int tau_idx = anvil_wave_tau_idx(j, tau_end);
+	struct anvil_cache_key key[PHYS_SET_MAX];
+	struct anvil_green_load load[PHYS_SET_MAX];
+	struct anvil_green *g[PHYS_SET_MAX];
+	size_t n = 0;
+	if (!isfinite(j->hh) || !anvil_wave_needs_corr(&pb->p, j, tau_end))
+		return;
+	/* the first window: this round's runs and those after it (a cold row's
+	 * error runs); a longer one: the runs of this round that go on */
+	for (int k = k0; k < (attempt ? k1 : PHYS_RUNS); k++) {
+		const struct phys_load *ld = &set->u[k].ld;
+		if (set->done[k] || anvil_wave_refuse(&pb->p, pb->dt, set->u[k].r->model, j, tau_end,
+						      anvil_cache_grid(ld->omega_idx), NULL))
+			continue;
+		for (int twice = 0; twice < 2; twice++) { /* the point load, then the patch */
+			struct anvil_cache_key ky = { j->hh, pb->p.nu, pb->accuracy, ld->omega_idx,
+						      tau_idx, 0, ANVIL_CACHE_LOAD_PATCH,
+						      twice ? ld->patch : 0.0 };
+			size_t i = 0;
+			while (i < n && !(key[i].omega_idx == ky.omega_idx && key[i].patch == ky.patch))
+				i++;
+			if ((twice && !(ld->patch > 0)) || i < n ||
+			    anvil_cache_probe(s->cache, &ky) != ANVIL_CACHE_NONE)
+				continue;
+			key[n] = ky;
+			load[n++] = (struct anvil_green_load){ ky.patch,
+							       anvil_cache_grid(ky.omega_idx) };
+		}
+	}
+	if (n < 2)
+		return;
+	struct anvil_green_settings gs;
+	anvil_green_settings(pb->accuracy, &gs);
+	gs.filter = 1; /* as physical_corr */
+	gs.plate = s->plate;
+	if (anvil_green_alloc_set(j->hh, pb->p.nu, anvil_cache_grid(tau_idx), &gs, load, n,
+				  s->progress, s->progress_ctx, g, NULL))
+		return;
+	for (size_t i = 0; i < n; i++) {
+		s->layer_computed++;
+		s->layer_evals += anvil_green_evals(g[i]);
+		anvil_cache_release(s->cache, anvil_cache_add(s->cache, &key[i], g[i]));
+	}
+}
+
 /* The runs k0 <= k < k1 of set, each with its window grown until its
  * contact fits (as waves_impact does), all together: per window the
  * responses first, one run after another (the cache and the progress
@@ -843,6 +904,7 @@ static void phys_rounds(struct anvil_solver *s, const struct anvil_problem *pb,
 {
 	for (int attempt = 0; attempt < j->attempts; attempt++) {
 		int go[PHYS_RUNS], n = 0;
+		phys_prefetch(s, pb, j, attempt, set, k0, k1);
 		for (int k = k0; k < k1; k++) {
 			if (set->done[k])
 				continue;

@@ -1,6 +1,7 @@
 #include <complex.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
@@ -59,27 +60,146 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
  * (1 - nu)/k = 1/(2 k (1 - kappa^2)).  The symmetric/antisymmetric form of
  * W agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2) to
  * rounding (tests/test_green.c). */
+struct kmemo;
+
 struct quad {
 	enum anvil_green_mode mode;
 	double kap2, nu, hh, patch;
 	cplx s;
 	size_t evals;
+	struct kmemo *memo; /* the layer correction's kernel at this s (a set's), or NULL */
+	cplx *seg;          /* the memo's values for the piece being integrated, or NULL */
+	int seg_hit, seg_at; /* they are known (else being filled); the next node's */
 };
+
+/* The layer correction's kernel W(k, s) does not depend on the load's
+ * patch: the responses of a set (anvil_green_alloc_set) share it.  At one
+ * s their adaptive k-integrals start from the same pieces and bisect them
+ * at the same midpoints, so most of their pieces coincide (3.4 pieces of
+ * which 1.0 distinct on h = 0.05 r0): a hash table from a piece [a, b]
+ * (its bits) to W at its 21 Gauss-Kronrod nodes, in the order the rule
+ * asks for them (gk21.c: always the same), emptied for the next s by a
+ * new generation.  A value from it is the one the kernel would give: the
+ * responses' bits do not depend on which others were computed with them.
+ * Hand-written: GSL has no hash table. */
+#define GK_NODES 21
+
+struct kslot {
+	double a, b;
+	unsigned gen;
+	size_t at; /* its values: pool[at .. at + GK_NODES) */
+};
+
+struct kmemo {
+	struct kslot *s;
+	size_t cap, n; /* cap a power of two; n pieces of this generation */
+	unsigned gen;
+	cplx *pool;
+};
+
+#define KMEMO_CAP0 ((size_t)1 << 10)
+#define KMEMO_CAP_MAX ((size_t)1 << 16)
+
+static int kmemo_init(struct kmemo *m)
+{
+	*m = (struct kmemo){ calloc(KMEMO_CAP0, sizeof *m->s), KMEMO_CAP0, 0, 1,
+			     malloc(KMEMO_CAP0 / 2 * GK_NODES * sizeof *m->pool) };
+	return m->s && m->pool;
+}
+
+static void kmemo_free(struct kmemo *m)
+{
+	free(m->s);
+	free(m->pool);
+}
+
+static size_t kmemo_slot(const struct kmemo *m, double a, double b)
+{
+	uint64_t x, y;
+	memcpy(&x, &a, sizeof x);
+	memcpy(&y, &b, sizeof y);
+	size_t i = (size_t)(((x ^ (y * 0xC2B2AE3D27D4EB4Full)) * 0x9E3779B97F4A7C15ull) >> 32) &
+		   (m->cap - 1);
+	while (m->s[i].gen == m->gen && !(m->s[i].a == a && m->s[i].b == b))
+		i = (i + 1) & (m->cap - 1);
+	return i;
+}
+
+static void kmemo_next(struct kmemo *m)
+{
+	m->gen++;
+	m->n = 0;
+}
+
+/* Twice the slots and the pool, this generation's pieces kept; nothing
+ * changed when memory is short. */
+static void kmemo_grow(struct kmemo *m)
+{
+	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, m->gen,
+			   realloc(m->pool, m->cap * GK_NODES * sizeof *m->pool) };
+	if (b.pool)
+		m->pool = b.pool;
+	if (!b.s || !b.pool) {
+		free(b.s);
+		return;
+	}
+	for (size_t i = 0; i < m->cap; i++)
+		if (m->s[i].gen == m->gen) {
+			b.s[kmemo_slot(&b, m->s[i].a, m->s[i].b)] = m->s[i];
+			b.n++;
+		}
+	free(m->s);
+	*m = b;
+}
+
+/* The values of piece [a, b] into q->seg: known (seg_hit), or a place to
+ * fill; NULL when the table is full (at most half its slots used: the
+ * probes stay short). */
+static void kmemo_piece(struct kmemo *m, double a, double b, struct quad *q)
+{
+	size_t i = kmemo_slot(m, a, b);
+	q->seg_at = 0;
+	q->seg = NULL;
+	if (m->s[i].gen == m->gen) {
+		q->seg = m->pool + m->s[i].at;
+		q->seg_hit = 1;
+		return;
+	}
+	if (2 * (m->n + 1) > m->cap && m->cap < KMEMO_CAP_MAX) {
+		kmemo_grow(m);
+		i = kmemo_slot(m, a, b);
+	}
+	if (2 * (m->n + 1) > m->cap)
+		return;
+	m->s[i] = (struct kslot){ a, b, m->gen, m->n * GK_NODES };
+	q->seg = m->pool + m->s[i].at;
+	q->seg_hit = 0;
+	m->n++;
+}
 
 static cplx integrand(double k, void *vq)
 {
 	struct quad *q = vq;
 	struct anvil_layer_bc bc;
-	q->evals++;
 	if (q->mode == ANVIL_GREEN_HALFSPACE) {
+		q->evals++;
 		anvil_layer_bc_solve(k, q->s, q->kap2, INFINITY, &bc);
 		return (k * anvil_layer_bc_w_halfspace(&bc) - 0.5 / (1.0 - q->kap2)) *
 		       anvil_kernel_zhat(k);
 	}
-	anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
+	cplx w;
+	if (q->seg && q->seg_hit) {
+		w = q->seg[q->seg_at++];
+	} else {
+		q->evals++;
+		anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
+		w = anvil_layer_bc_w_correction(&bc);
+		if (q->seg)
+			q->seg[q->seg_at++] = w;
+	}
 	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
 	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
-	return anvil_layer_bc_w_correction(&bc) * anvil_kernel_zhat(k * q->patch) * k;
+	return w * anvil_kernel_zhat(k * q->patch) * k;
 }
 
 /* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
@@ -131,6 +251,8 @@ static struct seg heap_pop(struct heap *h)
 static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
 {
 	struct seg x = { .a = a, .b = b };
+	if (q->memo)
+		kmemo_piece(q->memo, a, b, q);
 	anvil_gk21_complex(integrand, q, a, b, &x.val, &x.err);
 	*sum += x.val;
 	*err += x.err;
@@ -244,37 +366,54 @@ struct spectrum {
 	const struct plate *pl;
 	anvil_progress_fn progress;
 	void *ctx;
+	double patch; /* the load's (quad.patch) */
+	cplx *spec;   /* out: terms 0..dl->M */
+	double *err;
 };
 
-static int spectrum_term(struct quad *q, struct heap *h, const struct spectrum *sp, size_t n,
-			 cplx *spec, double *err)
+static int spectrum_term(struct quad *q, struct heap *h, const struct spectrum *sp, size_t n)
 {
 	double e;
 	cplx In;
 	q->s = anvil_durbin_s(sp->dl, n);
+	q->patch = sp->patch;
 	cplx b = q->s * q->s;
 	double s2 = cabs(b);
 	int qs = k_integral(q, h, cimag(q->s), q->hh, sp->cr, sp->ktail, sp->epsF * s2, &In, &e);
-	spec[n] = In / b - plate_s(sp->pl, q->s);
-	err[n] = e / s2;
-	if (!isfinite(creal(spec[n])) || !isfinite(cimag(spec[n])))
+	sp->spec[n] = In / b - plate_s(sp->pl, q->s);
+	sp->err[n] = e / s2;
+	if (!isfinite(creal(sp->spec[n])) || !isfinite(cimag(sp->spec[n])))
 		return ANVIL_ENUM;
 	return qs;
 }
 
-static int sample_spectrum(const struct quad *q0, const struct spectrum *sp, cplx *spec,
-			   double *err, size_t *evals)
+/* The spectra sp[0..nsp-1] (one line: the same s at each n; their bands
+ * may differ), term by term, each term's k-integrals one after another on
+ * one thread with one kernel memo (kmemo) when there are several; evals[i]
+ * the kernel evaluations that sp[i]'s integrals made (memo hits not
+ * counted).  Progress and cancellation through sp[0]'s callback. */
+#define SPECTRA_MAX 8
+
+static int sample_spectra(const struct quad *q0, const struct spectrum *sp, size_t nsp,
+			  size_t *evals)
 {
-	size_t M = sp->dl->M, done = 0, nev = 0;
+	size_t M = 0, done = 0;
 	int st = ANVIL_OK, stop = 0;
+	for (size_t i = 0; i < nsp; i++) {
+		M = sp[i].dl->M > M ? sp[i].dl->M : M;
+		evals[i] = 0;
+	}
 #ifdef _OPENMP
 #pragma omp parallel
 #endif
 	{
 		struct quad q = *q0;
 		struct heap *h = malloc(sizeof *h);
-		int mine = h ? ANVIL_OK : ANVIL_ENOMEM;
-		q.evals = 0;
+		struct kmemo km = { 0 };
+		size_t nev[SPECTRA_MAX] = { 0 };
+		int mine = h && (nsp == 1 || kmemo_init(&km)) ? ANVIL_OK : ANVIL_ENOMEM;
+		q.memo = nsp > 1 ? &km : NULL;
+		q.seg = NULL;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
@@ -286,7 +425,16 @@ static int sample_spectrum(const struct quad *q0, const struct spectrum *sp, cpl
 			halt = stop;
 			if (halt || mine == ANVIL_ENOMEM)
 				continue;
-			ts = spectrum_term(&q, h, sp, n, spec, err);
+			kmemo_next(&km);
+			for (size_t i = 0; i < nsp && ts != ANVIL_ENUM; i++) {
+				if (n > sp[i].dl->M)
+					continue;
+				q.evals = 0;
+				int ti = spectrum_term(&q, h, &sp[i], n);
+				nev[i] += q.evals;
+				if (ti && (ti != ANVIL_ETOL || !ts))
+					ts = ti;
+			}
 			/* ETOL is kept going: the result says how far off it is */
 			if (ts && (ts != ANVIL_ETOL || !mine))
 				mine = ts;
@@ -310,12 +458,14 @@ static int sample_spectrum(const struct quad *q0, const struct spectrum *sp, cpl
 				stop = 1;
 			}
 		}
+		kmemo_free(&km);
 		free(h);
 #ifdef _OPENMP
 #pragma omp critical(anvil_green_status)
 #endif
 		{
-			nev += q.evals;
+			for (size_t i = 0; i < nsp; i++)
+				evals[i] += nev[i];
 			/* the worst status wins, whichever thread met it: cancel,
 			 * then no memory, then a non-finite term, then a missed tolerance */
 			if (mine == ANVIL_ECANCEL || (mine == ANVIL_ENOMEM && st != ANVIL_ECANCEL) ||
@@ -324,7 +474,6 @@ static int sample_spectrum(const struct quad *q0, const struct spectrum *sp, cpl
 				st = mine;
 		}
 	}
-	*evals = nev;
 	return st;
 }
 
@@ -454,14 +603,15 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
 			  .patch = g->patch };
-	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
-			       .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = &pl,
-			       .progress = progress, .ctx = ctx };
 	cplx *spec = malloc((M + 1) * sizeof *spec);
 	double *err = malloc((M + 1) * sizeof *err);
+	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
+			       .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = &pl,
+			       .progress = progress, .ctx = ctx, .patch = g->patch, .spec = spec,
+			       .err = err };
 	int st = (!spec || !err) ? ANVIL_ENOMEM : ANVIL_OK;
 	if (!st)
-		st = sample_spectrum(&q, &sp, spec, err, &g->evals);
+		st = sample_spectra(&q, &sp, 1, &g->evals);
 	/* A k-integral that missed its share of the budget is not fatal: its
 	 * error estimate is in err, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
@@ -492,6 +642,98 @@ static struct anvil_green *green_new(enum anvil_green_mode mode, double hh, doub
 	g->kap2 = anvil_kappa2(nu);
 	g->tau_end = tau_end;
 	return g;
+}
+
+/* The layer corrections g[0..n-1] (their patches set, one hh, nu and
+ * window) at bandwidths omega[i], on one line: each as green_compute
+ * makes it alone (same tolerance per term, same finish), their spectra
+ * sampled together (sample_spectra: the kernel shared). */
+static int green_set_compute(struct anvil_green **g, const double *omega, size_t n,
+			     const struct anvil_green_settings *gs, anvil_progress_fn progress,
+			     void *ctx)
+{
+	double t1 = !gs->no_plate ? anvil_plate_t1(g[0]->hh, g[0]->tau_end) : 0;
+	double t_inv = t1 > 0 ? t1 : g[0]->tau_end, Tp = 2.0 * t_inv, xr;
+	struct anvil_durbin dl[SPECTRA_MAX];
+	struct spectrum sp[SPECTRA_MAX];
+	size_t evals[SPECTRA_MAX];
+	if (anvil_rayleigh_x(g[0]->kap2, &xr, NULL))
+		return ANVIL_ENUM;
+	double scale = 3.0 / (16.0 * (1.0 - g[0]->kap2)) * t_inv; /* half-space ramp */
+	struct plate pl = plate_term(g[0]->mode, g[0]->hh, g[0]->nu);
+	struct quad q = { .mode = g[0]->mode, .kap2 = g[0]->kap2, .nu = g[0]->nu,
+			  .hh = g[0]->hh };
+	int st = ANVIL_OK;
+	size_t made = 0;
+	for (; made < n && !st; made++) {
+		if (anvil_durbin_init(&dl[made], Tp, gs->c0T / Tp, omega[made], 0)) {
+			st = ANVIL_EINVAL;
+			break;
+		}
+		size_t M = dl[made].M;
+		double amp = exp(dl[made].c0 * t_inv) / Tp;
+		sp[made] = (struct spectrum){ .dl = &dl[made], .cr = sqrt(xr), .ktail = gs->ktail,
+					      .epsF = gs->tol * scale / (amp * (double)(M + 1)),
+					      .pl = &pl, .progress = progress, .ctx = ctx,
+					      .patch = g[made]->patch,
+					      .spec = malloc((M + 1) * sizeof(cplx)),
+					      .err = malloc((M + 1) * sizeof(double)) };
+		if (!sp[made].spec || !sp[made].err)
+			st = ANVIL_ENOMEM;
+	}
+	if (!st)
+		st = sample_spectra(&q, sp, n, evals);
+	if (st == ANVIL_ETOL) /* as green_compute: in err, for the caller to judge */
+		st = ANVIL_OK;
+	struct anvil_plate_memo *own = !gs->plate && t1 > 0 ? anvil_plate_memo_alloc() : NULL;
+	struct anvil_plate_memo *memo = gs->plate ? gs->plate : own;
+	for (size_t i = 0; !st && i < n; i++) {
+		g[i]->evals = evals[i];
+		st = band_finish(g[i], &dl[i], sp[i].spec, sp[i].err, &pl, memo, gs->filter);
+	}
+	anvil_plate_memo_free(own);
+	for (size_t i = 0; i < made; i++) {
+		free(sp[i].spec);
+		free(sp[i].err);
+	}
+	return st;
+}
+
+int anvil_green_alloc_set(double hh, double nu, double tau_end,
+			  const struct anvil_green_settings *gs, const struct anvil_green_load *load,
+			  size_t n, anvil_progress_fn progress, void *ctx, struct anvil_green **out,
+			  struct anvil_err *err)
+{
+	int st = ANVIL_OK;
+	for (size_t i = 0; i < n; i++)
+		out[i] = NULL;
+	if (!(n >= 1 && n <= SPECTRA_MAX) || !(nu > -1 && nu < 0.5) || !(tau_end > 0) ||
+	    !isfinite(tau_end) || !(hh > 0 && isfinite(hh)))
+		st = ANVIL_EINVAL;
+	for (size_t i = 0; !st && i < n; i++)
+		if (!(load[i].patch >= 0 && load[i].patch <= 1))
+			st = ANVIL_EINVAL;
+	if (st)
+		return anvil_err_set(err, st, "layer responses: bad parameters (h/r0 = %g, nu = %g, window %g, %zu loads)",
+				     hh, nu, tau_end, n);
+	double omega[SPECTRA_MAX];
+	for (size_t i = 0; !st && i < n; i++) {
+		omega[i] = load[i].omega_max;
+		out[i] = green_new(ANVIL_GREEN_LAYER_CORRECTION, hh, nu, load[i].patch, tau_end);
+		st = out[i] ? ANVIL_OK : ANVIL_ENOMEM;
+	}
+	if (!st)
+		st = green_set_compute(out, omega, n, gs, progress, ctx);
+	if (st) {
+		for (size_t i = 0; i < n; i++) {
+			anvil_green_free(out[i]);
+			out[i] = NULL;
+		}
+		return anvil_err_set(err, st, st == ANVIL_ECANCEL ? "layer response: cancelled" :
+				     "layer response (h/r0 = %g, nu = %g): %s", hh, nu,
+				     anvil_strerror(st));
+	}
+	return ANVIL_OK;
 }
 
 struct anvil_green *anvil_green_alloc(enum anvil_green_mode mode, double hh,

@@ -103,6 +103,27 @@ struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double h
 					    anvil_progress_fn progress, void *ctx,
 					    struct anvil_err *err);
 
+/* Several layer corrections over one window, load[i] the Hertz patch
+ * (radius patch r0, 0..1; 0 a point load) and bandwidth of out[i]: each
+ * the same bits as anvil_green_alloc_patch with gs and that omega_max
+ * would give it alone (the physical contact's four: the point load and
+ * the patch at the band, the patch below, the point load at half the
+ * band), at the cost of little more than one: their spectra share the
+ * line, and at each frequency the layer's kernel, which does not depend
+ * on the patch, is evaluated once per wavenumber node for all of them.
+ * 1 <= n <= 8; gs->omega_max ignored.  anvil_green_evals of each: the
+ * kernel evaluations made for it (a node already evaluated for an
+ * earlier one of the set costs none).  The caller owns out[0..n-1]; on
+ * failure all NULL and the status returned (err set). */
+struct anvil_green_load {
+	double patch, omega_max;
+};
+int anvil_green_alloc_set(double hh, double nu, double tau_end,
+			  const struct anvil_green_settings *gs,
+			  const struct anvil_green_load *load, size_t n,
+			  anvil_progress_fn progress, void *ctx, struct anvil_green **out,
+			  struct anvil_err *err);
+
 /* Ramp response at tau in [0, tau_end] (cubic interpolation of the FFT grid;
  * 0 for tau <= 0).  ANVIL_EINVAL beyond tau_end. */
 int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
