@@ -1,0 +1,84 @@
+/* plate_bending.h: the bending stress at the centre of a thin plate under
+ * an impact's force history, for long contacts whose transform field
+ * (field.h) costs minutes.
+ *
+ * The plate: Kirchhoff's, infinite, D lap^2 w + rho h w_tt = P(t) Z(r, t),
+ * D = E h^3 / (12 (1 - nu^2)), under the Hertz-shaped patch Z of radius c
+ * (Z(r) = 3/(2 pi c^2) sqrt(1 - r^2/c^2), Hankel transform
+ * Z^H(k) = 3 (sin x - x cos x) / (2 pi x^3), x = k c).  Each Hankel mode is
+ * an oscillator of frequency omega = beta k^2, beta = sqrt(D / (rho h)), so
+ *   w^H(k, t) = Z^H(k) / (rho h omega) int_0^t P(tau) sin(omega (t - tau)) dtau
+ * and the radial moment at the centre, M_r(0) = -D (1 + nu)/2 lap w(0), is
+ *   M_r(0, t) = D (1 + nu)/2 int_0^inf k^3 w^H(k, t) dk.
+ * The far face's stress is sigma_rr = sigma_tt = 6 M_r / h^2 (tension),
+ * the near face's -6 M_r / h^2 plus the contact's own stress.
+ *
+ * Numerics: P(t) piecewise linear between the history's samples (any
+ * spacing), the time integral exact per segment; the k-integral by GSL's
+ * QUADPACK (qag, 21-point Gauss-Kronrod) in ln k, relative tolerance 1e-6,
+ * its error estimate returned.
+ *
+ * The patch (c): a fixed radius, or the Hertz contact's a(t) = sqrt(r0
+ * alpha_H), alpha_H = (P/K)^(2/3), as the true contact loads the plate;
+ * and the thick plate's equivalent radius (Timoshenko and Woinowsky-Krieger,
+ * Theory of Plates and Shells, 1959, sec. 19, after Westergaard): a load
+ * spread over c < 1.724 h acts on the mid-plane like one over
+ * b = sqrt(1.6 c^2 + h^2) - 0.675 h, because it spreads through the
+ * thickness before it bends the plate.  Where the estimate holds against
+ * the transform field (its stated accuracy) is anvil_plate_bending_peak's. */
+#ifndef ANVIL_PLATE_BENDING_H
+#define ANVIL_PLATE_BENDING_H
+
+#include "params.h"
+#include "result.h"
+#include "status.h"
+
+/* How the patch's radius is taken: FIXED or HERTZ, optionally with
+ * WESTERGAARD (bit or). */
+enum anvil_plate_patch {
+	ANVIL_PLATE_PATCH_FIXED = 0,      /* c given (the paper's r0 patch) */
+	ANVIL_PLATE_PATCH_HERTZ = 1,      /* c = a(t) of the Hertz contact */
+	ANVIL_PLATE_PATCH_WESTERGAARD = 2 /* the radius c replaced by b(c) (above) */
+};
+/* The estimate's patch: the true contact, spread through the thickness. */
+#define ANVIL_PLATE_PATCH_TRUE (ANVIL_PLATE_PATCH_HERTZ | ANVIL_PLATE_PATCH_WESTERGAARD)
+
+/* The far-face bending stress at the centre at time t (s) of the plate p
+ * (finite h) under history hist's P(t) (any spacing, t_0 = 0): *sigma (Pa)
+ * and its numerical error *err (the quadrature's, Pa).  patch FIXED uses
+ * radius c (m, > 0); HERTZ ignores c.  ANVIL_OK, ANVIL_EINVAL (infinite
+ * h, no history, c <= 0 for FIXED), ANVIL_ENUM (the quadrature failed). */
+int anvil_plate_bending_at(const struct anvil_params *p, const struct anvil_history *hist,
+			   unsigned patch, double c, double t, double *sigma,
+			   double *err);
+
+/* The maximum over the contact. */
+struct anvil_plate_bending {
+	double sigma, err; /* the far face's sigma_rr at its maximum, and the quadrature's error, Pa */
+	double t;          /* when, s */
+	double P, a;       /* the force (N) and the Hertz contact radius (m) at t */
+	double h_r0, a_h;  /* h / r0, a / h at t: the estimate's coordinates */
+	double tol;        /* the model's stated relative accuracy (against the transform field)
+			    * in its range; 0 outside it */
+	char why[160];     /* outside the range: why ("" inside) */
+};
+
+/* The model's stated accuracy and its range (measured against the
+ * transform field, plate_bending.c): within ANVIL_PLATE_BENDING_TOL
+ * relative for h/r0 <= ANVIL_PLATE_BENDING_H_R0_MAX and a/h at the peak
+ * <= ANVIL_PLATE_BENDING_A_H_MAX. */
+#define ANVIL_PLATE_BENDING_TOL 0.10
+#define ANVIL_PLATE_BENDING_H_R0_MAX 0.5
+#define ANVIL_PLATE_BENDING_A_H_MAX 1.0
+
+/* The maximum over t in (0, t_end] (t_end <= the history's last sample; 0:
+ * the last) of anvil_plate_bending_at (patch, c as there; the estimate's
+ * is ANVIL_PLATE_PATCH_TRUE), by a scan of
+ * NSCAN instants and Brent's minimiser (GSL) around the best, to 1e-4
+ * relative in t; b->tol and b->why from the range above.  Statuses as
+ * anvil_plate_bending_at; ANVIL_EINVAL when P never exceeds 0. */
+int anvil_plate_bending_peak(const struct anvil_params *p, const struct anvil_history *hist,
+			     unsigned patch, double c, double t_end, struct anvil_plate_bending *b,
+			     struct anvil_err *err);
+
+#endif
