@@ -260,19 +260,19 @@ static int refine(struct peak_ctx *x, const double *ts, const double *sv, int j,
 }
 
 /* The stated range (plate_bending.h). */
-static void range(const struct anvil_params *p, struct anvil_plate_bending *b)
+static void range(struct anvil_plate_bending *b)
 {
 	b->tol = ANVIL_PLATE_BENDING_TOL;
 	b->why[0] = '\0';
-	if (b->h_r0 > ANVIL_PLATE_BENDING_H_R0_MAX)
-		snprintf(b->why, sizeof b->why, "h = %.3g r0 is thick for a plate (the estimate holds "
-			 "to %.0f %% up to %.3g r0)", b->h_r0, 100 * b->tol, ANVIL_PLATE_BENDING_H_R0_MAX);
-	else if (b->a_h > ANVIL_PLATE_BENDING_A_H_MAX)
-		snprintf(b->why, sizeof b->why, "the contact radius a = %.3g h exceeds %.3g h",
-			 b->a_h, ANVIL_PLATE_BENDING_A_H_MAX);
+	if (b->a_h < ANVIL_PLATE_BENDING_A_H_MIN || b->a_h > ANVIL_PLATE_BENDING_A_H_MAX)
+		snprintf(b->why, sizeof b->why, "the contact radius a = %.2g h, outside the %.2g-%.2g h "
+			 "where the plate estimate was measured", b->a_h, ANVIL_PLATE_BENDING_A_H_MIN,
+			 ANVIL_PLATE_BENDING_A_H_MAX);
+	else if (b->t_h < ANVIL_PLATE_BENDING_T_MIN)
+		snprintf(b->why, sizeof b->why, "its peak comes %.2g times 2h/c1 after impact, before "
+			 "the %.2g where the plate estimate was measured", b->t_h, ANVIL_PLATE_BENDING_T_MIN);
 	if (b->why[0])
 		b->tol = 0;
-	(void)p;
 }
 
 int anvil_plate_bending_peak(const struct anvil_params *p, const struct anvil_history *hist,
@@ -328,9 +328,9 @@ int anvil_plate_bending_peak(const struct anvil_params *p, const struct anvil_hi
 	}
 	b->P = anvil_history_at(hist, hist->P, b->t);
 	b->a = b->P > 0 ? sqrt(p->r0 * pow(b->P / p->K, 2.0 / 3.0)) : 0;
-	b->h_r0 = p->h / p->r0;
 	b->a_h = b->a / p->h;
-	range(p, b);
+	b->t_h = b->t / (2.0 * p->h / p->c1);
+	range(b);
 done:
 	eval_free(&x);
 	return st;
