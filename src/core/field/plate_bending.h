@@ -13,10 +13,16 @@
  * The far face's stress is sigma_rr = sigma_tt = 6 M_r / h^2 (tension),
  * the near face's -6 M_r / h^2 plus the contact's own stress.
  *
- * Numerics: P(t) piecewise linear between the history's samples (any
- * spacing), the time integral exact per segment; the k-integral by GSL's
- * QUADPACK (qag, 21-point Gauss-Kronrod) in ln k, relative tolerance 1e-6,
- * its error estimate returned.
+ * Numerics: the k-integral done first, in closed form: an impulse on the
+ * patch gives M_r(0, s) = (1 + nu) Gamma(c^2 / (beta s)) / (8 pi s), Gamma
+ * a one-line integral (plate_bending.c) tabulated once per call (QUADPACK
+ * qaws, a cubic spline; its asymptotic series for large argument); then
+ *   sigma(t) = 3 (1 + nu) / (4 pi h^2) int_0^t P(tau) Gamma(...) / (t - tau) dtau,
+ * one QUADPACK integral (qag) in ln (t - tau) per instant, P(t) linear
+ * between the history's samples (any spacing).  Its error estimate is the
+ * quadrature's plus the truncated tail's; against the step load's closed
+ * form (tests/test_plate_bending.c) within 1.4e-6 relative.  A contact's
+ * maximum costs about 60 ms.
  *
  * The patch (c): a fixed radius, or the Hertz contact's a(t) = sqrt(r0
  * alpha_H), alpha_H = (P/K)^(2/3), as the true contact loads the plate;
