@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "hertz.h"
+#include "plate_bending.h"
 #include "verdict.h"
 
 /* The instants around the peak force at which the edge tension is read. */
@@ -19,10 +20,18 @@ static void criterion(const struct anvil_problem *pb, struct anvil_verdict *v)
 	v->known = v->limit > 0;
 }
 
+/* The stress the fate is judged on: the contact's, or the plate's bending
+ * stress where it was checked and is larger (at the far face it is both
+ * the tension and the von Mises stress). */
+static double governing(const struct anvil_verdict *v)
+{
+	return v->bend_state == 1 && v->bend > v->stress ? v->bend : v->stress;
+}
+
 static void judge(struct anvil_verdict *v)
 {
 	v->fate = ANVIL_HERTZ_ELASTIC;
-	if (v->known && v->stress > v->limit)
+	if (v->known && governing(v) > v->limit)
 		v->fate = v->brittle ? ANVIL_HERTZ_CRACKS : ANVIL_HERTZ_YIELDS;
 }
 
@@ -148,6 +157,27 @@ int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
 	return st ? st : impactor(pb, v);
 }
 
+void anvil_verdict_bending(const struct anvil_problem *pb, const struct anvil_history *h,
+			   struct anvil_verdict *v)
+{
+	struct anvil_plate_bending b;
+	struct anvil_err e = {0};
+	v->bend_state = -1;
+	int st = anvil_plate_bending_peak(&pb->p, h, ANVIL_PLATE_PATCH_TRUE, 0, 0, &b, &e);
+	if (st) {
+		snprintf(v->bend_why, sizeof v->bend_why, "%.150s", e.msg);
+		return;
+	}
+	v->bend = b.sigma;
+	v->bend_err = b.err;
+	v->bend_t = b.t;
+	v->bend_tol = b.tol;
+	snprintf(v->bend_why, sizeof v->bend_why, "%s", b.why);
+	if (b.tol > 0)
+		v->bend_state = 1;
+	judge(v);
+}
+
 int anvil_verdict_fails(const struct anvil_verdict *v)
 {
 	return v->fate != ANVIL_HERTZ_ELASTIC || v->imp.fate != ANVIL_HERTZ_ELASTIC;
@@ -160,6 +190,22 @@ static void stress_text(double s, char *buf, size_t n)
 		snprintf(buf, n, "%.3g GPa", s * 1e-9);
 	else
 		snprintf(buf, n, "%.3g MPa", s * 1e-6);
+}
+
+/* A long contact's second clause: the plate's bending stress and its
+ * accuracy, or why it was not checked. */
+static void bending_text(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	char s[32];
+	if (v->bend_state != 1) {
+		snprintf(buf, n, "; the plate's bending stress not checked%s%s",
+			 v->bend_why[0] ? ": " : "", v->bend_why);
+		return;
+	}
+	stress_text(v->bend, s, sizeof s);
+	snprintf(buf, n, "; bending stress at the far face %s at t = %.3g us (Kirchhoff plate, "
+		 "within %.0f %%)%s", s, v->bend_t * 1e6, 100 * v->bend_tol,
+		 v->known && v->bend > v->stress ? ", the larger: judged on it" : "");
 }
 
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
@@ -183,12 +229,15 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max)");
 	if (v->qs_ratio > 0)
 		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max: the contact "
-			 "lasts %.2g times 2h/c1; the plate's bending stress not checked)", v->qs_ratio);
-	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s", v->material, what,
+			 "lasts %.2g times 2h/c1)", v->qs_ratio);
+	char bend[224] = "";
+	if (v->qs_ratio > 0)
+		bending_text(v, bend, sizeof bend);
+	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s%s", v->material, what,
 		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
 		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
 		 v->dynamic ? "" : qs,
-		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "");
+		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "", bend);
 }
 
 void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n)

@@ -59,26 +59,34 @@ int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
 
 /* A long contact's verdict (verdict.h, ANVIL_VERDICT_QS_RATIO): quasi-static
  * Hertz at the layer row's own P_max (the row as the plan runs it, its
- * responses from the solver's cache). */
+ * responses from the solver's cache), and the plate's bending stress
+ * under its history (ANVIL_VERDICT_NHIST samples: the given row's when it
+ * has them, else the row run again with them, so the numbers do not
+ * depend on what the caller kept). */
 static int long_contact_verdict(struct anvil_solver *s, const struct anvil_plan *pl, double ratio,
 				const struct anvil_result *given, struct anvil_verdict *v,
 				struct anvil_err *err)
 {
 	struct anvil_result r;
 	const struct anvil_result *row = given;
-	int st = given ? given->status : anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, 0, &r, err);
-	if (!given)
+	int own = !given || given->hist.n != ANVIL_VERDICT_NHIST;
+	if (given && given->status < 0)
+		return anvil_err_set(err, given->status, "%s",
+				     given->why[0] ? given->why : anvil_strerror(given->status));
+	int st = own ? anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, ANVIL_VERDICT_NHIST, &r, err)
+		     : given->status;
+	if (own)
 		row = &r;
-	if (st < 0 && given)
-		st = anvil_err_set(err, st, "%s", given->why[0] ? given->why : anvil_strerror(st));
 	if (st >= 0) {
 		int vs = anvil_verdict_at(&pl->pb, row->Pmax.val, row->tmax.val, v);
 		v->qs_ratio = ratio;
 		if (vs)
 			st = anvil_err_set(err, vs, "the layer row's P_max (%g N) gives no Hertz contact",
 					   row->Pmax.val);
+		else
+			anvil_verdict_bending(&pl->pb, &row->hist, v);
 	}
-	if (!given)
+	if (own)
 		anvil_result_free(&r);
 	return st;
 }

@@ -14,7 +14,7 @@
 #include "verdict.h"
 
 /* Samples per model in --history and the charts. */
-#define RUN_NHIST 400
+#define RUN_NHIST ANVIL_VERDICT_NHIST /* 400: the verdict takes the layer row with them (verdict.h) */
 
 struct run_opts {
 	const char *scene, *out, *history, *png;
