@@ -41,6 +41,10 @@ assert '--quantity selects the columns' \
 assert '--no-yield says so' grep -q '^# yield check: not done' "$tmp/out"
 assert 'w grows into the layer: positive at the peak force' \
 	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ && $5 > 0 { pos = 1 } END { exit !pos }' "$tmp/out"
+grep -v '^#' "$tmp/out" >"$tmp/noyield.cols"
+check 'the same field with the yield check' "$ANVIL" field $D -q --at 0,1mm --quantity w,vm
+assert '...the same columns (the r0 patch of the paper either way: --no-yield skips the check only)' \
+	sh -c "grep -v '^#' '$tmp/out' | cmp -s - '$tmp/noyield.cols'"
 
 check 'field on a half-space' "$ANVIL" field $D -q -s layer.thickness=inf --at 0,10mm --quantity szz
 assert 'half-space: h = inf in the description' grep -q '^# halfspace, h = inf, r0 = 4 mm' "$tmp/out"

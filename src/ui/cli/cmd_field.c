@@ -153,7 +153,9 @@ static int yield_check(struct fctx *c, const struct fargs *a, struct anvil_field
 	if (a->no_yield)
 		return -1;
 	/* The one verdict (verdict.h): it turns the field's true contact on,
-	 * so the peak below and the columns are the true contact's too. */
+	 * so the peak below is the true contact's; the columns were computed
+	 * before, on the paper's r0 patch (the man page's FIELD), and do not
+	 * depend on whether the check runs (tests/field.sh). */
 	struct anvil_problem pb;
 	struct anvil_verdict *v = &c->v;
 	char line[320];
