@@ -576,6 +576,42 @@ int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, doub
 	return floor(tau_end / dtau) + 2 <= (double)GREEN_SAMPLES_MAX;
 }
 
+/* The inversion's line for g's window: output kept to [0, T'/2] of the
+ * period Tp = 2T'; for a long window of a layer correction, only over
+ * [0, T1] (t1 > 0), the plate beyond. */
+static double line_window(const struct anvil_green *g, const struct anvil_green_settings *gs,
+			  double *t1)
+{
+	*t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION && !gs->no_plate
+		      ? anvil_plate_t1(g->hh, g->tau_end) : 0;
+	return *t1 > 0 ? *t1 : g->tau_end;
+}
+
+/* Spectrum sp of g's load over the line of window t_inv at bandwidth
+ * omega (dl initialised here): each term's k-integral gets its share of
+ * the level's tolerance on the half-space ramp's scale; spec and err
+ * allocated (the caller frees them, also on failure).  ANVIL_EINVAL,
+ * ANVIL_ENOMEM. */
+static int spectrum_init(struct spectrum *sp, struct anvil_durbin *dl, const struct anvil_green *g,
+			 double t_inv, double omega, double cr, const struct plate *pl,
+			 const struct anvil_green_settings *gs, anvil_progress_fn progress,
+			 void *ctx)
+{
+	double Tp = 2.0 * t_inv;
+	*sp = (struct spectrum){ 0 };
+	if (anvil_durbin_init(dl, Tp, gs->c0T / Tp, omega, 0))
+		return ANVIL_EINVAL;
+	size_t M = dl->M;
+	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
+	double amp = exp(dl->c0 * t_inv) / Tp;
+	*sp = (struct spectrum){ .dl = dl, .cr = cr, .ktail = gs->ktail,
+				 .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = pl,
+				 .progress = progress, .ctx = ctx, .patch = g->patch,
+				 .spec = malloc((M + 1) * sizeof(cplx)),
+				 .err = malloc((M + 1) * sizeof(double)) };
+	return sp->spec && sp->err ? ANVIL_OK : ANVIL_ENOMEM;
+}
+
 /* The main response g and, when tw is not NULL, its twin at half the
  * bandwidth from the same spectrum: the twin's line is the same (same
  * window, same c0), its terms n <= M' the first of the main's.  Every
@@ -586,30 +622,17 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 			 const struct anvil_green_settings *gs, anvil_progress_fn progress,
 			 void *ctx)
 {
-	/* the line: output kept to [0, T'/2] of the period 2T'; for a long
-	 * window of a layer correction, only over [0, T1], the plate beyond */
-	double t1 = g->mode == ANVIL_GREEN_LAYER_CORRECTION && !gs->no_plate
-			    ? anvil_plate_t1(g->hh, g->tau_end) : 0;
-	double t_inv = t1 > 0 ? t1 : g->tau_end, Tp = 2.0 * t_inv, xr;
+	double t1, t_inv = line_window(g, gs, &t1), xr;
 	struct anvil_durbin dl, dt;
-	if (anvil_durbin_init(&dl, Tp, gs->c0T / Tp, gs->omega_max, 0) ||
-	    (tw && anvil_durbin_init(&dt, Tp, gs->c0T / Tp, 0.5 * gs->omega_max, 0)))
+	struct spectrum sp;
+	if (tw && anvil_durbin_init(&dt, 2.0 * t_inv, gs->c0T / (2.0 * t_inv), 0.5 * gs->omega_max, 0))
 		return ANVIL_EINVAL;
 	if (anvil_rayleigh_x(g->kap2, &xr, NULL))
 		return ANVIL_ENUM;
-	size_t M = dl.M;
-	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
-	double amp = exp(dl.c0 * t_inv) / Tp;
 	struct plate pl = plate_term(g->mode, g->hh, g->nu);
 	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
 			  .patch = g->patch };
-	cplx *spec = malloc((M + 1) * sizeof *spec);
-	double *err = malloc((M + 1) * sizeof *err);
-	struct spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = gs->ktail,
-			       .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = &pl,
-			       .progress = progress, .ctx = ctx, .patch = g->patch, .spec = spec,
-			       .err = err };
-	int st = (!spec || !err) ? ANVIL_ENOMEM : ANVIL_OK;
+	int st = spectrum_init(&sp, &dl, g, t_inv, gs->omega_max, sqrt(xr), &pl, gs, progress, ctx);
 	if (!st)
 		st = sample_spectra(&q, &sp, 1, &g->evals);
 	/* A k-integral that missed its share of the budget is not fatal: its
@@ -620,12 +643,12 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 	struct anvil_plate_memo *own = !gs->plate && tw && t1 > 0 ? anvil_plate_memo_alloc() : NULL;
 	struct anvil_plate_memo *memo = gs->plate ? gs->plate : own;
 	if (!st)
-		st = band_finish(g, &dl, spec, err, &pl, memo, gs->filter);
+		st = band_finish(g, &dl, sp.spec, sp.err, &pl, memo, gs->filter);
 	if (!st && tw)
-		st = band_finish(tw, &dt, spec, err, &pl, memo, gs->filter);
+		st = band_finish(tw, &dt, sp.spec, sp.err, &pl, memo, gs->filter);
 	anvil_plate_memo_free(own);
-	free(err);
-	free(spec);
+	free(sp.err);
+	free(sp.spec);
 	return st;
 }
 
@@ -652,34 +675,21 @@ static int green_set_compute(struct anvil_green **g, const double *omega, size_t
 			     const struct anvil_green_settings *gs, anvil_progress_fn progress,
 			     void *ctx)
 {
-	double t1 = !gs->no_plate ? anvil_plate_t1(g[0]->hh, g[0]->tau_end) : 0;
-	double t_inv = t1 > 0 ? t1 : g[0]->tau_end, Tp = 2.0 * t_inv, xr;
+	double t1, t_inv = line_window(g[0], gs, &t1), xr;
 	struct anvil_durbin dl[SPECTRA_MAX];
 	struct spectrum sp[SPECTRA_MAX];
 	size_t evals[SPECTRA_MAX];
 	if (anvil_rayleigh_x(g[0]->kap2, &xr, NULL))
 		return ANVIL_ENUM;
-	double scale = 3.0 / (16.0 * (1.0 - g[0]->kap2)) * t_inv; /* half-space ramp */
 	struct plate pl = plate_term(g[0]->mode, g[0]->hh, g[0]->nu);
 	struct quad q = { .mode = g[0]->mode, .kap2 = g[0]->kap2, .nu = g[0]->nu,
 			  .hh = g[0]->hh };
 	int st = ANVIL_OK;
 	size_t made = 0;
-	for (; made < n && !st; made++) {
-		if (anvil_durbin_init(&dl[made], Tp, gs->c0T / Tp, omega[made], 0)) {
-			st = ANVIL_EINVAL;
-			break;
-		}
-		size_t M = dl[made].M;
-		double amp = exp(dl[made].c0 * t_inv) / Tp;
-		sp[made] = (struct spectrum){ .dl = &dl[made], .cr = sqrt(xr), .ktail = gs->ktail,
-					      .epsF = gs->tol * scale / (amp * (double)(M + 1)),
-					      .pl = &pl, .progress = progress, .ctx = ctx,
-					      .patch = g[made]->patch,
-					      .spec = malloc((M + 1) * sizeof(cplx)),
-					      .err = malloc((M + 1) * sizeof(double)) };
-		if (!sp[made].spec || !sp[made].err)
-			st = ANVIL_ENOMEM;
+	while (made < n && !st) {
+		st = spectrum_init(&sp[made], &dl[made], g[made], t_inv, omega[made], sqrt(xr), &pl,
+				   gs, progress, ctx);
+		made++;
 	}
 	if (!st)
 		st = sample_spectra(&q, sp, n, evals);
