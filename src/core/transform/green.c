@@ -17,6 +17,7 @@
 #include "kernel.h"
 #include "layer_bc.h"
 #include "material.h"
+#include "green_spectrum.h"
 #include "plate.h"
 
 typedef double complex cplx;
@@ -53,430 +54,6 @@ void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *
 					     .tol = lv->green_tol, .ktail = lv->green_ktail };
 }
 
-/* The integrands, units mu = c2 = rho = 1, from the one boundary-condition
- * solve (layer_bc.h): the layer correction W - W_hs (its stable form, which
- * decays like exp(-k hh) and is formed without cancellation), and for
- * cross-checks the half-space W_hs = alpha1 s^2 / R less its static limit
- * (1 - nu)/k = 1/(2 k (1 - kappa^2)).  The symmetric/antisymmetric form of
- * W agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2) to
- * rounding (tests/test_green.c). */
-struct kmemo;
-
-struct quad {
-	enum anvil_green_mode mode;
-	double kap2, nu, hh, patch;
-	cplx s;
-	size_t evals;
-	struct kmemo *memo; /* the layer correction's kernel at this s (a set's), or NULL */
-	cplx *seg;          /* the memo's values for the piece being integrated, or NULL */
-	int seg_hit, seg_at; /* they are known (else being filled); the next node's */
-};
-
-/* The layer correction's kernel W(k, s) does not depend on the load's
- * patch: the responses of a set (anvil_green_alloc_set) share it.  At one
- * s their adaptive k-integrals start from the same pieces and bisect them
- * at the same midpoints, so most of their pieces coincide (3.4 pieces of
- * which 1.0 distinct on h = 0.05 r0): a hash table from a piece [a, b]
- * (its bits) to W at its 21 Gauss-Kronrod nodes, in the order the rule
- * asks for them (gk21.c: always the same), emptied for the next s by a
- * new generation.  A value from it is the one the kernel would give: the
- * responses' bits do not depend on which others were computed with them.
- * Hand-written: GSL has no hash table. */
-#define GK_NODES 21
-
-struct kslot {
-	double a, b;
-	unsigned gen;
-	size_t at; /* its values: pool[at .. at + GK_NODES) */
-};
-
-struct kmemo {
-	struct kslot *s;
-	size_t cap, n; /* cap a power of two; n pieces of this generation */
-	unsigned gen;
-	cplx *pool;
-};
-
-#define KMEMO_CAP0 ((size_t)1 << 10)
-#define KMEMO_CAP_MAX ((size_t)1 << 16)
-
-static int kmemo_init(struct kmemo *m)
-{
-	*m = (struct kmemo){ calloc(KMEMO_CAP0, sizeof *m->s), KMEMO_CAP0, 0, 1,
-			     malloc(KMEMO_CAP0 / 2 * GK_NODES * sizeof *m->pool) };
-	return m->s && m->pool;
-}
-
-static void kmemo_free(struct kmemo *m)
-{
-	free(m->s);
-	free(m->pool);
-}
-
-static size_t kmemo_slot(const struct kmemo *m, double a, double b)
-{
-	uint64_t x, y;
-	memcpy(&x, &a, sizeof x);
-	memcpy(&y, &b, sizeof y);
-	size_t i = (size_t)(((x ^ (y * 0xC2B2AE3D27D4EB4Full)) * 0x9E3779B97F4A7C15ull) >> 32) &
-		   (m->cap - 1);
-	while (m->s[i].gen == m->gen && !(m->s[i].a == a && m->s[i].b == b))
-		i = (i + 1) & (m->cap - 1);
-	return i;
-}
-
-static void kmemo_next(struct kmemo *m)
-{
-	m->gen++;
-	m->n = 0;
-}
-
-/* Twice the slots and the pool, this generation's pieces kept; nothing
- * changed when memory is short. */
-static void kmemo_grow(struct kmemo *m)
-{
-	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, m->gen,
-			   realloc(m->pool, m->cap * GK_NODES * sizeof *m->pool) };
-	if (b.pool)
-		m->pool = b.pool;
-	if (!b.s || !b.pool) {
-		free(b.s);
-		return;
-	}
-	for (size_t i = 0; i < m->cap; i++)
-		if (m->s[i].gen == m->gen) {
-			b.s[kmemo_slot(&b, m->s[i].a, m->s[i].b)] = m->s[i];
-			b.n++;
-		}
-	free(m->s);
-	*m = b;
-}
-
-/* The values of piece [a, b] into q->seg: known (seg_hit), or a place to
- * fill; NULL when the table is full (at most half its slots used: the
- * probes stay short). */
-static void kmemo_piece(struct kmemo *m, double a, double b, struct quad *q)
-{
-	size_t i = kmemo_slot(m, a, b);
-	q->seg_at = 0;
-	q->seg = NULL;
-	if (m->s[i].gen == m->gen) {
-		q->seg = m->pool + m->s[i].at;
-		q->seg_hit = 1;
-		return;
-	}
-	if (2 * (m->n + 1) > m->cap && m->cap < KMEMO_CAP_MAX) {
-		kmemo_grow(m);
-		i = kmemo_slot(m, a, b);
-	}
-	if (2 * (m->n + 1) > m->cap)
-		return;
-	m->s[i] = (struct kslot){ a, b, m->gen, m->n * GK_NODES };
-	q->seg = m->pool + m->s[i].at;
-	q->seg_hit = 0;
-	m->n++;
-}
-
-static cplx integrand(double k, void *vq)
-{
-	struct quad *q = vq;
-	struct anvil_layer_bc bc;
-	if (q->mode == ANVIL_GREEN_HALFSPACE) {
-		q->evals++;
-		anvil_layer_bc_solve(k, q->s, q->kap2, INFINITY, &bc);
-		return (k * anvil_layer_bc_w_halfspace(&bc) - 0.5 / (1.0 - q->kap2)) *
-		       anvil_kernel_zhat(k);
-	}
-	cplx w;
-	if (q->seg && q->seg_hit) {
-		w = q->seg[q->seg_at++];
-	} else {
-		q->evals++;
-		anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
-		w = anvil_layer_bc_w_correction(&bc);
-		if (q->seg)
-			q->seg[q->seg_at++] = w;
-	}
-	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
-	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
-	return w * anvil_kernel_zhat(k * q->patch) * k;
-}
-
-/* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
- * integrands only): split the interval with the largest error estimate
- * until the total meets the tolerance.  A binary heap keeps the next
- * interval to split at hand. */
-struct seg {
-	double a, b, err;
-	cplx val;
-};
-
-#define SEG_MAX 8192
-
-struct heap {
-	struct seg s[SEG_MAX];
-	int n;
-};
-
-static void heap_push(struct heap *h, struct seg x)
-{
-	int i = h->n++;
-	while (i > 0 && h->s[(i - 1) / 2].err < x.err) {
-		h->s[i] = h->s[(i - 1) / 2];
-		i = (i - 1) / 2;
-	}
-	h->s[i] = x;
-}
-
-static struct seg heap_pop(struct heap *h)
-{
-	struct seg top = h->s[0], last = h->s[--h->n];
-	int i = 0;
-	for (;;) {
-		int c = 2 * i + 1;
-		if (c >= h->n)
-			break;
-		if (c + 1 < h->n && h->s[c + 1].err > h->s[c].err)
-			c++;
-		if (h->s[c].err <= last.err)
-			break;
-		h->s[i] = h->s[c];
-		i = c;
-	}
-	if (h->n)
-		h->s[i] = last;
-	return top;
-}
-
-static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
-{
-	struct seg x = { .a = a, .b = b };
-	if (q->memo)
-		kmemo_piece(q->memo, a, b, q);
-	anvil_gk21_complex(integrand, q, a, b, &x.val, &x.err);
-	*sum += x.val;
-	*err += x.err;
-	heap_push(h, x);
-}
-
-/* Integrate over [0, kend], starting from pieces of width w0 on [0, kband]
- * (where the Lamb-mode poles are) and w1 beyond; absolute tolerance eps.
- * Returns ANVIL_ETOL (with the best value) when SEG_MAX pieces do not
- * suffice. */
-static int adapt(struct quad *q, struct heap *h, double kband, double kend, double w0,
-		 double w1, double eps, cplx *val, double *abserr)
-{
-	cplx sum = 0;
-	double err = 0;
-	h->n = 0;
-	for (double a = 0; a < kend && h->n < SEG_MAX / 2;) {
-		double w = a < kband ? w0 : w1;
-		double b = fmin(kend, a < kband ? fmin(kband, a + w) : a + w);
-		heap_add(q, h, a, b, &sum, &err);
-		a = b;
-	}
-	while (err > eps && h->n < SEG_MAX - 1) {
-		struct seg x = heap_pop(h);
-		double m = 0.5 * (x.a + x.b);
-		sum -= x.val;
-		err -= x.err;
-		heap_add(q, h, x.a, m, &sum, &err);
-		heap_add(q, h, m, x.b, &sum, &err);
-	}
-	/* re-add from scratch: the running sums drift */
-	sum = 0;
-	err = 0;
-	for (int i = 0; i < h->n; i++) {
-		sum += h->s[i].val;
-		err += h->s[i].err;
-	}
-	*val = sum;
-	*abserr = err;
-	return err <= eps ? ANVIL_OK : ANVIL_ETOL;
-}
-
-
-/* The k-integral at one s = c0 + i omega, to absolute error eps.  The
- * Lamb-mode poles lie within about c0/c_group of the real k axis for k up
- * to about omega/c_A0, where the slowest mode (A0) has phase speed below
- * both c_R and the thin-plate flexural speed: that band starts in small
- * pieces; beyond it the fields are evanescent and the integrand smooth
- * (exp(-2kH) times the period-2pi oscillation of zhat).  The layer
- * correction is O(E1^2) = O(exp(-2 Re(alpha1) hh)) there (layer_bc.c: its
- * numerator is a sum of products of u1 and d, each O(E1)), so it is cut
- * where E1^2, the integrand's own decay, falls below ktail. */
-static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
-		      double cr, double ktail, double eps, cplx *val, double *abserr)
-{
-	double wabs = hypot(omega, creal(q->s));
-	int hs = q->mode == ANVIL_GREEN_HALFSPACE;
-	double kband = anvil_kband(omega, wabs, q->nu, hs ? INFINITY : hh, cr);
-	double L = -log(ktail);
-	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
-			 : fmax(kband, sqrt(pow(0.5 * L / hh, 2) + omega * omega));
-	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
-	 * the band, wider in the smooth tail; the adaptive splitting finds the
-	 * poles from there (the results do not move when these are halved). */
-	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = 4.0;
-	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
-}
-
-/* A layer moves like Zener's plate at late times: its impulse response tends
- * to alpha* (eq 8), in these units sqrt(3 (1 - nu)/2) / (4 hh^2), so its ramp
- * response grows like alpha* t^2/2 and would alias in a periodic inversion.
- * That growth is taken out in the s-domain and put back in time, through
- * the impulse response alpha* (1 - exp(-t/tp)), smooth at t = 0:
- *   ramp  alpha* [t^2/2 - tp t + tp^2 (1 - exp(-t/tp))]  <->  alpha* / (s^3 (1 + s tp)). */
-struct plate {
-	double alpha, tp;
-};
-
-static struct plate plate_term(enum anvil_green_mode mode, double hh, double nu)
-{
-	struct plate pl = { 0.0, 1.0 };
-	if (mode == ANVIL_GREEN_LAYER_CORRECTION) {
-		pl.alpha = sqrt(1.5 * (1 - nu)) / (4.0 * hh * hh);
-		pl.tp = fmax(hh, 0.5);
-	}
-	return pl;
-}
-
-static cplx plate_s(const struct plate *pl, cplx s)
-{
-	return pl->alpha / (s * s * s * (1.0 + s * pl->tp));
-}
-
-static double plate_t(const struct plate *pl, double t)
-{
-	double tp = pl->tp;
-	return pl->alpha * (0.5 * t * t - tp * t - tp * tp * expm1(-t / tp));
-}
-
-/* Fill spec[0..M] with the transform of the ramp response on the line dl,
- * and err[n] with the time-domain bound of term n's quadrature error (the
- * caller sums them in a fixed order).  Each k-integral gets the share epsF
- * of the error budget that keeps the time-domain ramp within tol of its
- * size.  The terms are independent: they run on all cores (OpenMP), each
- * thread with its own heap and quad, so the bits do not depend on the
- * number of threads.  Progress is reported (and cancellation seen) on the
- * calling thread only. */
-struct spectrum {
-	const struct anvil_durbin *dl;
-	double cr, ktail, epsF;
-	const struct plate *pl;
-	anvil_progress_fn progress;
-	void *ctx;
-	double patch; /* the load's (quad.patch) */
-	cplx *spec;   /* out: terms 0..dl->M */
-	double *err;
-};
-
-static int spectrum_term(struct quad *q, struct heap *h, const struct spectrum *sp, size_t n)
-{
-	double e;
-	cplx In;
-	q->s = anvil_durbin_s(sp->dl, n);
-	q->patch = sp->patch;
-	cplx b = q->s * q->s;
-	double s2 = cabs(b);
-	int qs = k_integral(q, h, cimag(q->s), q->hh, sp->cr, sp->ktail, sp->epsF * s2, &In, &e);
-	sp->spec[n] = In / b - plate_s(sp->pl, q->s);
-	sp->err[n] = e / s2;
-	if (!isfinite(creal(sp->spec[n])) || !isfinite(cimag(sp->spec[n])))
-		return ANVIL_ENUM;
-	return qs;
-}
-
-/* The spectra sp[0..nsp-1] (one line: the same s at each n; their bands
- * may differ), term by term, each term's k-integrals one after another on
- * one thread with one kernel memo (kmemo) when there are several; evals[i]
- * the kernel evaluations that sp[i]'s integrals made (memo hits not
- * counted).  Progress and cancellation through sp[0]'s callback. */
-#define SPECTRA_MAX 8
-
-static int sample_spectra(const struct quad *q0, const struct spectrum *sp, size_t nsp,
-			  size_t *evals)
-{
-	size_t M = 0, done = 0;
-	int st = ANVIL_OK, stop = 0;
-	for (size_t i = 0; i < nsp; i++) {
-		M = sp[i].dl->M > M ? sp[i].dl->M : M;
-		evals[i] = 0;
-	}
-#ifdef _OPENMP
-#pragma omp parallel
-#endif
-	{
-		struct quad q = *q0;
-		struct heap *h = malloc(sizeof *h);
-		struct kmemo km = { 0 };
-		size_t nev[SPECTRA_MAX] = { 0 };
-		int mine = h && (nsp == 1 || kmemo_init(&km)) ? ANVIL_OK : ANVIL_ENOMEM;
-		q.memo = nsp > 1 ? &km : NULL;
-		q.seg = NULL;
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 1)
-#endif
-		for (size_t n = 0; n <= M; n++) {
-			int halt, ts = ANVIL_OK;
-#ifdef _OPENMP
-#pragma omp atomic read
-#endif
-			halt = stop;
-			if (halt || mine == ANVIL_ENOMEM)
-				continue;
-			kmemo_next(&km);
-			for (size_t i = 0; i < nsp && ts != ANVIL_ENUM; i++) {
-				if (n > sp[i].dl->M)
-					continue;
-				q.evals = 0;
-				int ti = spectrum_term(&q, h, &sp[i], n);
-				nev[i] += q.evals;
-				if (ti && (ti != ANVIL_ETOL || !ts))
-					ts = ti;
-			}
-			/* ETOL is kept going: the result says how far off it is */
-			if (ts && (ts != ANVIL_ETOL || !mine))
-				mine = ts;
-			size_t nd;
-#ifdef _OPENMP
-#pragma omp atomic capture
-#endif
-			nd = ++done;
-			int master = 1;
-#ifdef _OPENMP
-			master = omp_get_thread_num() == 0;
-#endif
-			if (ts == ANVIL_ENUM || (master && sp->progress && nd % 4 == 0 &&
-						 sp->progress(sp->ctx, (double)nd / (double)(M + 1),
-							      "layer response"))) {
-				if (ts != ANVIL_ENUM)
-					mine = ANVIL_ECANCEL;
-#ifdef _OPENMP
-#pragma omp atomic write
-#endif
-				stop = 1;
-			}
-		}
-		kmemo_free(&km);
-		free(h);
-#ifdef _OPENMP
-#pragma omp critical(anvil_green_status)
-#endif
-		{
-			for (size_t i = 0; i < nsp; i++)
-				evals[i] += nev[i];
-			/* the worst status wins, whichever thread met it: cancel,
-			 * then no memory, then a non-finite term, then a missed tolerance */
-			if (mine == ANVIL_ECANCEL || (mine == ANVIL_ENOMEM && st != ANVIL_ECANCEL) ||
-			    (mine == ANVIL_ENUM && (st == ANVIL_OK || st == ANVIL_ETOL)) ||
-			    (mine == ANVIL_ETOL && st == ANVIL_OK))
-				st = mine;
-		}
-	}
-	return st;
-}
-
 void anvil_green_free(struct anvil_green *g)
 {
 	if (!g)
@@ -491,7 +68,7 @@ void anvil_green_free(struct anvil_green *g)
  * quadrature bounds, summed in order n = 0, 1, ... (fixed: the same bits
  * whatever the threads). */
 static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
-			const double *err, const struct plate *pl, struct anvil_plate_memo *memo)
+			const double *err, const struct green_plate *pl, struct anvil_plate_memo *memo)
 {
 	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
 	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
@@ -518,7 +95,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 		if (g->mode == ANVIL_GREEN_HALFSPACE)
 			g->ramp[j] += 3.0 / (16.0 * (1.0 - g->kap2)) * t;
 		else
-			g->ramp[j] += plate_t(pl, t);
+			g->ramp[j] += green_plate_t(pl, t);
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
 	if (n1 < g->n && (st = anvil_plate_extend_memo(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
@@ -549,7 +126,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
  * it), an error the caller measures as the band's own, by an inversion at
  * half the bandwidth, filtered on its own terms (solver.c). */
 static int band_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
-		       const double *err, const struct plate *pl,
+		       const double *err, const struct green_plate *pl,
 		       struct anvil_plate_memo *memo, int filter)
 {
 	g->filtered = filter != 0;
@@ -592,19 +169,19 @@ static double line_window(const struct anvil_green *g, const struct anvil_green_
  * the level's tolerance on the half-space ramp's scale; spec and err
  * allocated (the caller frees them, also on failure).  ANVIL_EINVAL,
  * ANVIL_ENOMEM. */
-static int spectrum_init(struct spectrum *sp, struct anvil_durbin *dl, const struct anvil_green *g,
-			 double t_inv, double omega, double cr, const struct plate *pl,
+static int spectrum_init(struct green_spectrum *sp, struct anvil_durbin *dl, const struct anvil_green *g,
+			 double t_inv, double omega, double cr, const struct green_plate *pl,
 			 const struct anvil_green_settings *gs, anvil_progress_fn progress,
 			 void *ctx)
 {
 	double Tp = 2.0 * t_inv;
-	*sp = (struct spectrum){ 0 };
+	*sp = (struct green_spectrum){ 0 };
 	if (anvil_durbin_init(dl, Tp, gs->c0T / Tp, omega, 0))
 		return ANVIL_EINVAL;
 	size_t M = dl->M;
 	double scale = 3.0 / (16.0 * (1.0 - g->kap2)) * t_inv; /* half-space ramp */
 	double amp = exp(dl->c0 * t_inv) / Tp;
-	*sp = (struct spectrum){ .dl = dl, .cr = cr, .ktail = gs->ktail,
+	*sp = (struct green_spectrum){ .dl = dl, .cr = cr, .ktail = gs->ktail,
 				 .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = pl,
 				 .progress = progress, .ctx = ctx, .patch = g->patch,
 				 .spec = malloc((M + 1) * sizeof(cplx)),
@@ -624,17 +201,15 @@ static int green_compute(struct anvil_green *g, struct anvil_green *tw,
 {
 	double t1, t_inv = line_window(g, gs, &t1), xr;
 	struct anvil_durbin dl, dt;
-	struct spectrum sp;
+	struct green_spectrum sp;
 	if (tw && anvil_durbin_init(&dt, 2.0 * t_inv, gs->c0T / (2.0 * t_inv), 0.5 * gs->omega_max, 0))
 		return ANVIL_EINVAL;
 	if (anvil_rayleigh_x(g->kap2, &xr, NULL))
 		return ANVIL_ENUM;
-	struct plate pl = plate_term(g->mode, g->hh, g->nu);
-	struct quad q = { .mode = g->mode, .kap2 = g->kap2, .nu = g->nu, .hh = g->hh,
-			  .patch = g->patch };
+	struct green_plate pl = green_plate_term(g->mode, g->hh, g->nu);
 	int st = spectrum_init(&sp, &dl, g, t_inv, gs->omega_max, sqrt(xr), &pl, gs, progress, ctx);
 	if (!st)
-		st = sample_spectra(&q, &sp, 1, &g->evals);
+		st = green_sample_spectra(g->mode, g->kap2, g->nu, g->hh, &sp, 1, &g->evals);
 	/* A k-integral that missed its share of the budget is not fatal: its
 	 * error estimate is in err, hence in abserr, for the caller to judge. */
 	if (st == ANVIL_ETOL)
@@ -676,14 +251,12 @@ static int green_set_compute(struct anvil_green **g, const double *omega, size_t
 			     void *ctx)
 {
 	double t1, t_inv = line_window(g[0], gs, &t1), xr;
-	struct anvil_durbin dl[SPECTRA_MAX];
-	struct spectrum sp[SPECTRA_MAX];
-	size_t evals[SPECTRA_MAX];
+	struct anvil_durbin dl[GREEN_SPECTRA_MAX];
+	struct green_spectrum sp[GREEN_SPECTRA_MAX];
+	size_t evals[GREEN_SPECTRA_MAX];
 	if (anvil_rayleigh_x(g[0]->kap2, &xr, NULL))
 		return ANVIL_ENUM;
-	struct plate pl = plate_term(g[0]->mode, g[0]->hh, g[0]->nu);
-	struct quad q = { .mode = g[0]->mode, .kap2 = g[0]->kap2, .nu = g[0]->nu,
-			  .hh = g[0]->hh };
+	struct green_plate pl = green_plate_term(g[0]->mode, g[0]->hh, g[0]->nu);
 	int st = ANVIL_OK;
 	size_t made = 0;
 	while (made < n && !st) {
@@ -692,7 +265,8 @@ static int green_set_compute(struct anvil_green **g, const double *omega, size_t
 		made++;
 	}
 	if (!st)
-		st = sample_spectra(&q, sp, n, evals);
+		st = green_sample_spectra(g[0]->mode, g[0]->kap2, g[0]->nu, g[0]->hh, sp, n,
+					  evals);
 	if (st == ANVIL_ETOL) /* as green_compute: in err, for the caller to judge */
 		st = ANVIL_OK;
 	struct anvil_plate_memo *own = !gs->plate && t1 > 0 ? anvil_plate_memo_alloc() : NULL;
@@ -717,7 +291,7 @@ int anvil_green_alloc_set(double hh, double nu, double tau_end,
 	int st = ANVIL_OK;
 	for (size_t i = 0; i < n; i++)
 		out[i] = NULL;
-	if (!(n >= 1 && n <= SPECTRA_MAX) || !(nu > -1 && nu < 0.5) || !(tau_end > 0) ||
+	if (!(n >= 1 && n <= GREEN_SPECTRA_MAX) || !(nu > -1 && nu < 0.5) || !(tau_end > 0) ||
 	    !isfinite(tau_end) || !(hh > 0 && isfinite(hh)))
 		st = ANVIL_EINVAL;
 	for (size_t i = 0; !st && i < n; i++)
@@ -726,7 +300,7 @@ int anvil_green_alloc_set(double hh, double nu, double tau_end,
 	if (st)
 		return anvil_err_set(err, st, "layer responses: bad parameters (h/r0 = %g, nu = %g, window %g, %zu loads)",
 				     hh, nu, tau_end, n);
-	double omega[SPECTRA_MAX];
+	double omega[GREEN_SPECTRA_MAX];
 	for (size_t i = 0; !st && i < n; i++) {
 		omega[i] = load[i].omega_max;
 		out[i] = green_new(ANVIL_GREEN_LAYER_CORRECTION, hh, nu, load[i].patch, tau_end);

@@ -1,0 +1,427 @@
+/* green_spectrum.c: the layer response's spectrum (green_spectrum.h). */
+#include <complex.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "gk21.h"
+#include "green_spectrum.h"
+#include "kernel.h"
+#include "layer_bc.h"
+
+typedef double complex cplx;
+
+/* The integrands, units mu = c2 = rho = 1, from the one boundary-condition
+ * solve (layer_bc.h): the layer correction W - W_hs (its stable form, which
+ * decays like exp(-k hh) and is formed without cancellation), and for
+ * cross-checks the half-space W_hs = alpha1 s^2 / R less its static limit
+ * (1 - nu)/k = 1/(2 k (1 - kappa^2)).  The symmetric/antisymmetric form of
+ * W agrees with the paper's D1..D4 (eqs 29-30, gamma = 2k^2 + s^2/c2^2) to
+ * rounding (tests/test_green.c). */
+struct kmemo;
+
+struct quad {
+	enum anvil_green_mode mode;
+	double kap2, nu, hh, patch;
+	cplx s;
+	size_t evals;
+	struct kmemo *memo; /* the layer correction's kernel at this s (a set's), or NULL */
+	cplx *seg;          /* the memo's values for the piece being integrated, or NULL */
+	int seg_hit, seg_at; /* they are known (else being filled); the next node's */
+};
+
+/* The layer correction's kernel W(k, s) does not depend on the load's
+ * patch: the responses of a set (anvil_green_alloc_set) share it.  At one
+ * s their adaptive k-integrals start from the same pieces and bisect them
+ * at the same midpoints, so most of their pieces coincide (3.4 pieces of
+ * which 1.0 distinct on h = 0.05 r0): a hash table from a piece [a, b]
+ * (its bits) to W at its 21 Gauss-Kronrod nodes, in the order the rule
+ * asks for them (gk21.c: always the same), emptied for the next s by a
+ * new generation.  A value from it is the one the kernel would give: the
+ * responses' bits do not depend on which others were computed with them.
+ * Hand-written: GSL has no hash table. */
+#define GK_NODES 21
+
+struct kslot {
+	double a, b;
+	unsigned gen;
+	size_t at; /* its values: pool[at .. at + GK_NODES) */
+};
+
+struct kmemo {
+	struct kslot *s;
+	size_t cap, n; /* cap a power of two; n pieces of this generation */
+	unsigned gen;
+	cplx *pool;
+};
+
+#define KMEMO_CAP0 ((size_t)1 << 10)
+#define KMEMO_CAP_MAX ((size_t)1 << 16)
+
+static int kmemo_init(struct kmemo *m)
+{
+	*m = (struct kmemo){ calloc(KMEMO_CAP0, sizeof *m->s), KMEMO_CAP0, 0, 1,
+			     malloc(KMEMO_CAP0 / 2 * GK_NODES * sizeof *m->pool) };
+	return m->s && m->pool;
+}
+
+static void kmemo_free(struct kmemo *m)
+{
+	free(m->s);
+	free(m->pool);
+}
+
+static size_t kmemo_slot(const struct kmemo *m, double a, double b)
+{
+	uint64_t x, y;
+	memcpy(&x, &a, sizeof x);
+	memcpy(&y, &b, sizeof y);
+	size_t i = (size_t)(((x ^ (y * 0xC2B2AE3D27D4EB4Full)) * 0x9E3779B97F4A7C15ull) >> 32) &
+		   (m->cap - 1);
+	while (m->s[i].gen == m->gen && !(m->s[i].a == a && m->s[i].b == b))
+		i = (i + 1) & (m->cap - 1);
+	return i;
+}
+
+static void kmemo_next(struct kmemo *m)
+{
+	m->gen++;
+	m->n = 0;
+}
+
+/* Twice the slots and the pool, this generation's pieces kept; nothing
+ * changed when memory is short. */
+static void kmemo_grow(struct kmemo *m)
+{
+	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, m->gen,
+			   realloc(m->pool, m->cap * GK_NODES * sizeof *m->pool) };
+	if (b.pool)
+		m->pool = b.pool;
+	if (!b.s || !b.pool) {
+		free(b.s);
+		return;
+	}
+	for (size_t i = 0; i < m->cap; i++)
+		if (m->s[i].gen == m->gen) {
+			b.s[kmemo_slot(&b, m->s[i].a, m->s[i].b)] = m->s[i];
+			b.n++;
+		}
+	free(m->s);
+	*m = b;
+}
+
+/* The values of piece [a, b] into q->seg: known (seg_hit), or a place to
+ * fill; NULL when the table is full (at most half its slots used: the
+ * probes stay short). */
+static void kmemo_piece(struct kmemo *m, double a, double b, struct quad *q)
+{
+	size_t i = kmemo_slot(m, a, b);
+	q->seg_at = 0;
+	q->seg = NULL;
+	if (m->s[i].gen == m->gen) {
+		q->seg = m->pool + m->s[i].at;
+		q->seg_hit = 1;
+		return;
+	}
+	if (2 * (m->n + 1) > m->cap && m->cap < KMEMO_CAP_MAX) {
+		kmemo_grow(m);
+		i = kmemo_slot(m, a, b);
+	}
+	if (2 * (m->n + 1) > m->cap)
+		return;
+	m->s[i] = (struct kslot){ a, b, m->gen, m->n * GK_NODES };
+	q->seg = m->pool + m->s[i].at;
+	q->seg_hit = 0;
+	m->n++;
+}
+
+static cplx integrand(double k, void *vq)
+{
+	struct quad *q = vq;
+	struct anvil_layer_bc bc;
+	if (q->mode == ANVIL_GREEN_HALFSPACE) {
+		q->evals++;
+		anvil_layer_bc_solve(k, q->s, q->kap2, INFINITY, &bc);
+		return (k * anvil_layer_bc_w_halfspace(&bc) - 0.5 / (1.0 - q->kap2)) *
+		       anvil_kernel_zhat(k);
+	}
+	cplx w;
+	if (q->seg && q->seg_hit) {
+		w = q->seg[q->seg_at++];
+	} else {
+		q->evals++;
+		anvil_layer_bc_solve(k, q->s, q->kap2, q->hh, &bc);
+		w = anvil_layer_bc_w_correction(&bc);
+		if (q->seg)
+			q->seg[q->seg_at++] = w;
+	}
+	/* a Hertz patch of radius a r0 has the transform zhat(k a); a point
+	 * (a = 0) 1/(2 pi): the correction's integrand stays finite, exp(-k hh) */
+	return w * anvil_kernel_zhat(k * q->patch) * k;
+}
+
+/* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
+ * integrands only): split the interval with the largest error estimate
+ * until the total meets the tolerance.  A binary heap keeps the next
+ * interval to split at hand. */
+struct seg {
+	double a, b, err;
+	cplx val;
+};
+
+#define SEG_MAX 8192
+
+struct heap {
+	struct seg s[SEG_MAX];
+	int n;
+};
+
+static void heap_push(struct heap *h, struct seg x)
+{
+	int i = h->n++;
+	while (i > 0 && h->s[(i - 1) / 2].err < x.err) {
+		h->s[i] = h->s[(i - 1) / 2];
+		i = (i - 1) / 2;
+	}
+	h->s[i] = x;
+}
+
+static struct seg heap_pop(struct heap *h)
+{
+	struct seg top = h->s[0], last = h->s[--h->n];
+	int i = 0;
+	for (;;) {
+		int c = 2 * i + 1;
+		if (c >= h->n)
+			break;
+		if (c + 1 < h->n && h->s[c + 1].err > h->s[c].err)
+			c++;
+		if (h->s[c].err <= last.err)
+			break;
+		h->s[i] = h->s[c];
+		i = c;
+	}
+	if (h->n)
+		h->s[i] = last;
+	return top;
+}
+
+static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *sum, double *err)
+{
+	struct seg x = { .a = a, .b = b };
+	if (q->memo)
+		kmemo_piece(q->memo, a, b, q);
+	anvil_gk21_complex(integrand, q, a, b, &x.val, &x.err);
+	*sum += x.val;
+	*err += x.err;
+	heap_push(h, x);
+}
+
+/* Integrate over [0, kend], starting from pieces of width w0 on [0, kband]
+ * (where the Lamb-mode poles are) and w1 beyond; absolute tolerance eps.
+ * Returns ANVIL_ETOL (with the best value) when SEG_MAX pieces do not
+ * suffice. */
+static int adapt(struct quad *q, struct heap *h, double kband, double kend, double w0,
+		 double w1, double eps, cplx *val, double *abserr)
+{
+	cplx sum = 0;
+	double err = 0;
+	h->n = 0;
+	for (double a = 0; a < kend && h->n < SEG_MAX / 2;) {
+		double w = a < kband ? w0 : w1;
+		double b = fmin(kend, a < kband ? fmin(kband, a + w) : a + w);
+		heap_add(q, h, a, b, &sum, &err);
+		a = b;
+	}
+	while (err > eps && h->n < SEG_MAX - 1) {
+		struct seg x = heap_pop(h);
+		double m = 0.5 * (x.a + x.b);
+		sum -= x.val;
+		err -= x.err;
+		heap_add(q, h, x.a, m, &sum, &err);
+		heap_add(q, h, m, x.b, &sum, &err);
+	}
+	/* re-add from scratch: the running sums drift */
+	sum = 0;
+	err = 0;
+	for (int i = 0; i < h->n; i++) {
+		sum += h->s[i].val;
+		err += h->s[i].err;
+	}
+	*val = sum;
+	*abserr = err;
+	return err <= eps ? ANVIL_OK : ANVIL_ETOL;
+}
+
+
+/* The k-integral at one s = c0 + i omega, to absolute error eps.  The
+ * Lamb-mode poles lie within about c0/c_group of the real k axis for k up
+ * to about omega/c_A0, where the slowest mode (A0) has phase speed below
+ * both c_R and the thin-plate flexural speed: that band starts in small
+ * pieces; beyond it the fields are evanescent and the integrand smooth
+ * (exp(-2kH) times the period-2pi oscillation of zhat).  The layer
+ * correction is O(E1^2) = O(exp(-2 Re(alpha1) hh)) there (layer_bc.c: its
+ * numerator is a sum of products of u1 and d, each O(E1)), so it is cut
+ * where E1^2, the integrand's own decay, falls below ktail. */
+static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
+		      double cr, double ktail, double eps, cplx *val, double *abserr)
+{
+	double wabs = hypot(omega, creal(q->s));
+	int hs = q->mode == ANVIL_GREEN_HALFSPACE;
+	double kband = anvil_kband(omega, wabs, q->nu, hs ? INFINITY : hh, cr);
+	double L = -log(ktail);
+	double kend = hs ? fmax(kband, pow(wabs * wabs / ktail, 0.25))
+			 : fmax(kband, sqrt(pow(0.5 * L / hh, 2) + omega * omega));
+	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
+	 * the band, wider in the smooth tail; the adaptive splitting finds the
+	 * poles from there (the results do not move when these are halved). */
+	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = 4.0;
+	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
+}
+
+/* A layer moves like Zener's plate at late times: its impulse response tends
+ * to alpha* (eq 8), in these units sqrt(3 (1 - nu)/2) / (4 hh^2), so its ramp
+ * response grows like alpha* t^2/2 and would alias in a periodic inversion.
+ * That growth is taken out in the s-domain and put back in time, through
+ * the impulse response alpha* (1 - exp(-t/tp)), smooth at t = 0:
+ *   ramp  alpha* [t^2/2 - tp t + tp^2 (1 - exp(-t/tp))]  <->  alpha* / (s^3 (1 + s tp)). */
+struct green_plate green_plate_term(enum anvil_green_mode mode, double hh, double nu)
+{
+	struct green_plate pl = { 0.0, 1.0 };
+	if (mode == ANVIL_GREEN_LAYER_CORRECTION) {
+		pl.alpha = sqrt(1.5 * (1 - nu)) / (4.0 * hh * hh);
+		pl.tp = fmax(hh, 0.5);
+	}
+	return pl;
+}
+
+cplx green_plate_s(const struct green_plate *pl, cplx s)
+{
+	return pl->alpha / (s * s * s * (1.0 + s * pl->tp));
+}
+
+double green_plate_t(const struct green_plate *pl, double t)
+{
+	double tp = pl->tp;
+	return pl->alpha * (0.5 * t * t - tp * t - tp * tp * expm1(-t / tp));
+}
+
+/* Fill spec[0..M] with the transform of the ramp response on the line dl,
+ * and err[n] with the time-domain bound of term n's quadrature error (the
+ * caller sums them in a fixed order).  Each k-integral gets the share epsF
+ * of the error budget that keeps the time-domain ramp within tol of its
+ * size.  The terms are independent: they run on all cores (OpenMP), each
+ * thread with its own heap and quad, so the bits do not depend on the
+ * number of threads.  Progress is reported (and cancellation seen) on the
+ * calling thread only. */
+static int spectrum_term(struct quad *q, struct heap *h, const struct green_spectrum *sp, size_t n)
+{
+	double e;
+	cplx In;
+	q->s = anvil_durbin_s(sp->dl, n);
+	q->patch = sp->patch;
+	cplx b = q->s * q->s;
+	double s2 = cabs(b);
+	int qs = k_integral(q, h, cimag(q->s), q->hh, sp->cr, sp->ktail, sp->epsF * s2, &In, &e);
+	sp->spec[n] = In / b - green_plate_s(sp->pl, q->s);
+	sp->err[n] = e / s2;
+	if (!isfinite(creal(sp->spec[n])) || !isfinite(cimag(sp->spec[n])))
+		return ANVIL_ENUM;
+	return qs;
+}
+
+/* The spectra sp[0..nsp-1] (one line: the same s at each n; their bands
+ * may differ), term by term, each term's k-integrals one after another on
+ * one thread with one kernel memo (kmemo) when there are several; evals[i]
+ * the kernel evaluations that sp[i]'s integrals made (memo hits not
+ * counted).  Progress and cancellation through sp[0]'s callback. */
+
+int green_sample_spectra(enum anvil_green_mode mode, double kap2, double nu, double hh,
+			 const struct green_spectrum *sp, size_t nsp, size_t *evals)
+{
+	const struct quad q0 = { .mode = mode, .kap2 = kap2, .nu = nu, .hh = hh };
+	size_t M = 0, done = 0;
+	int st = ANVIL_OK, stop = 0;
+	for (size_t i = 0; i < nsp; i++) {
+		M = sp[i].dl->M > M ? sp[i].dl->M : M;
+		evals[i] = 0;
+	}
+#ifdef _OPENMP
+#pragma omp parallel
+#endif
+	{
+		struct quad q = q0;
+		struct heap *h = malloc(sizeof *h);
+		struct kmemo km = { 0 };
+		size_t nev[GREEN_SPECTRA_MAX] = { 0 };
+		int mine = h && (nsp == 1 || kmemo_init(&km)) ? ANVIL_OK : ANVIL_ENOMEM;
+		q.memo = nsp > 1 ? &km : NULL;
+		q.seg = NULL;
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+		for (size_t n = 0; n <= M; n++) {
+			int halt, ts = ANVIL_OK;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+			halt = stop;
+			if (halt || mine == ANVIL_ENOMEM)
+				continue;
+			kmemo_next(&km);
+			for (size_t i = 0; i < nsp && ts != ANVIL_ENUM; i++) {
+				if (n > sp[i].dl->M)
+					continue;
+				q.evals = 0;
+				int ti = spectrum_term(&q, h, &sp[i], n);
+				nev[i] += q.evals;
+				if (ti && (ti != ANVIL_ETOL || !ts))
+					ts = ti;
+			}
+			/* ETOL is kept going: the result says how far off it is */
+			if (ts && (ts != ANVIL_ETOL || !mine))
+				mine = ts;
+			size_t nd;
+#ifdef _OPENMP
+#pragma omp atomic capture
+#endif
+			nd = ++done;
+			int master = 1;
+#ifdef _OPENMP
+			master = omp_get_thread_num() == 0;
+#endif
+			if (ts == ANVIL_ENUM || (master && sp->progress && nd % 4 == 0 &&
+						 sp->progress(sp->ctx, (double)nd / (double)(M + 1),
+							      "layer response"))) {
+				if (ts != ANVIL_ENUM)
+					mine = ANVIL_ECANCEL;
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+				stop = 1;
+			}
+		}
+		kmemo_free(&km);
+		free(h);
+#ifdef _OPENMP
+#pragma omp critical(anvil_green_status)
+#endif
+		{
+			for (size_t i = 0; i < nsp; i++)
+				evals[i] += nev[i];
+			/* the worst status wins, whichever thread met it: cancel,
+			 * then no memory, then a non-finite term, then a missed tolerance */
+			if (mine == ANVIL_ECANCEL || (mine == ANVIL_ENOMEM && st != ANVIL_ECANCEL) ||
+			    (mine == ANVIL_ENUM && (st == ANVIL_OK || st == ANVIL_ETOL)) ||
+			    (mine == ANVIL_ETOL && st == ANVIL_OK))
+				st = mine;
+		}
+	}
+	return st;
+}
+
