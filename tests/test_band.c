@@ -3,7 +3,7 @@
  * The plan sizes the corrections' band by the Hertz pulse and, for the
  * physical row, by the force's rise too (plan.c, phys_band: Zener's
  * t_max); the solver doubles it while P_max's estimate misses the target
- * mostly through the band (solver.c, run_physical).  On h = 0.1 r0
+ * mostly through the band (solver_phys.c, run_physical).  On h = 0.1 r0
  * (copper rod, 12.2 g, 10 m/s) the force peaks at 6 us of a 13 ms
  * contact: at the pulse's band P_max was 158.3 +- 10 N (exit 1), the
  * converged value 154.758 N. */

@@ -142,7 +142,7 @@ static void physical_sample(void)
 
 /* Bench section 13's long contacts (physical, normal; the 100 kg scene is
  * refused when planned and left out): the four corrections made as the
- * solver makes them (one set: solver.c phys_prefetch), their evaluations against
+ * solver makes them (one set: solver_phys.c phys_prefetch), their evaluations against
  * anvil_plan_phys_evals within 2x, and each one's time samples (what a long
  * window costs beyond its evaluations) equal to anvil_plan_corr_samples:
  * the pieces the planner's seconds are made of (plan_work.c). */

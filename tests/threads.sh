@@ -26,7 +26,7 @@ for args in "-s layer.thickness=1r0 -s impact.velocity=10m/s" \
 done
 # The physical row warm (its responses from the disk cache): the row's
 # impact and its error estimate's four run side by side on the threads
-# (solver.c phys_rounds); cold, the error runs only after the row's own.
+# (solver_phys.c phys_rounds); cold, the error runs only after the row's own.
 # Every column but time_s, against a cold run, with 1 and 2 threads.
 physical() {
 	"$ANVIL" run -q -m layer -s effects.contact=physical --format tsv "$@" |

@@ -558,7 +558,7 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
  * plate P peaks in the impact's first microseconds, which Zener's t_max
  * follows (4.15 us against the layer's 6.24 at h = 0.1 r0, 12.2 g,
  * 10 m/s; Hertz's 19.8), and the pulse's band missed that peak by 2 % at
- * normal, its estimate 6 % (solver.c, run_physical, which widens the band
+ * normal, its estimate 6 % (solver_phys.c, run_physical, which widens the band
  * further when the estimate still misses). */
 static void phys_band(const struct est *e, struct anvil_wave_job *j)
 {
@@ -707,7 +707,7 @@ static int thin_refuse(const struct anvil_params *p, enum anvil_model m, struct 
 			     anvil_model_name(m), a * 1e3, p->h * 1e3, a / p->h);
 }
 
-/* The physical row of a wave model m (solver.c's run_physical): no
+/* The physical row of a wave model m (solver_phys.c's run_physical): no
  * approximation to choose, its own model is cheap.  A finite layer gets the
  * layer job (the solver adds the point load's correction when the bottom
  * reflection returns inside the window: causality) with the corrections

@@ -345,7 +345,7 @@ double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
 			     enum anvil_accuracy acc);
 /* The same for the physical contact's layer row (its four corrections,
  * made as one set that evaluates the kernel once for all: plan.c
- * physical_cost, solver.c phys_prefetch) of the row's job j, patch j->patch, Poisson ratio
+ * physical_cost, solver_phys.c phys_prefetch) of the row's job j, patch j->patch, Poisson ratio
  * nu, at level acc, those found in cache (may be NULL) left out; *where
  * says where the responses are (NONE when any is to be made).
  * tests/test_work.c holds it to the solver's count within 2x. */

@@ -113,7 +113,7 @@ static double plate_nodes(double hh, double tau_end)
 #define PHYS_COST_SAMPLE 6.4e-8
 #define PHYS_COST_NODE 1.1e-4
 
-/* The physical contact's layer row (solver.c physical_impact and
+/* The physical contact's layer row (solver_phys.c physical_impact and
  * physical_errors): four corrections (the point load and the Hertz patch at
  * the job's bandwidth, the patch below, the point load at half the band),
  * each a little dearer than the r0 patch's response (the point load's
@@ -121,7 +121,7 @@ static double plate_nodes(double hh, double tau_end)
  * 0.3-9, 3 g-0.3 kg, 0.3-30 m/s: predicted/actual evaluations 0.8-1.15;
  * the price of the r0 response alone was 3.6-5.2 times short).  Corrections
  * already in the cache cost nothing.  Those missing are made as one set
- * (solver.c phys_prefetch, green.h anvil_green_alloc_set): the kernel is
+ * (solver_phys.c phys_prefetch, green.h anvil_green_alloc_set): the kernel is
  * evaluated once per node for all of them, so the set's evaluations are
  * those of its widest (the others' own nodes were 0.01-0.03 % of them on
  * bench section 13), and each other member's integrand calls cost a

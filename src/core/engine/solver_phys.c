@@ -385,7 +385,7 @@ static void phys_rounds(struct anvil_solver *s, const struct anvil_problem *pb,
 	}
 }
 
-/* The errors of the layer correction (solver.c's run_physical): the
+/* The errors of the layer correction (run_physical, below): the
  * O(a^4) remainder of the true radius, and the correction's own, by
  * halving the bandwidth (point loads, as run_waves does).
  * The remainder: with w(a) = w0 + a^2 w2 + a^4 w4 and the a^2 term fitted

@@ -75,7 +75,7 @@ struct anvil_impact_opts {
 	 * radius, w(a) = w(0) + a^2 w2 + O(a^4), and the load applied at t' has
 	 * the radius a(t'), a^2 = R alpha_H(t'): so each past load acts through
 	 * ramp + (alpha_H(t')/alpha_ref) (ramp2 - ramp), the true radius to
-	 * O(a^4).  The caller estimates that remainder (solver.c).  The past's
+	 * O(a^4).  The caller estimates that remainder (solver_phys.c).  The past's
 	 * sums are online fast convolutions (fastconv.h) of P against ramp's
 	 * weights and of the loads' alpha_H/alpha_ref P against ramp2's less
 	 * ramp's; the physical pass follows repeated contacts as the implicit
@@ -100,7 +100,7 @@ struct anvil_impact_opts {
 	 * gain is at most 1/tau_lag at every frequency up to Nyquist: the loop
 	 * gain is then at most beta k^2 sup|G| / tau_lag, of order 0.01 a/h,
 	 * whatever dt.  The change is of the order the lag's own next term;
-	 * the caller measures it by halving tau_lag (solver.c). */
+	 * the caller measures it by halving tau_lag (solver_phys.c). */
 	double tau_lag;
 	/* Separations below the scheme's resolution (implicit and physical;
 	 * 0: none merged).  A separation whose gap never exceeds merge_gap

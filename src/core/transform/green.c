@@ -124,7 +124,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
  * (durbin.h, the field's) makes the cut smooth, so the kernel holds no
  * lasting ringing; it takes the top of the band (weight 0.87 at half of
  * it), an error the caller measures as the band's own, by an inversion at
- * half the bandwidth, filtered on its own terms (solver.c). */
+ * half the bandwidth, filtered on its own terms (solver_phys.c). */
 static int band_finish(struct anvil_green *g, const struct anvil_durbin *dl, const cplx *spec,
 		       const double *err, const struct green_plate *pl,
 		       struct anvil_plate_memo *memo, int filter)
