@@ -691,7 +691,7 @@ static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_r
  * plate is softer at the contact than the layer (no local compression
  * beyond Hertz's), so its radius is the smaller: the refusal is
  * conservative (measured: a_Zener/a 0.72-1.0 on h = 0.02-0.25 r0); the
- * solver checks the computed force as well (solver.c, thin_check).  When
+ * solver checks the computed force as well (solver_phys.c, thin_check).  When
  * Zener's ODE does not finish, the solver alone decides. */
 static int thin_refuse(const struct anvil_params *p, enum anvil_model m, struct anvil_err *err)
 {
