@@ -1,11 +1,12 @@
-/* plot_rf.c: the restitution charts (R_f against h/r0 and against
- * lambda*) and the accuracy chart.  See plot.h for the contract. */
+/* plot_rf.c: the restitution charts (R_f against h/r0, against lambda*
+ * and, from sweeps, against V0) and the accuracy chart.  See plot.h for the contract. */
 #ifdef HAVE_CONFIG_H
 #include "config.h"
 #endif
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "zener.h"
@@ -461,4 +462,189 @@ int plot_chart_accuracy(struct plot_chart *c,
 	snprintf(c->footnote, sizeof c->footnote,
 		 "error: change to the next finer level; the finest: its own estimate");
 	return st ? st : any ? ANVIL_OK : ANVIL_EINVAL;
+}
+
+/* ------------------------------------------- R_f against V0 (sweeps) */
+
+/* The V0 axis: the velocities run, end to end (gnuplot would widen a log
+ * axis to whole decades), ticked at 1, 2, 5 times the powers of ten. */
+static void rf_v_axis(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	static const double m[] = {1, 2, 5};
+	double lo = INFINITY, hi = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]) && runs[i].V0 > 0 && isfinite(runs[i].V0)) {
+			lo = fmin(lo, runs[i].V0);
+			hi = fmax(hi, runs[i].V0);
+		}
+	if (!(hi > lo))
+		return; /* one velocity or none: the kind's own axis */
+	int k = snprintf(c->setup, sizeof c->setup, "set xrange [%.6g:%.6g]\nset xtics (", lo, hi);
+	for (int e = (int)floor(log10(lo)), first = 1; e <= (int)ceil(log10(hi)); e++)
+		for (int i = 0; i < 3; i++) {
+			double v = m[i] * pow(10, e);
+			if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9) && k > 0 && (size_t)k + 32 < sizeof c->setup) {
+				k += snprintf(c->setup + k, sizeof c->setup - (size_t)k, "%s%g", first ? "" : ", ", v);
+				first = 0;
+			}
+		}
+	if (k > 0 && (size_t)k + 4 < sizeof c->setup)
+		snprintf(c->setup + k, sizeof c->setup - (size_t)k, ")\n");
+	else
+		c->setup[0] = '\0';
+}
+
+/* The distinct finite thicknesses of the layer runs, sorted. */
+static int rf_v_thicknesses(const struct plot_run *runs, int n, double *h, int max)
+{
+	int nh = 0;
+	for (int i = 0; i < n; i++) {
+		if (!ok_run(&runs[i]) || runs[i].model != ANVIL_MODEL_LAYER || !isfinite(runs[i].h_r0))
+			continue;
+		int j = 0;
+		while (j < nh && h[j] < runs[i].h_r0)
+			j++;
+		if ((j < nh && h[j] == runs[i].h_r0) || nh == max)
+			continue;
+		memmove(h + j + 1, h + j, (size_t)(nh - j) * sizeof *h);
+		h[j] = runs[i].h_r0;
+		nh++;
+	}
+	return nh;
+}
+
+/* The (V0, R_f) of model m at thickness h (any h for the half-space),
+ * sorted by V0, one point per V0. */
+static size_t rf_v_points(const struct plot_run *runs, int n, enum anvil_model m, double h,
+			  double *x, double *y)
+{
+	size_t k = 0;
+	for (int i = 0; i < n; i++) {
+		const struct plot_run *r = &runs[i];
+		if (!ok_run(r) || r->model != m || (m != ANVIL_MODEL_HALFSPACE && r->h_r0 != h) ||
+		    !isfinite(r->r->Rf.val))
+			continue;
+		size_t j = 0;
+		while (j < k && x[j] < r->V0)
+			j++;
+		if (j < k && x[j] == r->V0)
+			continue;
+		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
+		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
+		x[j] = r->V0;
+		y[j] = r->r->Rf.val;
+		k++;
+	}
+	return k;
+}
+
+int plot_chart_rf_velocity(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	double h[PLOT_MAX_KEYS], *x = malloc((size_t)(n + 1) * sizeof *x), *y = malloc((size_t)(n + 1) * sizeof *y);
+	int st = ANVIL_OK, any = 0;
+	plot_chart_init(c, PLOT_RESTITUTION_VELOCITY);
+	snprintf(c->title, sizeof c->title, "Coefficient of restitution R_f against impact velocity V_0");
+	rf_v_axis(c, runs, n);
+	if (!x || !y) {
+		free(x);
+		free(y);
+		return ANVIL_ENOMEM;
+	}
+	int nh = rf_v_thicknesses(runs, n, h, PLOT_MAX_KEYS - 3);
+	/* the half-space first: a band under the layers that approach it */
+	size_t k = rf_v_points(runs, n, ANVIL_MODEL_HALFSPACE, 0, x, y);
+	if (k > 0) {
+		plot_chart_key(c, "half-space, h = ∞", PLOT_BAND, PLOT_BLACK, 0);
+		st = plot_chart_add(c, "", PLOT_BAND, PLOT_BLACK, x, y, k, 1, 1, 1);
+		any = 1;
+	}
+	for (int i = 0; i < nh; i++) {
+		char label[PLOT_LABEL_MAX];
+		snprintf(label, sizeof label, "h = %.3g r_0", h[i]);
+		plot_chart_key(c, label, PLOT_LINE, plot_h_colour(h[i]), 0);
+	}
+	for (int i = 0; i < nh && !st; i++) {
+		int col = plot_h_colour(h[i]);
+		if ((k = rf_v_points(runs, n, ANVIL_MODEL_ZENER, h[i], x, y)) > 0)
+			st = plot_chart_add(c, "", PLOT_DASH, col, x, y, k, 1, 1, 1);
+		if (!st && (k = rf_v_points(runs, n, ANVIL_MODEL_LAYER, h[i], x, y)) > 0) {
+			st = plot_chart_add(c, "", PLOT_LINE, col, x, y, k, 1, 1, 1);
+			if (!st)
+				st = plot_chart_add(c, "", PLOT_POINTS, col, x, y, k, 1, 1, 1);
+			any = 1;
+		}
+	}
+	plot_chart_key(c, "layer (transform), anvil's points", PLOT_LINESPOINTS, PLOT_BLACK, 0);
+	plot_chart_key(c, "Zener's plate", PLOT_DASH, PLOT_BLACK, 0);
+	free(x);
+	free(y);
+	return st ? st : any ? ANVIL_OK : ANVIL_EINVAL;
+}
+
+/* The (V0, R_f) of model m in group g, sorted by V0, one point per V0. */
+static size_t rf_g_points(const struct plot_run *runs, const int *group, int n, enum anvil_model m,
+			  int g, double *x, double *y)
+{
+	size_t k = 0;
+	for (int i = 0; i < n; i++) {
+		const struct plot_run *r = &runs[i];
+		if (!ok_run(r) || r->model != m || group[i] != g || !isfinite(r->r->Rf.val))
+			continue;
+		size_t j = 0;
+		while (j < k && x[j] < r->V0)
+			j++;
+		if (j < k && x[j] == r->V0)
+			continue;
+		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
+		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
+		x[j] = r->V0;
+		y[j] = r->r->Rf.val;
+		k++;
+	}
+	return k;
+}
+
+int plot_chart_rf_velocity_groups(struct plot_chart *c, const struct plot_run *runs, int n,
+				  const int *group, const char *const *label, int ngroups)
+{
+	double *x = malloc((size_t)(n + 1) * sizeof *x), *y = malloc((size_t)(n + 1) * sizeof *y);
+	int st = ANVIL_OK, any = 0, hs = 0, zener = 0;
+	plot_chart_init(c, PLOT_RESTITUTION_VELOCITY);
+	snprintf(c->title, sizeof c->title, "Coefficient of restitution R_f against impact velocity V_0");
+	rf_v_axis(c, runs, n);
+	if (!x || !y || ngroups > PLOT_MAX_GROUPS) {
+		free(x);
+		free(y);
+		return ngroups > PLOT_MAX_GROUPS ? ANVIL_EINVAL : ANVIL_ENOMEM;
+	}
+	/* the half-spaces first: bands under the layers that approach them */
+	for (int g = 0; g < ngroups && !st; g++) {
+		size_t k = rf_g_points(runs, group, n, ANVIL_MODEL_HALFSPACE, g, x, y);
+		if (k > 0)
+			st = plot_chart_add(c, "", PLOT_BAND, g, x, y, k, 1, 1, 1);
+		hs |= k > 0;
+	}
+	for (int g = 0; g < ngroups; g++)
+		plot_chart_key(c, label[g], PLOT_LINE, g, 0);
+	for (int g = 0; g < ngroups && !st; g++) {
+		size_t k = rf_g_points(runs, group, n, ANVIL_MODEL_ZENER, g, x, y);
+		if (k > 0)
+			st = plot_chart_add(c, "", PLOT_DASH, g, x, y, k, 1, 1, 1);
+		zener |= k > 0;
+		if (!st && (k = rf_g_points(runs, group, n, ANVIL_MODEL_LAYER, g, x, y)) > 0) {
+			st = plot_chart_add(c, "", PLOT_LINE, g, x, y, k, 1, 1, 1);
+			if (!st)
+				st = plot_chart_add(c, "", PLOT_POINTS, g, x, y, k, 1, 1, 1);
+			any = 1;
+		}
+	}
+	/* the models' styles once, in black (the band in the grey of a band) */
+	plot_chart_key(c, "layer (transform), anvil's points", PLOT_LINESPOINTS, PLOT_BLACK, 0);
+	if (zener)
+		plot_chart_key(c, "Zener's plate", PLOT_DASH, PLOT_BLACK, 0);
+	if (hs)
+		plot_chart_key(c, "half-space (band, the pair's tint)", PLOT_BAND, PLOT_BLACK, 0);
+	free(x);
+	free(y);
+	return st ? st : any || hs ? ANVIL_OK : ANVIL_EINVAL;
 }
