@@ -26,12 +26,17 @@
  * half-space.  When Zener's ODE cannot finish (lambda* >> 1, the impactor
  * then slows like exp(-t/(m1 alpha*)) = exp(-t/(lambda* T))), a few of
  * those decay times. */
-static double contact_estimate(const struct anvil_params *p, int layer, double t_hertz)
+static double contact_estimate(const struct anvil_params *p, int layer, double t_hertz,
+			       double *t_rise)
 {
 	struct anvil_zener_sol zs;
 	double lam = layer ? p->lambda_star : 0.0;
-	if (anvil_zener_solve(lam, 1e-8, &zs, NULL) == ANVIL_OK && isfinite(zs.tau_s))
+	*t_rise = 0;
+	if (anvil_zener_solve(lam, 1e-8, &zs, NULL) == ANVIL_OK && isfinite(zs.tau_s)) {
+		if (zs.tau_max > 0 && isfinite(zs.tau_max))
+			*t_rise = zs.tau_max * p->T;
 		return fmax(zs.tau_s * p->T, t_hertz);
+	}
 	return fmax(3.0 * lam * p->T, t_hertz);
 }
 
@@ -47,13 +52,15 @@ static void wave_job(const struct anvil_problem *pb, int layer, double ts,
 		lev = anvil_level(ANVIL_ACC_NORMAL);
 	double t_hertz = anvil_hertz_tau_s() * p->T;
 	int lay = layer && isfinite(p->h);
+	double t_rise = 0;
 	if (!(ts > 0))
-		ts = contact_estimate(p, lay, t_hertz);
+		ts = contact_estimate(p, lay, t_hertz, &t_rise);
 	double tchar = fmin(ts, t_hertz); /* sets the bandwidth and the step */
 	*j = (struct anvil_wave_job){ 0 };
 	j->hh = lay ? pb->hh : INFINITY;
 	j->ts = ts;
 	j->tau_s = ts * p->c2 / p->r0;
+	j->t_rise = t_rise;
 	j->omega = fmax(lev->omega_min, lev->cycles / (tchar * p->c2 / p->r0));
 	j->omega_idx = anvil_cache_grid_up(j->omega);
 	j->twin_idx = j->omega_idx - ANVIL_CACHE_STEPS;
@@ -562,12 +569,10 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
  * further when the estimate still misses). */
 static void phys_band(const struct est *e, struct anvil_wave_job *j)
 {
-	struct anvil_zener_sol zs;
 	const struct anvil_level *lev = anvil_level(e->pb->accuracy);
-	if (!lev || anvil_zener_solve(e->p.lambda_star, 1e-8, &zs, NULL) != ANVIL_OK ||
-	    !(zs.tau_max > 0) || !isfinite(zs.tau_max))
+	if (!lev || !(j->t_rise > 0))
 		return;
-	double om = lev->cycles / (2.0 * zs.tau_max * e->p.T * e->p.c2 / e->p.r0);
+	double om = lev->cycles / (2.0 * j->t_rise * e->p.c2 / e->p.r0);
 	if (om > j->omega) {
 		j->omega = om;
 		j->omega_idx = anvil_cache_grid_up(om);

@@ -85,6 +85,8 @@ struct anvil_wave_job {
 	double hh;       /* h/r0; INFINITY for a half-space (no correction) */
 	double ts;       /* contact time estimate, s */
 	double tau_s;    /* the same in tau = t c2/r0 */
+	double t_rise;   /* Zener's t_max, s, when the estimate solved his ODE, else 0
+			    (the physical row's band, plan.c phys_band) */
 	double omega;    /* bandwidth of the layer correction (dimensionless) */
 	int omega_idx;   /* the cache grid index that covers it */
 	int twin_idx;    /* the coarse twin's (half the bandwidth: the error estimate) */
