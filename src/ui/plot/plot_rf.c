@@ -515,6 +515,22 @@ static int rf_v_thicknesses(const struct plot_run *runs, int n, double *h, int m
 
 /* The (V0, R_f) of model m at thickness h (any h for the half-space),
  * sorted by V0, one point per V0. */
+/* (v, rf) into the k points x, y sorted by x (a velocity already there
+ * keeps its first value); the new count. */
+static size_t v_insert(double *x, double *y, size_t k, double v, double rf)
+{
+	size_t j = 0;
+	while (j < k && x[j] < v)
+		j++;
+	if (j < k && x[j] == v)
+		return k;
+	memmove(x + j + 1, x + j, (k - j) * sizeof *x);
+	memmove(y + j + 1, y + j, (k - j) * sizeof *y);
+	x[j] = v;
+	y[j] = rf;
+	return k + 1;
+}
+
 static size_t rf_v_points(const struct plot_run *runs, int n, enum anvil_model m, double h,
 			  double *x, double *y)
 {
@@ -524,16 +540,7 @@ static size_t rf_v_points(const struct plot_run *runs, int n, enum anvil_model m
 		if (!ok_run(r) || r->model != m || (m != ANVIL_MODEL_HALFSPACE && r->h_r0 != h) ||
 		    !isfinite(r->r->Rf.val))
 			continue;
-		size_t j = 0;
-		while (j < k && x[j] < r->V0)
-			j++;
-		if (j < k && x[j] == r->V0)
-			continue;
-		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
-		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
-		x[j] = r->V0;
-		y[j] = r->r->Rf.val;
-		k++;
+		k = v_insert(x, y, k, r->V0, r->r->Rf.val);
 	}
 	return k;
 }
@@ -590,16 +597,7 @@ static size_t rf_g_points(const struct plot_run *runs, const int *group, int n, 
 		const struct plot_run *r = &runs[i];
 		if (!ok_run(r) || r->model != m || group[i] != g || !isfinite(r->r->Rf.val))
 			continue;
-		size_t j = 0;
-		while (j < k && x[j] < r->V0)
-			j++;
-		if (j < k && x[j] == r->V0)
-			continue;
-		memmove(x + j + 1, x + j, (k - j) * sizeof *x);
-		memmove(y + j + 1, y + j, (k - j) * sizeof *y);
-		x[j] = r->V0;
-		y[j] = r->r->Rf.val;
-		k++;
+		k = v_insert(x, y, k, r->V0, r->r->Rf.val);
 	}
 	return k;
 }
