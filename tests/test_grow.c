@@ -120,6 +120,50 @@ static int run_hist(const struct dash *d, double dt, size_t grow_after, int phys
 	return st;
 }
 
+/* A smooth kernel that is not a polynomial (the far field's Chebyshev
+ * interpolant is then not exact): the dashpot plus b t log(1 + t/t1), a
+ * compliance b relaxing over t1 (the plate's t log t term, softened). */
+struct dlog {
+	struct dash d;
+	double b, t1;
+};
+
+static int dlog_ramp(void *ctx, double tau, double *val)
+{
+	const struct dlog *q = ctx;
+	const struct anvil_params *p = q->d.p;
+	double t = tau * p->r0 / p->c2;
+	int st = dash_ramp((void *)&q->d, tau, val);
+	*val += p->mu * p->c2 * q->b * t * log1p(t / q->t1);
+	return st;
+}
+
+/* A run in long mode (impact.h t_smooth; max_steps bounds the nodes) or
+ * not (max_steps 0: as run()), on ramp over a window of win T. */
+static int run_long(const struct dash *d, anvil_ramp_fn ramp, void *ctx, double dt,
+		    size_t grow_after, int physical, size_t max_steps, double win,
+		    struct anvil_result *r)
+{
+	const struct anvil_params *p = d->p;
+	struct anvil_impact_opts o = { .scheme = ANVIL_SCHEME_IMPLICIT, .dt = dt,
+				       .max_steps = max_steps ? max_steps : 100000000,
+				       .grow_after = grow_after,
+				       .grow_eta = (M_PI / 400) * (M_PI / 400),
+				       .physical = physical, .beta = 0,
+				       .t_smooth = max_steps ? 0.5 * p->T : 0.0 };
+	if (physical) { /* with the loads' Q: ramp2 a stiffer one */
+		o.ramp2 = ramp;
+		o.ramp2_ctx = ctx;
+		o.alpha_ref = 2e-6;
+	}
+	struct anvil_err e;
+	anvil_result_init(r, ANVIL_MODEL_LAYER);
+	int st = anvil_impact_run(p, ramp, ctx, win * p->T * p->c2 / p->r0, &o, r, &e);
+	if (st)
+		diag("impact: %s", e.msg);
+	return st;
+}
+
 static int run(const struct dash *d, double dt, size_t grow_after, int physical,
 	       const struct dash *d2, struct anvil_result *r)
 {
@@ -137,7 +181,7 @@ static int within(const struct anvil_result *a, double ts, double Pmax, double R
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(9);
+	plan(13);
 	struct anvil_params p;
 	paper_params(&p, INFINITY, 10);
 	/* the dashpot drains the impactor's momentum over about 10 T */
@@ -211,6 +255,56 @@ int main(void)
 	   "grown run's history: times rising, 0 <= P <= P_max, P = 0 at t_s, its impulse m1 (V0 + V_s) to %.1e",
 	   fabs(imp / want - 1));
 	anvil_result_free(&gh);
+	/* long mode (impact.h t_smooth): the far field against the exact
+	 * weights, on a kernel it interpolates (not a polynomial); 300 T at
+	 * T/400 is 120000 steps, the long run may make 20000 nodes */
+	struct dlog q = { { &p, d.c }, 0.2 * p.T / d.c, 2.0 * p.T };
+	struct anvil_result le, ll, lp, lq, lo;
+	st = run_long(&d, dlog_ramp, &q, dt, ga, 0, 0, 300, &le) ||
+	     run_long(&d, dlog_ramp, &q, dt, ga, 0, 20000, 300, &ll);
+	double dl = fabs(ll.ts.val - le.ts.val) / le.ts.val, dp = fabs(ll.Pmax.val / le.Pmax.val - 1);
+	ok(!st && ll.ts.val != le.ts.val && dl < 0.1 * le.ts.err / le.ts.val && dp < 1e-6 &&
+	   fabs(ll.Rf.val - le.Rf.val) < 0.1 * le.Rf.err,
+	   "long mode (20000 nodes for a 120000-step window): the far field moves t_s by %.1e, P_max by %.1e (under a tenth of the exact weights' estimates)",
+	   dl, dp);
+	diag("long: t_s = %.10g T, exact %.10g T (%.2g); R_f %.10g / %.10g", ll.ts.val / p.T,
+	     le.ts.val / p.T, le.ts.err / p.T, ll.Rf.val, le.Rf.val);
+	st = run_long(&d, dlog_ramp, &q, dt, ga, 1, 0, 300, &lp) ||
+	     run_long(&d, dlog_ramp, &q, dt, ga, 1, 20000, 300, &lq);
+	ok(!st && fabs(lq.ts.val - lp.ts.val) < 0.1 * lp.ts.err &&
+	   fabs(lq.Rf.val - lp.Rf.val) < 0.1 * lp.Rf.err,
+	   "long mode, physical pass with the loads' Q: t_s moves %.1e", fabs(lq.ts.val / lp.ts.val - 1));
+	/* a window no fixed-step table holds: 1e5 T at T/400 (4e7 steps; the
+	 * two passes' tables 1.2e8 samples) on 50000 nodes, a dashpot three
+	 * times softer with the log term, against the exact weights over a
+	 * window of 1000 T that holds the contact */
+	struct dlog q3 = { { &p, d.c / 3.0 }, 0.2 * p.T / d.c, 2.0 * p.T };
+	struct anvil_result lx;
+	st = run_long(&q3.d, dlog_ramp, &q3, dt, ga, 0, 0, 1000, &lx) ||
+	     run_long(&q3.d, dlog_ramp, &q3, dt, ga, 0, 50000, 1e5, &lo);
+	/* the windows' ends differ, so do the steps' schedules near the
+	 * contact's end (impact_grow_due): the two agree within their
+	 * estimates, and the long one meets normal's target */
+	ok(!st && within(&lo, lx.ts.val, lx.Pmax.val, lx.Rf.val, lo.ts.err + lx.ts.err,
+			 lo.Pmax.err + lx.Pmax.err, lo.Rf.err + lx.Rf.err) &&
+	   lo.ts.err <= 1e-3 * lo.ts.val,
+	   "a window of 4e7 steps in long mode: the %.0f T contact as the exact weights have it over 1000 T (t_s %.1e, R_f %.1e off)",
+	   lx.ts.val / p.T, fabs(lo.ts.val / lx.ts.val - 1), fabs(lo.Rf.val - lx.Rf.val));
+	diag("long window: t_s = %.10g T (%.2g), R_f = %.10g (%.2g); exact %.10g T (%.2g), %.10g (%.2g)",
+	     lo.ts.val / p.T, lo.ts.err / p.T, lo.Rf.val, lo.Rf.err, lx.ts.val / p.T, lx.ts.err / p.T,
+	     lx.Rf.val, lx.Rf.err);
+	anvil_result_free(&lx);
+	struct dash ds = { &p, d.c / 30.0 };
+	/* a node budget it cannot meet (the dashpot 30 times softer): refused with a reason, t_s infinite */
+	struct anvil_result lr;
+	st = run_long(&ds, dash_ramp, &ds, dt, ga, 0, 3000, 1e5, &lr);
+	ok(st == ANVIL_ETOL && isinf(lr.ts.val), "long mode out of nodes: refused, t_s infinite");
+	anvil_result_free(&lr);
+	anvil_result_free(&le);
+	anvil_result_free(&ll);
+	anvil_result_free(&lp);
+	anvil_result_free(&lq);
+	anvil_result_free(&lo);
 	anvil_result_free(&f);
 	anvil_result_free(&g);
 	anvil_result_free(&g2);

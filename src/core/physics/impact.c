@@ -63,6 +63,7 @@ int impact_ramp_at(const struct ctx *c, double t, double *val)
  * difference of the ramp response divided by dt. */
 static int weights(struct ctx *c, double dt, size_t cap)
 {
+	/* cap: the first segment's weights (all the window's but in long mode) */
 	double *R = malloc((cap + 2) * sizeof *R);
 	c->g = malloc(cap * sizeof *c->g);
 	if (!R || !c->g) {
@@ -75,7 +76,7 @@ static int weights(struct ctx *c, double dt, size_t cap)
 	for (size_t j = 0; j < cap && !st; j++)
 		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
 	c->ng = cap;
-	c->R0 = R, c->nR = cap + 1; /* kept: every level's weights (impact_grow.c) */
+	c->R0 = R, c->nR0 = cap + 1; /* kept: every level's weights (impact_grow.c) */
 	if (c->ramp2 && !st) { /* dg = g2 - g */
 		double *R2 = malloc((cap + 2) * sizeof *R2);
 		c->dg = malloc(cap * sizeof *c->dg);
@@ -427,7 +428,8 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)
-		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
+		/* a contact, or a new one, outlasts the window (or the nodes) */
+		return impact_long_short(c, s) ? IMPACT_NODES : ANVIL_ETOL;
 	if (!s->parted)
 		s->parted = 2;
 	s->Vs = -(p->V0 - ioff / p->m1);
@@ -589,7 +591,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	if (st)
 		return st;
 	if (in || s->v[s->n - 1] >= 0)
-		return ANVIL_ETOL; /* a contact, or a new one, outlasts the window */
+		/* a contact, or a new one, outlasts the window (or the nodes) */
+		return impact_long_short(c, s) ? IMPACT_NODES : ANVIL_ETOL;
 	if (!s->parted)
 		s->parted = 2;
 	s->Vs = -(p->V0 - ioff / p->m1);
@@ -635,25 +638,32 @@ static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t d
 		    struct pass *s)
 {
 	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
-	size_t cap = (size_t)floor(t_avail / dt) - 1;
+	size_t cap = (size_t)floor(t_avail / dt) - 1, nodes = cap, nw = cap;
 	if (cap < 8)
 		return ANVIL_ETOL;
-	int st = pass_alloc(s, cap, dt);
+	if (c->lng) { /* the nodes the march may make, the first segment's weights */
+		size_t mult = c->sched ? 2 : 1, w0 = 2 * c->grow_after + 64;
+		nodes = cap < mult * c->max_nodes ? cap : mult * c->max_nodes;
+		w0 = mult * (w0 > IMPACT_LONG_SEG ? w0 : IMPACT_LONG_SEG);
+		nw = nodes < w0 ? nodes : w0;
+	}
+	int st = pass_alloc(s, nodes, dt);
 	free(c->g);
 	free(c->dg);
 	free(c->R0);
 	free(c->R20);
 	impact_grow_reset(c);
 	c->g = c->dg = c->R0 = c->R20 = NULL;
-	c->seg0 = c->K0 = 0, c->lev = 0, c->T0 = c->Ih = c->M1h = 0, c->segcap = cap;
+	c->seg0 = c->K0 = 0, c->lev = 0, c->T0 = c->Ih = c->M1h = 0, c->segcap = nw;
 	c->dt0 = dt;
+	c->nR = cap + 1;
 	if (!st)
-		st = weights(c, dt, cap);
+		st = weights(c, dt, nw);
 	anvil_fastconv_free(c->fc);
 	c->fc = NULL;
 	impact_end_tab_free(c->tab); /* a new dt */
-	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, cap, direct_max, c->fft)
-				   : anvil_fastconv_alloc_fft(c->g, cap, direct_max, c->fft)))
+	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, nw, direct_max, c->fft)
+				   : anvil_fastconv_alloc_fft(c->g, nw, direct_max, c->fft)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
@@ -803,7 +813,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	double dt = o->dt > 0 ? o->dt : o->dt_auto;
 	if (!(dt > 0))
 		return anvil_err_set(err, ANVIL_EINVAL, "impact: no time step");
-	if (tau_avail * p->r0 / p->c2 / dt > (double)o->max_steps)
+	int lng = tau_avail * p->r0 / p->c2 / dt > (double)o->max_steps;
+	if (lng && !(o->t_smooth > 0 && o->grow_after && o->scheme != ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_ETOL,
 				     "the contact (over %.3g us) needs more than %zu steps of %.3g us",
 				     tau_avail * p->r0 / p->c2 * 1e6, o->max_steps, dt * 1e6);
@@ -818,7 +829,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .max_contacts = o->max_contacts,
 			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0,
 			 .grow_after = o->scheme == ANVIL_SCHEME_PAPER ? 0 : o->grow_after,
-			 .grow_eta = o->grow_eta };
+			 .grow_eta = o->grow_eta, .lng = lng, .t_smooth = o->t_smooth,
+			 .max_nodes = o->max_steps };
 	c.rest_stop = c.rest_tol > 0 && o->rest_at > 0 ? o->rest_at : 0.0;
 	c.rest_long = impact_rest_long(p);
 	c.rest_last = o->rest_last;
@@ -829,8 +841,9 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	struct end_tab tab = {0};
 	c.tab = &tab;
 	/* the FFT tables of the finer pass's capacity (run_pass) serve both */
+	double fcap = fmax(tau_avail * p->r0 / p->c2 / (0.5 * dt), 1.0);
 	struct anvil_fastconv_fft *fft =
-		anvil_fastconv_fft_alloc((size_t)fmax(tau_avail * p->r0 / p->c2 / (0.5 * dt), 1.0),
+		anvil_fastconv_fft_alloc((size_t)(lng ? fmin(fcap, 2.0 * (double)o->max_steps) : fcap),
 					 o->direct_max);
 	if (!(c.fft = fft))
 		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
@@ -860,6 +873,12 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			      "the impactor and the layer part and touch again more than %zu times (a contact chatters below the time step's resolution; by t = %.4g us the impactor still moves at %.3g m/s, not at rest on the plate); the thin-plate model 'zener' applies here",
 			      o->max_contacts, (double)(last->n - 1) * last->dt * 1e6,
 			      last->n ? last->v[last->n - 1] : p->V0);
+	} else if (st == IMPACT_NODES) { /* no longer window helps */
+		st = ANVIL_ETOL;
+		r->ts.val = INFINITY;
+		anvil_err_set(err, st,
+			      "the contact needs more than %zu steps even with the growing step (the force stays rough near t = %.4g us); the thin-plate model 'zener' applies here",
+			      o->max_steps, last->n ? last->t[last->n - 1] * 1e6 : 0.0);
 	} else if (st == ANVIL_ETOL) {
 		r->ts.val = NAN;
 		anvil_err_set(err, st, "the contact outlasts the computed response (%.3g us)",

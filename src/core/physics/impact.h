@@ -152,6 +152,17 @@ struct anvil_impact_opts {
 	 * actually marched are fewer. */
 	size_t grow_after;
 	double grow_eta;
+	/* Long windows (implicit and physical, with grow_after; impact_grow.c):
+	 * s; > 0: the ramps are smooth (no band-limited ringing: the layer
+	 * response's plate model, green.h anvil_green_t_plate) at lags beyond
+	 * t_smooth.  A frozen segment's hats seen from many times their span
+	 * away (and beyond 2 t_smooth) then enter as a few charges at
+	 * Chebyshev points against the impulse response (the far field), not
+	 * as fine-grid weights out to the window's end, and a window of more
+	 * than max_steps steps at dt runs (long mode): max_steps then bounds
+	 * the nodes the grown march makes (ANVIL_ETOL when it needs more).
+	 * 0: never (such a window is refused before any work). */
+	double t_smooth;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

@@ -77,6 +77,9 @@ int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in)
 			return c->sched->seg_L[k];
 		return 0;
 	}
+	if (c->lng && n - c->seg0 >= c->segcap && c->lev >= 1 && s->nseg < IMPACT_MAX_SEGS &&
+	    c->K0 + ((n - 1 - c->seg0) << c->lev) + ((size_t)4 << c->lev) < c->nR)
+		return c->lev; /* full: frozen, the same step goes on (long mode) */
 	if (!c->grow_after || n - 1 < c->grow_after || !in || s->pend_k || s->ncont != 1 ||
 	    s->nseg >= IMPACT_MAX_SEGS || c->lev >= GROW_LMAX || n - 1 - c->seg0 < GROW_MIN)
 		return 0;
@@ -94,29 +97,161 @@ int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in)
 	return 4.0 * d2 <= c->grow_eta * ref ? c->lev + 1 : 0;
 }
 
-/* R_r(u dt0) from the table (r = 1: ramp2 - ramp). */
+/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
+ * that made it (the same bits); NaN when the call fails. */
+static double rraw(const struct ctx *c, int r, size_t u)
+{
+	if (u < c->nR0)
+		return r ? c->R20[u] : c->R0[u];
+	double v;
+	int st = r ? impact_ramp_of(c, c->ramp2, c->rctx2, (double)u * c->dt0, &v)
+		   : impact_ramp_at(c, (double)u * c->dt0, &v);
+	return st ? NAN : v;
+}
+
+double impact_rtab(const struct ctx *c, int r, size_t u)
+{
+	return r ? rraw(c, 1, u) - rraw(c, 0, u) : rraw(c, 0, u);
+}
+
 static double tab(const struct ctx *c, int r, size_t u)
 {
-	return r ? c->R20[u] - c->R0[u] : c->R0[u];
+	return impact_rtab(c, r, u);
+}
+
+/* Level L's weights j0 <= j < j1 into g (and dg when ramp2 is given) from
+ * the ramps at j 2^L dt0 (as weights() makes level 0's); 1 when one is
+ * not finite (a ramp call failed). */
+static int level_fill(const struct ctx *c, int L, size_t j0, size_t j1, double dn, double *g,
+		      double *dg)
+{
+	size_t mn = (size_t)1 << L;
+	int bad = 0;
+	for (size_t j = j0; j < j1; j++) {
+		g[j] = (rraw(c, 0, (j + 1) * mn) - 2.0 * rraw(c, 0, j * mn) +
+			(j ? rraw(c, 0, (j - 1) * mn) : 0.0)) / dn;
+		if (dg)
+			dg[j] = (rraw(c, 1, (j + 1) * mn) - 2.0 * rraw(c, 1, j * mn) +
+				 (j ? rraw(c, 1, (j - 1) * mn) : 0.0)) / dn - g[j];
+		bad |= !isfinite(g[j]) || (dg && !isfinite(dg[j]));
+	}
+	return bad;
 }
 
 /* The weights of level L from the table (as weights() makes level 0's). */
 static int level_weights(struct ctx *c, int L, size_t capn, double dn)
 {
-	size_t mn = (size_t)1 << L;
 	double *g = malloc(capn * sizeof *g), *dg = NULL;
 	if (!g || (c->R20 && !(dg = malloc(capn * sizeof *dg)))) {
 		free(g);
 		return ANVIL_ENOMEM;
 	}
-	for (size_t j = 0; j < capn; j++) {
-		g[j] = (c->R0[(j + 1) * mn] - 2.0 * c->R0[j * mn] + (j ? c->R0[(j - 1) * mn] : 0.0)) / dn;
-		if (dg)
-			dg[j] = (c->R20[(j + 1) * mn] - 2.0 * c->R20[j * mn] +
-				 (j ? c->R20[(j - 1) * mn] : 0.0)) / dn - g[j];
-	}
+	int bad = level_fill(c, L, 0, capn, dn, g, dg);
 	c->g = g, c->dg = dg, c->ng = capn; /* the old ones: frozen with their segment */
-	return ANVIL_OK;
+	return bad ? ANVIL_ENUM : ANVIL_OK;
+}
+
+/* ---- the far field (long mode) ----
+ *
+ * A frozen segment's hats at lags many times its span enter as charges:
+ * sum_m c_m H(t - t_m), c_m = P_m times the hat's area at its centroid
+ * t_m, H the impulse response.  H is smooth there (beyond twice t_smooth,
+ * impact.h), so H(t - tau) over the segment's span is its interpolant at
+ * FAR_P Chebyshev points tau_j, and the sum is sum_j W_j H(t - tau_j),
+ * W_j = sum_m c_m l_j(t_m) (l_j the Lagrange basis), made once at the
+ * freeze: O(FAR_P) per target, whatever the lag.  Errors (relative to
+ * the segment's deflection): the interpolant's, about (D/(4 Lambda))^P
+ * for span D at lag Lambda (1e-7 at Lambda = FAR_RHO D); a hat as a point,
+ * its second moment, (w/Lambda)^2/12 (1e-7 at FAR_MIN widths); H by the
+ * seven-point (sixth-order) second difference of the ramp at h =
+ * Lambda/32, (1/32)^6 of H's eighth derivative scale, its rounding
+ * 6 eps 32^2 (7e-13), where the fine grid's weights round as eps
+ * (Lambda/w)^2: useless by Lambda/w = 1e8 (a 10 s contact at 0.1 us).
+ * The deflection far out is large against the Hertz compression (the
+ * plate's dashpot holds all the impulse), so these relative errors are
+ * amplified in P: tests/test_grow.c measures the whole at under a tenth
+ * of the scheme's own estimates (the five-point difference was 3 times
+ * R_f's estimate there). */
+#define FAR_RHO 4.0
+#define FAR_MIN 1024.0
+#define FAR_H 32.0
+
+double impact_far_h(const struct ctx *c, int r, double t)
+{
+	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
+	void *fx = r ? c->rctx2 : c->rctx;
+	double h = t / FAR_H, v[7];
+	for (int i = 0; i < 7; i++)
+		if (impact_ramp_of(c, fn, fx, t + (double)(i - 3) * h, &v[i]))
+			return NAN;
+	return (2.0 * (v[0] + v[6]) - 27.0 * (v[1] + v[5]) + 270.0 * (v[2] + v[4]) - 490.0 * v[3]) /
+	       (180.0 * h * h);
+}
+
+/* The far field of f at the target time t (t >= f->t_far). */
+static double far_sum(const struct ctx *c, const struct frozen *f, double t)
+{
+	double w = 0;
+	for (int j = 0; j < FAR_P; j++) {
+		double h0 = impact_far_h(c, 0, t - f->tc[j]);
+		w += f->Wx[j] * h0;
+		if (f->z)
+			w += f->Wz[j] * (impact_far_h(c, 1, t - f->tc[j]) - h0);
+	}
+	return w;
+}
+
+/* Add the charge (cx, cz) at time t to f's Chebyshev weights over [a, b]
+ * (barycentric Lagrange basis at the points of the first kind). */
+static void far_add(struct frozen *f, double a, double b, double t, double cx, double cz)
+{
+	double x = b > a ? (2.0 * t - a - b) / (b - a) : 0.0, l[FAR_P], sum = 0;
+	for (int j = 0; j < FAR_P; j++) {
+		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P), d = x - cos(th);
+		double lam = (j % 2 ? -1.0 : 1.0) * sin(th);
+		if (d == 0.0) { /* on a node: that node's alone */
+			f->Wx[j] += cx, f->Wz[j] += cz;
+			return;
+		}
+		l[j] = lam / d;
+		sum += l[j];
+	}
+	for (int j = 0; j < FAR_P; j++) {
+		f->Wx[j] += cx * l[j] / sum;
+		f->Wz[j] += cz * l[j] / sum;
+	}
+}
+
+/* At the freeze of f (long mode): its charges, where the far field
+ * starts, and its weights out to there (the near targets' exact sums). */
+static int far_setup(struct ctx *c, struct frozen *f, const double *tn, double dp, double dn)
+{
+	double a = tn[1], b = tn[f->S] + (dn - dp) / 3.0; /* centroids: first, last hat */
+	if (f->S < 2)
+		a = b;
+	for (int j = 0; j < FAR_P; j++) {
+		f->tc[j] = 0.5 * (a + b) + 0.5 * (b - a) * cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
+		f->Wx[j] = f->Wz[j] = 0.0;
+	}
+	for (size_t m = 1; m < f->S; m++)
+		far_add(f, a, b, tn[m], f->x[m] * dp, f->z ? f->z[m] * dp : 0.0);
+	far_add(f, a, b, b, f->Pb * 0.5 * (dp + dn), f->z ? f->Qb * 0.5 * (dp + dn) : 0.0);
+	f->t_far = b + fmax(fmax(FAR_RHO * (b - a + 2.0 * dn), FAR_MIN * dn), 2.0 * c->t_smooth);
+	/* the near targets u dt0 < t_far read weights to lag (u - K)/2^L + 1 */
+	double need = ceil((f->t_far / c->dt0 - (double)f->K) / (double)((size_t)1 << f->L)) + 2.0;
+	double room = (double)((c->nR - 1 - f->K) >> f->L);
+	size_t ng = (size_t)fmin(need, room);
+	if (ng <= f->ng)
+		return ANVIL_OK;
+	double *g = realloc(f->g, ng * sizeof *g), *dg = f->dg;
+	if (g)
+		f->g = g;
+	if (!g || (dg && !(dg = realloc(f->dg, ng * sizeof *dg))))
+		return ANVIL_ENOMEM;
+	f->dg = dg;
+	int bad = level_fill(c, f->L, f->ng, ng, dp, f->g, f->dg);
+	f->ng = ng;
+	return bad ? ANVIL_ENUM : ANVIL_OK;
 }
 
 int impact_grow_switch(struct ctx *c, struct pass *s, int L)
@@ -124,9 +259,14 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 	size_t ns = s->n - 1, S = ns - c->seg0;
 	size_t mp = (size_t)1 << c->lev, mn = (size_t)1 << L;
 	size_t Ks = c->K0 + S * mp;
-	if (L <= c->lev || Ks + mn >= c->nR || c->nfz + 1 >= IMPACT_MAX_SEGS)
+	if (L < c->lev + !c->lng || L < 1 || Ks + mn >= c->nR || c->nfz + 1 >= IMPACT_MAX_SEGS)
 		return ANVIL_EINVAL;
 	size_t capn = (c->nR - 1 - Ks) >> L;
+	if (c->lng) { /* a segment's weights, and the nodes left */
+		size_t cl = IMPACT_LONG_SEG * (c->sched ? 2 : 1), left = s->cap - ns;
+		capn = capn < cl ? capn : cl;
+		capn = capn < left ? capn : left;
+	}
 	if (capn < 2)
 		return ANVIL_EINVAL;
 	double dp = s->dt, dn = ldexp(s->dt0, L);
@@ -135,8 +275,14 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 	c->fz[c->nfz++] = (struct frozen){ .x = x, .z = c->dg ? s->Q + c->seg0 : NULL, .S = S,
 					   .K = c->K0, .Kb = Ks, .ng = c->ng, .L = c->lev, .Ln = L,
 					   .g = c->g, .dg = c->dg, .Pb = Pn,
-					   .Qb = c->dg ? s->Q[ns] : 0.0 };
+					   .Qb = c->dg ? s->Q[ns] : 0.0, .n0 = c->seg0,
+					   .t_far = INFINITY };
 	c->g = c->dg = NULL;
+	if (c->lng) {
+		int st = far_setup(c, &c->fz[c->nfz - 1], s->t + c->seg0, dp, dn);
+		if (st)
+			return st;
+	}
 	/* the moments: the old segment's hats (node 0's is in already), n_s's */
 	for (size_t m = 1; m < S; m++) {
 		c->Ih += x[m] * dp;
@@ -281,14 +427,22 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 		size_t u0 = c->K0 + (i0 << c->lev); /* the first target, in dt0 */
 		size_t q = (size_t)1 << (c->lev - f->L);
 		size_t mp = (size_t)1 << f->L, mn = (size_t)1 << f->Ln;
-		size_t o0 = (u0 - f->K) >> f->L;
-		if (o0 + q * (C - 1) >= f->ng)
+		size_t o0 = (u0 - f->K) >> f->L, Cn = C; /* the near targets: k < Cn */
+		while (Cn && (double)(u0 + ((Cn - 1) << c->lev)) * c->dt0 >= f->t_far)
+			Cn--;
+		for (size_t k = Cn; k < C; k++)
+			out[k] += far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
+		if (Cn < C && !isfinite(out[C - 1]))
+			return ANVIL_ENUM; /* a ramp call failed */
+		if (!Cn)
+			continue;
+		if (o0 + q * (Cn - 1) >= f->ng)
 			return ANVIL_EINVAL; /* beyond its weights: never, by the capacities */
-		int st = frozen_chunk(c, f, o0, q, C, out);
+		int st = frozen_chunk(c, f, o0, q, Cn, out);
 		if (st)
 			return st;
 		double hp = c->dt0 * (double)mp, hn = c->dt0 * (double)mn;
-		for (size_t k = 0; k < C; k++) {
+		for (size_t k = 0; k < Cn; k++) {
 			size_t ub = u0 + (k << c->lev) - f->Kb;
 			/* as the difference of two slopes: R(t)/l - R(t)(1/l + 1/r)
 			 * would round by eps R/dt, the same way for every hat of a
@@ -386,13 +540,20 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 	/* the whole pass's nodes, from the current segment's view; their
 	 * times as whole numbers of dt0 */
 	const double *tn = v->t - c->seg0, *P = v->P - c->seg0, *Q = v->Q - c->seg0;
-	size_t u = c->K0 + (k << c->lev), Kp = 0, Km = 0, Kn = 0;
-	double w = 0;
+	size_t u = c->K0 + (k << c->lev), Kp = 0, Km = 0, Kn = 0, j = 0;
+	double w = 0, t = (double)u * c->dt0 + d;
 	int st = ANVIL_OK;
+	for (size_t f = 0; f < c->nfz; f++) /* long mode: the far ones' charges */
+		if (t >= c->fz[f].t_far)
+			w += far_sum(c, &c->fz[f], t);
 	for (size_t m = 1; m <= c->seg0 && !st; m++) {
 		Kp = Km;
 		Km = m == 1 ? (size_t)llround(tn[1] / c->dt0) : Kn;
 		Kn = m < c->seg0 ? (size_t)llround(tn[m + 1] / c->dt0) : Km + ((size_t)1 << c->lev);
+		while (j < c->nfz && m > c->fz[j].n0 + c->fz[j].S)
+			j++;
+		if (j < c->nfz && t >= c->fz[j].t_far)
+			continue; /* in its segment's far field */
 		double h;
 		st = hat_at(c, 0, u, d, Km, Km - Kp, Kn - Km, &h);
 		w += P[m] * h;
@@ -403,4 +564,12 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 	}
 	*val = w;
 	return st;
+}
+
+int impact_long_short(const struct ctx *c, const struct pass *s)
+{
+	if (!c->lng || !s->n)
+		return 0;
+	size_t u = c->K0 + ((s->n - 1 - c->seg0) << c->lev);
+	return u + ((size_t)2 << c->lev) < c->nR;
 }

@@ -22,9 +22,12 @@
 /* A pass's status when a contact's end cannot be bracketed (finish_exact):
  * ANVIL_ENUM to the caller, with a message that says when and what to do. */
 #define IMPACT_END_LOST (-101)
+/* Long mode: the grown march needs more nodes than max_nodes (or its
+ * first segment more than its weights): ANVIL_ETOL, t_s infinite. */
+#define IMPACT_NODES (-102)
 
 /* The most segments (levels of the step) a pass can have (impact_grow.c). */
-#define IMPACT_MAX_SEGS 40
+#define IMPACT_MAX_SEGS 64
 /* The largest FFT of the frozen past: 2^(HIST_FFT_MAX - 1). */
 #define HIST_FFT_MAX 40
 
@@ -66,12 +69,21 @@ struct pass {
  * (x, z: P and Q from its node 0, the pass's arrays) at dt0 2^L from t =
  * K dt0, against its weights g, dg (owned, ng of them); its last node
  * (Pb, Qb at Kb dt0) with its step left and dt0 2^Ln right. */
+/* The far field (long mode, impact_grow.c): its charges at FAR_P
+ * Chebyshev points. */
+#define FAR_P 8
+
 struct frozen {
 	const double *x, *z;
 	size_t S, K, Kb, ng;
 	int L, Ln;
 	double *g, *dg;
 	double Pb, Qb;
+	/* long mode: the pass's node of its node 0; targets at u dt0 >=
+	 * t_far take the far field: the charges Wx (P), Wz (Q) at times tc */
+	size_t n0;
+	double t_far;
+	double tc[FAR_P], Wx[FAR_P], Wz[FAR_P];
 };
 
 struct ctx {
@@ -103,8 +115,12 @@ struct ctx {
 	size_t grow_after;   /* nodes before the step may grow; 0: never */
 	double grow_eta;     /* the smoothness asked of P (impact.h) */
 	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
-	double *R0, *R20;    /* ramp and ramp2 at j dt0, j < nR (weights') */
-	size_t nR;
+	double *R0, *R20;    /* ramp and ramp2 at j dt0, j < nR0 (weights'); beyond, by call */
+	size_t nR;           /* the window's end, in dt0, plus one */
+	size_t nR0;          /* the table's length (nR but in long mode) */
+	int lng;             /* long mode (impact.h, t_smooth) */
+	double t_smooth;
+	size_t max_nodes;    /* long mode: the dt pass's nodes at most */
 	/* the current segment: from node seg0 at t = T0 = K0 dt0, step dt0 2^lev,
 	 * segcap nodes at most; Ih and M1h the frozen past's int P and int t P
 	 * (0 on the first segment) */
@@ -186,6 +202,19 @@ void impact_grow_free(struct ctx *c);
  * (0 <= d <= its step), by direct sums over its hats (off the grid: the
  * contact end); v the current segment's view. */
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val);
+/* R_r(u dt0) (r = 1: ramp2 - ramp): the table's, or by call beyond it
+ * (the same bits: the table is made by the same call); NaN on failure. */
+double impact_rtab(const struct ctx *c, int r, size_t u);
+/* The largest segment a long mode's level >= 1 makes before it freezes
+ * and goes on at the same level (its weights' count), in the dt pass's
+ * nodes (the dt/2 pass: twice). */
+#define IMPACT_LONG_SEG 8192
+/* R_r''(t) (r = 0 ramp, 1 ramp2) by a wide five-point difference: the
+ * impulse response where the ramps are smooth (far out); NaN on failure. */
+double impact_far_h(const struct ctx *c, int r, double t);
+/* Long mode: 1 when the march at node s->n - 1 stopped short of the
+ * window's end (its nodes ran out, not the window). */
+int impact_long_short(const struct ctx *c, const struct pass *s);
 /* The pass's arrays from the current segment's node 0 on, as a pass of
  * uniform step (n, cap local). */
 struct pass impact_view(const struct ctx *c, const struct pass *s);

@@ -74,9 +74,11 @@ static double rest_cloc(const struct ctx *c, const struct pass *s, size_t n)
 	size_t K = x > 0 ? (size_t)x : 0;
 	if (K + 1 >= c->nR)
 		return NAN;
-	const double *R = c->R0;
-	double u = (R[K + 1] - R[K]) / dt0;
-	double g = (R[K + 1] - 2.0 * R[K] + (K ? R[K - 1] : 0.0)) / dt0;
+	double R1 = impact_rtab(c, 0, K + 1), R0 = impact_rtab(c, 0, K);
+	double u = (R1 - R0) / dt0;
+	double g = (R1 - 2.0 * R0 + (K ? impact_rtab(c, 0, K - 1) : 0.0)) / dt0;
+	if (c->lng && K >= c->nR0) /* far out g rounds as eps K^2: from H (impact_grow.c) */
+		g = dt0 * impact_far_h(c, 0, (double)K * dt0);
 	return u - ((double)K + 0.5) * g;
 }
 
