@@ -13,6 +13,7 @@
 #include "kernel.h"
 #include "material.h"
 #include "plan.h"
+#include "plate.h"
 #include "radiation.h"
 #include "zener.h"
 
@@ -68,6 +69,7 @@ static void wave_job(const struct anvil_problem *pb, int layer, double ts,
 	j->hs_tol = lev->hs_tol;
 	j->nsteps = lev->nsteps;
 	j->refine_max = pb->scheme == ANVIL_SCHEME_PAPER ? 0 : ANVIL_MAX_REFINE;
+	j->grows = pb->scheme != ANVIL_SCHEME_PAPER;
 	j->attempts = ANVIL_MAX_ATTEMPTS;
 }
 
@@ -107,6 +109,15 @@ double anvil_plan_patch_below(double patch)
 	return exp2(0.5 * (round(2.0 * log2(patch)) - 1));
 }
 
+double anvil_wave_t_smooth(const struct anvil_params *p, const struct anvil_wave_job *j,
+			   double tau_end)
+{
+	if (!j->grows || !anvil_wave_needs_corr(p, j, tau_end))
+		return 0.0;
+	double tq = anvil_cache_grid(anvil_wave_tau_idx(j, tau_end)); /* the response's */
+	return anvil_plate_t1(j->hh, tq) * p->r0 / p->c2;
+}
+
 int anvil_wave_needs_corr(const struct anvil_params *p, const struct anvil_wave_job *j,
 			  double tau_end)
 {
@@ -124,7 +135,7 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "solver.dt = %.3g us is too long for a contact of about %.3g us (at most a quarter of it)",
 				     scene_dt * 1e6, j->ts * 1e6);
-	if (steps > ANVIL_MAX_STEPS)
+	if (steps > ANVIL_MAX_STEPS && !(anvil_wave_t_smooth(p, j, tau_end) > 0))
 		return anvil_err_set(err, ANVIL_ETOL,
 				     "%s: the contact lasts over %.3g us, more than %d steps of %.3g us; %s",
 				     anvil_model_name(m), tau_end * p->r0 / p->c2 * 1e6,

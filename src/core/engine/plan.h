@@ -98,11 +98,21 @@ struct anvil_wave_job {
 	int attempts;    /* window doublings allowed */
 	int tau_idx_min; /* the responses' window covers at least anvil_cache_grid(this):
 			    a sweep's shared window (anvil_plan_share); 0 for none */
+	int grows;       /* the step may grow (not the paper's scheme): a long window
+			    runs in the impact's long mode (anvil_wave_t_smooth) */
 	double patch;    /* physical contact: the patch radius / r0 whose correction
 			    gives the true contact radius (anvil_plan_patch of a_max/r0,
 			    or a sweep's wider one), 0 when a_max is 0 */
 };
 
+/* The lag (s) beyond which the layer correction over window tau_end is
+ * its plate model (plate.h: smooth, no band-limited ringing): the impact's
+ * long mode (impact.h t_smooth) may take the far past there.  0 when the
+ * window holds no plate model (short windows, a half-space) or the step
+ * does not grow (the paper's scheme): such a window is held to
+ * ANVIL_MAX_STEPS steps. */
+double anvil_wave_t_smooth(const struct anvil_params *p, const struct anvil_wave_job *j,
+			   double tau_end);
 /* The response window of attempt a (0, 1, ...): 1.4 tau_s 2^a + 2. */
 double anvil_wave_window(const struct anvil_wave_job *j, int attempt);
 /* The cache grid index of the layer response used over window tau_end:

@@ -112,6 +112,7 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 					    anvil_cache_grid(ld.omega_idx), NULL);
 	u->corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, u->tau_end);
 	u->io.alpha_ref = 0;
+	u->io.t_smooth = anvil_wave_t_smooth(p, j, u->tau_end);
 	if (!u->corr)
 		return ANVIL_OK;
 	u->rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &u->held, err);
