@@ -108,9 +108,9 @@ struct anvil_wave_job {
 /* The lag (s) beyond which the layer correction over window tau_end is
  * its plate model (plate.h: smooth, no band-limited ringing): the impact's
  * long mode (impact.h t_smooth) may take the far past there.  0 when the
- * window holds no plate model (short windows, a half-space) or the step
- * does not grow (the paper's scheme): such a window is held to
- * ANVIL_MAX_STEPS steps. */
+ * window holds no plate model (short windows, a half-space), the step
+ * does not grow (the paper's scheme) or the job's first window fits
+ * ANVIL_MAX_STEPS steps: such a window is held to ANVIL_MAX_STEPS steps. */
 double anvil_wave_t_smooth(const struct anvil_params *p, const struct anvil_wave_job *j,
 			   double tau_end);
 /* The response window of attempt a (0, 1, ...): 1.4 tau_s 2^a + 2. */
