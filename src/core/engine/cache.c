@@ -17,8 +17,10 @@
 #define MAGIC "ANVILRSP"
 #define BOM 0x01020304u
 /* Samples in a file we are willing to read: a response with the largest
- * bandwidth and window the solver allows has fewer than a million. */
+ * bandwidth and window the solver allows has fewer than a million; a K
+ * table has 32 nodes an octave of its window. */
 #define MAX_SAMPLES 50000000u
+#define MAX_NODES 100000u
 
 /* The file header.  Fixed-size fields in an order that leaves no padding
  * (checked below), zero-filled, so that its bytes are well defined and can
@@ -325,21 +327,28 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->abserr = s->abserr;
 	hd->n = s->n;
 	hd->filtered = (uint32_t)(s->filtered != 0);
+	hd->t1 = s->t1;
+	hd->tail_v = s->tail_v;
+	memcpy(hd->tail_c, s->tail_c, sizeof hd->tail_c);
+	hd->nk = s->nk;
 }
 
-static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp)
+/* Over the header, then the samples and the K table (data: n + nk doubles). */
+static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp, const double *k)
 {
 	struct anvil_cache_header h = *hd;
 	h.checksum = 0;
-	return fnv1a(fnv1a(FNV_SEED, &h, sizeof h), ramp, (size_t)hd->n * sizeof *ramp);
+	uint64_t c = fnv1a(fnv1a(FNV_SEED, &h, sizeof h), ramp, (size_t)hd->n * sizeof *ramp);
+	return hd->nk ? fnv1a(c, k, (size_t)hd->nk * sizeof *k) : c;
 }
 
 /* ---- disk: write ---- */
 
-static int write_all(FILE *f, const struct anvil_cache_header *hd, const double *ramp)
+static int write_all(FILE *f, const struct anvil_cache_header *hd, const double *ramp,
+		     const double *k)
 {
 	if (fwrite(hd, sizeof *hd, 1, f) != 1 || fwrite(ramp, sizeof *ramp, hd->n, f) != hd->n ||
-	    fflush(f) != 0)
+	    (hd->nk && fwrite(k, sizeof *k, hd->nk, f) != hd->nk) || fflush(f) != 0)
 		return -1;
 	/* on disk before the rename makes it visible: no empty file after a crash */
 	return fsync(fileno(f));
@@ -353,14 +362,14 @@ int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 	char tmp[3200];
 	anvil_green_export(g, &s);
 	header_fill(&hd, key, &s);
-	hd.checksum = checksum(&hd, s.ramp);
+	hd.checksum = checksum(&hd, s.ramp, s.k);
 	if (snprintf(tmp, sizeof tmp, "%s.XXXXXX", path) >= (int)sizeof tmp)
 		return anvil_err_set(err, ANVIL_EIO, "%s: name too long", path);
 	int fd = mkstemp(tmp);
 	if (fd < 0)
 		return anvil_err_set(err, ANVIL_EIO, "%s: cannot create: %s", tmp, strerror(errno));
 	FILE *f = fdopen(fd, "wb");
-	int bad = !f || write_all(f, &hd, s.ramp) != 0;
+	int bad = !f || write_all(f, &hd, s.ramp, s.k) != 0;
 	int saved = errno;
 	if (f ? fclose(f) != 0 : close(fd) != 0)
 		bad = 1;
@@ -385,9 +394,9 @@ static int header_read(FILE *f, const char *path, struct anvil_cache_header *hd,
 	if (hd->format != ANVIL_CACHE_FORMAT || hd->bom != BOM)
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: format %u from another anvil or machine",
 				     path, (unsigned)hd->format);
-	if (hd->n < 4 || hd->n > MAX_SAMPLES)
-		return anvil_err_set(err, ANVIL_EIO, "%s: corrupt (%llu samples)", path,
-				     (unsigned long long)hd->n);
+	if (hd->n < 4 || hd->n > MAX_SAMPLES || hd->nk > MAX_NODES)
+		return anvil_err_set(err, ANVIL_EIO, "%s: corrupt (%llu samples, %llu nodes)", path,
+				     (unsigned long long)hd->n, (unsigned long long)hd->nk);
 	return ANVIL_OK;
 }
 
@@ -415,25 +424,29 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 	struct stat sb;
 	double *ramp = NULL;
 	struct anvil_green *g = NULL;
-	if (fstat(fileno(f), &sb) != 0 ||
-	    (uint64_t)sb.st_size != sizeof *hd + hd->n * sizeof(double)) {
+	size_t nd = (size_t)(hd->n + hd->nk); /* both bounded by header_read */
+	if (fstat(fileno(f), &sb) != 0 || (uint64_t)sb.st_size != sizeof *hd + nd * sizeof(double)) {
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (size)", path);
 		return NULL;
 	}
-	if (!(ramp = malloc((size_t)hd->n * sizeof *ramp))) {
+	if (!(ramp = malloc(nd * sizeof *ramp))) {
 		anvil_err_set(err, ANVIL_ENOMEM, "cache: out of memory");
 		return NULL;
 	}
-	if (fread(ramp, sizeof *ramp, (size_t)hd->n, f) != hd->n)
+	const double *k = ramp + hd->n;
+	if (fread(ramp, sizeof *ramp, nd, f) != nd)
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (short)", path);
-	else if (checksum(hd, ramp) != hd->checksum)
+	else if (checksum(hd, ramp, k) != hd->checksum)
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (bad checksum)", path);
 	else {
 		struct anvil_green_samples s = { .mode = ANVIL_GREEN_LAYER_CORRECTION,
 						 .filtered = hd->filtered != 0, .hh = hd->hh,
 						 .nu = hd->nu, .tau_end = hd->tau_end,
 						 .dtau = hd->dtau, .abserr = hd->abserr,
-						 .n = (size_t)hd->n, .ramp = ramp };
+						 .n = (size_t)hd->n, .ramp = ramp,
+						 .t1 = hd->t1, .tail_v = hd->tail_v,
+						 .nk = (size_t)hd->nk, .k = hd->nk ? k : NULL };
+		memcpy(s.tail_c, hd->tail_c, sizeof s.tail_c);
 		struct anvil_err in;
 		if (!(g = anvil_green_import(&s, &in)))
 			anvil_err_set(err, in.status == ANVIL_ENOMEM ? ANVIL_ENOMEM : ANVIL_EIO,

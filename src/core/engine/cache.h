@@ -28,14 +28,17 @@
  *           replaced; one from another format or anvil version is ignored
  *           quietly and replaced.
  *
- * The file: a 128-byte header (struct below: magic "ANVILRSP", format
+ * The file: a 176-byte header (struct below: magic "ANVILRSP", format
  * version, byte-order mark, anvil version, the mode and twin flag, the key h/r0, nu, level, omega
  * and its grid index, the window's grid index, the load and patch radius (format 4:
  * the physical contact's corrections are kept too; a file of format 3 or older
  * is ignored quietly and replaced), the window tau_end, the sample step, the error
- * estimate, the sample count and an FNV-1a 64-bit checksum of header and
- * samples), then the ramp samples as native doubles.  A file is only read
- * on a machine with the same byte order and double format.
+ * estimate, the plate's tail (format 8: its T1, the fit's error unit and
+ * coefficients; 0 without), the sample count, the tail's K-table node count
+ * and an FNV-1a 64-bit checksum of header, samples and nodes), then the
+ * ramp samples and the K table (green.h anvil_green_samples) as native
+ * doubles.  A file is only read on a machine with the same byte order and
+ * double format.
  *
  * One cache is used from one thread at a time (the solver's). */
 #ifndef ANVIL_CACHE_H
@@ -51,13 +54,15 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 7 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 8 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
 				 physical contact's corrections filtered at the band's
 				 edge, green.h; 7: the filter flag in the header, which
-				 the reader's causality check needs) */
+				 the reader's causality check needs; 8: the plate's
+				 closed-form tail beyond T1 instead of samples to the
+				 window's end, plate.h) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -151,7 +156,8 @@ void anvil_cache_release(struct anvil_cache *c, const void *resp);
 int anvil_cache_held(const struct anvil_cache *c);
 
 /* The disk format, for the cache itself and for tests (the fuzzer builds
- * files with it): the header, then n ramp samples as native doubles. */
+ * files with it): the header, then n ramp samples and nk K-table nodes as
+ * native doubles. */
 #include <stdint.h>
 struct anvil_cache_header {
 	char magic[8];
@@ -164,9 +170,10 @@ struct anvil_cache_header {
 	uint32_t load;       /* the key's load (format 4) */
 	uint32_t filtered;   /* 0 or 1: samples.filtered (format 7) */
 	double hh, nu, patch, omega, tau_end, dtau, abserr;
-	uint64_t n, checksum;
+	double t1, tail_v, tail_c[3]; /* the plate's tail (format 8); t1 = 0: none */
+	uint64_t n, nk, checksum;
 };
-_Static_assert(sizeof(struct anvil_cache_header) == 128, "cache header has padding");
+_Static_assert(sizeof(struct anvil_cache_header) == 176, "cache header has padding");
 
 /* The file for key in dir ("DIR/corr-LEVEL-HASH.bin", "DIR/phys-..." for
  * the physical contact's) into buf; ANVIL_EINVAL

@@ -77,26 +77,27 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
  * inversion's half period Tp = 2 T_inv (T_inv the plate's T1, plate.h, or
  * the whole window), its FFT length N (durbin.h: a power of two >= 4 (M +
  * 1) and >= green.c's GREEN_N_MIN, 8192), a sample every 2 Tp / N up to
- * tau_end.  Beyond T1 each sample is the plate's closed form: a long
- * window's samples, not its evaluations, can be most of the work
- * (issue 11: 10^6 samples for h = 0.5 r0, 1 kg at 10 m/s). */
+ * T_inv, and with the plate's tail ANVIL_PLATE_PAD more: beyond T1 the
+ * response is the plate's closed form, whatever the window (before, a
+ * long window's samples, not its evaluations, could be most of the work:
+ * 10^6 of them for h = 0.5 r0, 1 kg at 10 m/s). */
 double anvil_plan_corr_samples(double hh, double omega, double tau_end)
 {
 	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tau_end) : 0.0;
-	double Tp = 2.0 * (t1 > 0 ? t1 : tau_end);
+	double t_inv = t1 > 0 ? t1 : tau_end, Tp = 2.0 * t_inv;
 	struct anvil_durbin dl;
 	if (anvil_durbin_init(&dl, Tp, 1.0 / Tp, omega, 0))
 		return INFINITY;
-	return floor(tau_end / (2.0 * Tp / (double)anvil_durbin_fft_size(&dl, 8192))) + 2.0;
+	return floor(t_inv / (2.0 * Tp / (double)anvil_durbin_fft_size(&dl, 8192))) + 2.0 +
+	       (t1 > 0 ? ANVIL_PLATE_PAD : 0.0);
 }
 
-/* The plate's spline in k beyond T1 (plate.c kspline_make): 32 nodes per
- * octave of [T1/17, 1.01 tau_end], each a quadrature; none without the
- * plate. */
+/* The plate's K table (plate.h anvil_plate_nodes: 32 nodes an octave of
+ * [T1/17, tau_end]), each a quadrature; none without the plate. */
 static double plate_nodes(double hh, double tau_end)
 {
 	double t1 = isfinite(hh) ? anvil_plate_t1(hh, tau_end) : 0.0;
-	return t1 > 0 ? ceil(32.0 * log2(1.01 * tau_end / (t1 / 17.0))) + 4.0 : 0.0;
+	return t1 > 0 ? (double)anvil_plate_nodes(t1, tau_end) : 0.0;
 }
 
 /* The unit costs of a physical correction (seconds, one core of the

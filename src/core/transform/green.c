@@ -23,9 +23,11 @@
 typedef double complex cplx;
 
 /* The FFT's length, hence the output grid: at least 8192 points over the
- * period 2T' = 4 tau_end (2048 steps over the output window), more when the
- * band asks for it (4 (M + 1)).  With M <= ANVIL_DURBIN_M_MAX = 2^20 the
- * length is at most 2^23, so a response holds at most 2^21 + 2 samples. */
+ * period 2T' = 4 T_inv (2048 steps over the inversion's window, tau_end or
+ * the plate's T1), more when the band asks for it (4 (M + 1)).  With M <=
+ * ANVIL_DURBIN_M_MAX = 2^20 the length is at most 2^23, so an inversion
+ * gives at most 2^21 + 2 samples; a response with the plate's tail keeps
+ * those to T1 and ANVIL_PLATE_PAD more, whatever its window. */
 #define GREEN_N_MIN 8192
 #define GREEN_SAMPLES_MAX (((size_t)1 << 21) + 2)
 
@@ -37,7 +39,9 @@ struct anvil_green {
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
 	gsl_interp *interp;   /* cubic spline through the ramp samples */
-	double abserr;
+	int tailed;           /* 1: beyond tail.t1 the plate's closed form (plate.h) */
+	struct anvil_plate_tail tail; /* its arrays owned */
+	double abserr;        /* over [0, T1] when tailed (tail.v included) */
 	size_t evals;
 	int filtered;         /* Vandeven's filter on the band (band_finish) */
 };
@@ -59,6 +63,7 @@ void anvil_green_free(struct anvil_green *g)
 	if (!g)
 		return;
 	gsl_interp_free(g->interp);
+	anvil_plate_tail_free(&g->tail);
 	free(g->tau);
 	free(g);
 }
@@ -71,11 +76,14 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 			const double *err, const struct green_plate *pl, struct anvil_plate_memo *memo)
 {
 	size_t M = dl->M, N = anvil_durbin_fft_size(dl, GREEN_N_MIN);
-	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp, ext_err = 0;
+	double Tp = dl->Tp, qsum = 0, t_inv = 0.5 * Tp;
 	g->dtau = 2.0 * Tp / (double)N;
-	g->n = (size_t)floor(g->tau_end / g->dtau) + 2; /* about N/4: bounded with M */
-	/* the inversion's samples; beyond its window, the plate (plate.h) */
-	size_t n1 = t_inv < g->tau_end ? (size_t)floor(t_inv / g->dtau) + 2 : g->n;
+	/* the inversion's samples (about N/4: bounded with M); beyond its
+	 * window (line_window: the plate's T1), the plate in closed form and
+	 * only the spline's pad in samples (plate.h) */
+	int tailed = t_inv < g->tau_end;
+	size_t n1 = (size_t)floor(fmin(t_inv, g->tau_end) / g->dtau) + 2;
+	g->n = tailed ? n1 + ANVIL_PLATE_PAD : n1;
 	if (g->n > GREEN_SAMPLES_MAX)
 		return ANVIL_EINVAL;
 	g->tau = malloc(2 * g->n * sizeof *g->tau);
@@ -98,10 +106,12 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 			g->ramp[j] += green_plate_t(pl, t);
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
-	if (n1 < g->n && (st = anvil_plate_extend_memo(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
-							  &ext_err, memo)))
+	g->tailed = tailed;
+	if (tailed && (st = anvil_plate_tail_make(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
+						  g->tau_end, memo, &g->tail)))
 		return st;
-	g->abserr = amp * qsum + amp * tail + ext_err;
+	/* the tail's bound grows with t (anvil_green_abserr_at): its value at T1 here */
+	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.v : 0.0);
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau;
 	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
@@ -150,7 +160,8 @@ int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, doub
 	if (!(tau_end > 0) || anvil_durbin_init(&dl, Tp, 1.0 / Tp, omega_max, 0))
 		return 0;
 	double dtau = 2.0 * Tp / (double)anvil_durbin_fft_size(&dl, GREEN_N_MIN);
-	return floor(tau_end / dtau) + 2 <= (double)GREEN_SAMPLES_MAX;
+	double n = floor(t_inv / dtau) + 2 + (t1 > 0 ? ANVIL_PLATE_PAD : 0);
+	return n <= (double)GREEN_SAMPLES_MAX;
 }
 
 /* The inversion's line for g's window: output kept to [0, T'/2] of the
@@ -410,6 +421,10 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
 	}
 	if (tau > g->tau_end)
 		return ANVIL_EINVAL;
+	if (g->tailed && tau > g->tail.t1) {
+		*val = anvil_plate_tail_ramp(&g->tail, tau);
+		return ANVIL_OK;
+	}
 	gsl_interp_accel acc = uniform_hint(g, tau);
 	*val = gsl_interp_eval(g->interp, g->tau, g->ramp, tau, &acc);
 	return ANVIL_OK;
@@ -423,6 +438,10 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 	}
 	if (tau > g->tau_end)
 		return ANVIL_EINVAL;
+	if (g->tailed && tau > g->tail.t1) {
+		*val = anvil_plate_tail_step(&g->tail, tau);
+		return ANVIL_OK;
+	}
 	gsl_interp_accel acc = uniform_hint(g, tau);
 	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, &acc);
 	return ANVIL_OK;
@@ -439,6 +458,18 @@ void anvil_green_kernel(double k, double complex s, double nu, double hh,
 
 double anvil_green_tau_end(const struct anvil_green *g) { return g->tau_end; }
 double anvil_green_abserr(const struct anvil_green *g) { return g->abserr; }
+
+double anvil_green_abserr_at(const struct anvil_green *g, double tau)
+{
+	if (!g->tailed || !(tau > g->tail.t1))
+		return g->abserr;
+	return g->abserr + anvil_plate_tail_err(&g->tail, tau) - g->tail.v;
+}
+
+double anvil_green_t_plate(const struct anvil_green *g)
+{
+	return g->tailed ? g->tail.t1 : INFINITY;
+}
 size_t anvil_green_evals(const struct anvil_green *g) { return g->evals; }
 
 /* ---- export and import (the response cache, cache.c) ---- */
@@ -449,12 +480,21 @@ void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples 
 					   .hh = g->hh, .nu = g->nu,
 					   .tau_end = g->tau_end, .dtau = g->dtau,
 					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp };
+	if (g->tailed) {
+		s->t1 = g->tail.t1;
+		memcpy(s->tail_c, g->tail.c, sizeof s->tail_c);
+		s->tail_v = g->tail.v;
+		s->nk = g->tail.nk;
+		s->k = g->tail.k;
+	}
 }
 
 /* The sizes and the window, checked before any cast or allocation: finite
- * and positive, the grid of green_compute (tau_end/dtau = N/4 for an FFT
- * length N, a power of two, within rounding), n = floor(tau_end/dtau) + 2,
- * at most GREEN_SAMPLES_MAX. */
+ * and positive, the grid of green_compute (T_inv/dtau = N/4 for an FFT
+ * length N, a power of two, within rounding), n = floor(T_inv/dtau) + 2
+ * (T_inv = tau_end, or the plate's T1 and then ANVIL_PLATE_PAD more, and
+ * a tail at T1: anvil_plate_tail_init checks its table), at most
+ * GREEN_SAMPLES_MAX. */
 static int sizes_ok(const struct anvil_green_samples *s)
 {
 	if (!(s->nu > -1 && s->nu < 0.5) || !(s->tau_end > 0 && isfinite(s->tau_end)) ||
@@ -464,12 +504,17 @@ static int sizes_ok(const struct anvil_green_samples *s)
 		return 0;
 	/* a long window's inversion covered [0, T1] only (plate.h) */
 	double t1 = s->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(s->hh, s->tau_end) : 0;
-	double ratio = s->tau_end / s->dtau, r1 = (t1 > 0 ? t1 : s->tau_end) / s->dtau;
+	double r1 = (t1 > 0 ? t1 : s->tau_end) / s->dtau, pad = t1 > 0 ? ANVIL_PLATE_PAD : 0;
 	double N = exp2(round(log2(4.0 * r1)));
-	if (!(r1 >= GREEN_N_MIN / 4 - 1 && ratio + 2 <= (double)GREEN_SAMPLES_MAX) ||
+	if (!(r1 >= GREEN_N_MIN / 4 - 1 && r1 + 2 + pad <= (double)GREEN_SAMPLES_MAX) ||
 	    !(fabs(4.0 * r1 - N) <= 1e-9 * N))
 		return 0;
-	return s->n == (size_t)floor(ratio) + 2;
+	size_t n1 = (size_t)floor(r1) + 2;
+	if (t1 > 0 && !(s->t1 == (double)(n1 - 2) * s->dtau && s->k))
+		return 0;
+	if (t1 == 0 && (s->t1 != 0 || s->nk != 0))
+		return 0;
+	return s->n == n1 + (size_t)pad;
 }
 
 /* What an importer can afford to check of the samples themselves: ramp[0] = 0
@@ -516,6 +561,24 @@ static int samples_plausible(const struct anvil_green_samples *s)
 	return s->tau_end < 2.0 * trefl || after > CAUSAL_AFTER * s->abserr;
 }
 
+/* The plate's tail of s into g: its table plausible (plate.h), and the
+ * spline's pad beyond T1 (tail_make wrote the model's values there) what
+ * the stored coefficients and table give, to the bit. */
+static int tail_import(struct anvil_green *g, const struct anvil_green_samples *s,
+		       struct anvil_err *err)
+{
+	int st = anvil_plate_tail_init(&g->tail, s->hh, s->nu, s->t1, s->tail_c, s->tail_v,
+				       s->tau_end, s->nk, s->k);
+	g->tailed = 1;
+	for (size_t j = s->n - ANVIL_PLATE_PAD; !st && j < s->n; j++)
+		if (anvil_plate_tail_ramp(&g->tail, (double)j * s->dtau) != s->ramp[j])
+			st = ANVIL_EINVAL;
+	if (st)
+		anvil_err_set(err, st, st == ANVIL_ENOMEM ? "layer response: out of memory" :
+			      "layer response: the plate's tail does not match its samples");
+	return st;
+}
+
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err)
 {
@@ -548,6 +611,10 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 	if (!g->interp || gsl_interp_init(g->interp, g->tau, g->ramp, g->n)) {
 		anvil_err_set(err, g->interp ? ANVIL_ENUM : ANVIL_ENOMEM,
 			      "layer response: cannot rebuild the interpolant");
+		anvil_green_free(g);
+		return NULL;
+	}
+	if (s->t1 > 0 && tail_import(g, s, err)) {
 		anvil_green_free(g);
 		return NULL;
 	}

@@ -82,10 +82,12 @@ struct anvil_green *anvil_green_alloc_twin(enum anvil_green_mode mode, double hh
 					   struct anvil_green **twin, struct anvil_err *err);
 void anvil_green_free(struct anvil_green *g);
 /* 1 if a response over [0, tau_end] at bandwidth omega_max fits this
- * module's limits (ANVIL_DURBIN_M_MAX terms, at most 2^21 + 2 samples: a
- * long window continued by the plate keeps the inversion's fine step), by
- * the arithmetic green_compute uses with the default settings; 0 if
- * anvil_green_alloc would refuse it.  The planner asks before any work. */
+ * module's limits (ANVIL_DURBIN_M_MAX terms, at most 2^21 + 2 samples over
+ * the inversion's window: a long window of a layer correction is inverted
+ * over the plate's T1 only, whatever its length, and continued in closed
+ * form), by the arithmetic green_compute uses with the default settings;
+ * 0 if anvil_green_alloc would refuse it.  The planner asks before any
+ * work. */
 int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, double omega_max);
 /* The same for the Hertz-shaped load of radius patch r0, 0 <= patch <= 1
  * (ANVIL_GREEN_LAYER_CORRECTION only; anvil_green_alloc is patch = 1).
@@ -124,11 +126,21 @@ int anvil_green_alloc_set(double hh, double nu, double tau_end,
 			  anvil_progress_fn progress, void *ctx, struct anvil_green **out,
 			  struct anvil_err *err);
 
-/* Ramp response at tau in [0, tau_end] (cubic interpolation of the FFT grid;
- * 0 for tau <= 0).  ANVIL_EINVAL beyond tau_end. */
+/* Ramp response at tau in [0, tau_end] (0 for tau <= 0): cubic
+ * interpolation of the FFT grid up to anvil_green_t_plate, the plate's
+ * closed form beyond (plate.h: no samples there, so that a response's
+ * memory and time do not grow with its window but for the plate's K
+ * table, O(log tau_end)).  ANVIL_EINVAL beyond tau_end. */
 int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
-/* Step response (derivative of the ramp). */
+/* Step response (derivative of the ramp: the spline's, or the closed
+ * form's analytic one). */
 int anvil_green_step(const struct anvil_green *g, double tau, double *val);
+/* The tau from which the ramp is the plate's closed form (plate.h: the
+ * inversion's window T1 = 64 max(1, h/r0)): smooth there, C-infinity in
+ * tau, without the band limit's ringing; over [T1/2, T1] the samples go
+ * from the inversion to it.  INFINITY when the response is the inversion
+ * everywhere (a window shorter than 4 T1, the half-space mode, no_plate). */
+double anvil_green_t_plate(const struct anvil_green *g);
 
 /* The transformed centre displacement per unit Hankel-transformed load at
  * one (k, s), Re s > 0, units mu = c2 = r0 = 1: the free layer of thickness
@@ -138,29 +150,45 @@ void anvil_green_kernel(double k, double complex s, double nu, double hh,
 			double complex *layer, double complex *halfspace);
 
 double anvil_green_tau_end(const struct anvil_green *g);
-/* Estimated absolute error of the ramp response over [0, tau_end]. */
+/* Estimated absolute error of the ramp response over [0, tau_end]; with
+ * the plate's tail, over [0, t_plate] only: beyond, the fit's error grows
+ * with the extrapolation's length, and anvil_green_abserr_at gives it. */
 double anvil_green_abserr(const struct anvil_green *g);
+/* The bound at tau: anvil_green_abserr, and beyond t_plate = T1 that plus
+ * v (tau/T1 - 1), v the plate fit's validation misfit (plate.h), which
+ * tau_end no longer multiplies (a window 1e6 T1 long would have carried
+ * 1e6 v at every tau). */
+double anvil_green_abserr_at(const struct anvil_green *g, double tau);
 /* Number of kernel evaluations spent (for benchmarks). */
 size_t anvil_green_evals(const struct anvil_green *g);
 
 /* The sampled ramp response, to store it (cache.h) and read it back:
- * ramp[j] at tau = j dtau, j < n, ramp[0] = 0, n = floor(tau_end/dtau) + 2. */
+ * ramp[j] at tau = j dtau, j < n, ramp[0] = 0, n = floor(tau_end/dtau) + 2,
+ * or with the plate's tail (t1 > 0, anvil_green_t_plate), n =
+ * floor(t1/dtau) + 2 + ANVIL_PLATE_PAD and what rebuilds the closed form
+ * beyond t1 to the bit (plate.h's struct anvil_plate_tail). */
 struct anvil_green_samples {
 	enum anvil_green_mode mode;
 	int filtered; /* 1: made with gs.filter (its precursor, green.c) */
 	double hh, nu, tau_end, dtau, abserr;
 	size_t n;
 	const double *ramp;
+	double t1;        /* 0: no tail (nk 0, k NULL) */
+	double tail_c[3]; /* the fit's coefficients */
+	double tail_v;    /* its validation misfit (anvil_green_abserr_at) */
+	size_t nk;        /* the K(t)/t^2 table, k[0..nk-1] */
+	const double *k;
 };
 
-/* Fill s from g; s->ramp is borrowed from g (valid while g lives). */
+/* Fill s from g; s->ramp and s->k are borrowed from g (valid while g lives). */
 void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s);
 /* A response from samples (copied; the spline is rebuilt from them, so it
  * evaluates to the bit as the exported one did).  Its evals count is 0.
  * NULL with ANVIL_EINVAL for inconsistent sizes or window (checked before
  * any cast or allocation: at most 2^21 + 2 samples) or implausible samples
  * (ramp[0] != 0, non-finite, abserr <= 0, a layer correction that breaks
- * causality: see green.c), ANVIL_ENOMEM, ANVIL_ENUM. */
+ * causality: see green.c; a tail whose table is implausible or which does
+ * not give the samples beyond t1 to the bit), ANVIL_ENOMEM, ANVIL_ENUM. */
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err);
 

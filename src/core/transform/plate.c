@@ -2,25 +2,23 @@
  * plate.h. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_multifit.h>
-#include <gsl/gsl_spline.h>
 
 #include "kernel.h"
 #include "material.h"
 #include "plate.h"
 #include "status.h"
 
-/* T1 = 64 max(1, hh), and at least tau_end/512 so that the extended
- * response keeps at most 2^21 samples (green.c: 2048 samples per T1). */
+/* T1 = 64 max(1, hh), whatever the window (the tail is closed form). */
 #define T1_PER_H 64.0
-#define T1_MIN_SHARE 512.0
 
 double anvil_plate_t1(double hh, double tau_end)
 {
-	double t1 = fmax(T1_PER_H * fmax(1.0, hh), tau_end / T1_MIN_SHARE);
+	double t1 = T1_PER_H * fmax(1.0, hh);
 	return tau_end >= 4.0 * t1 ? t1 : 0.0;
 }
 
@@ -77,50 +75,61 @@ static int k_over_t2(double beta, double hh, double t, struct kwork *kw, double 
 	return st || !isfinite(*val) ? ANVIL_ENUM : ANVIL_OK;
 }
 
-/* K(t)/t^2 as a cubic spline in log t, 32 nodes per octave from t0 to t1:
- * smooth and slowly varying there (it tends to alpha* / 2). */
-#define K_PER_OCTAVE 32
 
-struct kspline {
-	gsl_interp_accel *acc;
-	gsl_spline *sp;
-};
-
-static void kspline_free(struct kspline *ks)
+static int kwork_alloc(struct kwork *kw)
 {
-	gsl_spline_free(ks->sp);
-	gsl_interp_accel_free(ks->acc);
+	*kw = (struct kwork){ gsl_integration_workspace_alloc(1000),
+			      gsl_integration_workspace_alloc(1000),
+			      gsl_integration_qawo_table_alloc(1.0, 1.0, GSL_INTEG_SINE, 25) };
+	return kw->w && kw->wc && kw->tab ? ANVIL_OK : ANVIL_ENOMEM;
 }
 
-static int kspline_make(double beta, double hh, double t0, double t1, struct kspline *ks)
+static void kwork_free(struct kwork *kw)
 {
-	size_t n = (size_t)ceil(K_PER_OCTAVE * log2(t1 / t0)) + 4;
-	double *x = malloc(2 * n * sizeof *x);
-	struct kwork kw = { gsl_integration_workspace_alloc(1000),
-			    gsl_integration_workspace_alloc(1000),
-			    gsl_integration_qawo_table_alloc(1.0, 1.0, GSL_INTEG_SINE, 25) };
-	ks->acc = gsl_interp_accel_alloc();
-	ks->sp = gsl_spline_alloc(gsl_interp_cspline, n);
-	int st = (!x || !kw.w || !kw.wc || !kw.tab || !ks->acc || !ks->sp) ? ANVIL_ENOMEM : ANVIL_OK;
-	for (size_t i = 0; !st && i < n; i++) {
-		x[i] = log(t0) + (double)i * (log(t1) - log(t0)) / (double)(n - 1);
-		st = k_over_t2(beta, hh, exp(x[i]), &kw, &x[n + i]);
-	}
-	if (!st && gsl_spline_init(ks->sp, x, x + n, n))
-		st = ANVIL_ENUM;
-	gsl_integration_qawo_table_free(kw.tab);
-	gsl_integration_workspace_free(kw.wc);
-	gsl_integration_workspace_free(kw.w);
-	free(x);
-	if (st)
-		kspline_free(ks);
+	gsl_integration_qawo_table_free(kw->tab);
+	gsl_integration_workspace_free(kw->wc);
+	gsl_integration_workspace_free(kw->w);
+}
+
+static double plate_beta(double hh, double nu) { return hh / sqrt(6.0 * (1.0 - nu)); }
+
+int anvil_plate_k(double hh, double nu, double t, double *val)
+{
+	struct kwork kw;
+	int st = kwork_alloc(&kw);
+	if (!st)
+		st = k_over_t2(plate_beta(hh, nu), hh, t, &kw, val);
+	kwork_free(&kw);
 	return st;
 }
 
+/* ---- the table of K(t)/t^2 in log t ----
+ *
+ * Nodes u_i = u0 + i h, h = ln 2 / 32, u0 = log(T1/17): the grid depends on
+ * T1 only, so a longer window's table is this one extended.  The cubic
+ * B-spline quasi-interpolant s(u) = sum_i b_i B((u - u_i)/h) is C2; its
+ * coefficients are the interpolating spline's, b = (1 + delta^2/6)^-1 k,
+ * to the delta^4 term, b_i = (k_{i-2} - 10 k_{i-1} + 54 k_i - 10 k_{i+1}
+ * + k_{i+2})/36 (with delta^2 alone its error was 10 times the
+ * interpolating spline's on thin plates; with delta^4, measured on h =
+ * 0.02-2 r0, the same to two digits: 2.9e-9 relative at h = 0.02 r0 near
+ * T1/8, below 3e-10 elsewhere).  Each value uses four coefficients, hence
+ * eight nodes.  Hand-written: GSL's splines solve for all nodes at once (a
+ * node far off changes the last bits). */
+#define K_H (M_LN2 / ANVIL_PLATE_PER_OCTAVE)
+#define K_T0_SHARE 17.0
+
+static double node_u0(double t1) { return log(t1 / K_T0_SHARE); }
+
+size_t anvil_plate_nodes(double t1, double tau_end)
+{
+	return (size_t)ceil((log(tau_end) - node_u0(t1)) / K_H) + 5;
+}
+
 struct anvil_plate_memo {
-	int ok;
-	double beta, hh, t0, t1; /* kspline_make's arguments, compared exactly */
-	struct kspline ks;
+	double beta, hh, u0; /* the table's plate and grid, compared exactly */
+	size_t n, cap;
+	double *k;
 };
 
 struct anvil_plate_memo *anvil_plate_memo_alloc(void)
@@ -130,58 +139,133 @@ struct anvil_plate_memo *anvil_plate_memo_alloc(void)
 
 void anvil_plate_memo_free(struct anvil_plate_memo *m)
 {
-	if (m && m->ok)
-		kspline_free(&m->ks);
+	if (m)
+		free(m->k);
 	free(m);
 }
 
-/* The table into *ks: the memo's (when it is this one), or made (and then
- * the memo's, or own: *own set, the caller frees it). */
-static int kspline_get(struct anvil_plate_memo *m, double beta, double hh, double t0, double t1,
-		       struct kspline *ks, int *own)
+/* k[i] for i in [from, n) at the grid (beta, hh, u0). */
+static int nodes_make(double beta, double hh, double u0, size_t from, size_t n, double *k)
 {
-	*own = 0;
-	if (m && m->ok && m->beta == beta && m->hh == hh && m->t0 == t0 && m->t1 == t1) {
-		*ks = m->ks;
-		return ANVIL_OK;
-	}
-	int st = kspline_make(beta, hh, t0, t1, ks);
-	if (st || !m) {
-		*own = !st;
+	struct kwork kw;
+	int st = kwork_alloc(&kw);
+	for (size_t i = from; !st && i < n; i++)
+		st = k_over_t2(beta, hh, exp(u0 + (double)i * K_H), &kw, &k[i]);
+	kwork_free(&kw);
+	return st;
+}
+
+/* The first n nodes into k: the memo's where it has them (the same
+ * plate and grid), the rest computed (and then the memo's). */
+static int nodes_get(struct anvil_plate_memo *m, double beta, double hh, double u0, size_t n,
+		     double *k)
+{
+	int same = m && m->beta == beta && m->hh == hh && m->u0 == u0;
+	size_t have = same ? (m->n < n ? m->n : n) : 0;
+	if (have)
+		memcpy(k, m->k, have * sizeof *k);
+	int st = nodes_make(beta, hh, u0, have, n, k);
+	if (st || !m || (same && m->n >= n))
 		return st;
+	if (m->cap < n) {
+		double *nk = realloc(m->k, n * sizeof *nk);
+		if (!nk)
+			return ANVIL_OK; /* the memo stays as it was: only a cost */
+		m->k = nk;
+		m->cap = n;
 	}
-	if (m->ok)
-		kspline_free(&m->ks);
-	*m = (struct anvil_plate_memo){ .ok = 1, .beta = beta, .hh = hh, .t0 = t0, .t1 = t1,
-					.ks = *ks };
+	memcpy(m->k, k, n * sizeof *k);
+	m->beta = beta;
+	m->hh = hh;
+	m->u0 = u0;
+	m->n = n;
 	return ANVIL_OK;
 }
 
-/* ---- the fit ---- */
-
-struct model {
-	double beta, hh, shs, t1;
-	struct kspline ks;
-};
-
-/* g - (K - s_hs t) at t, the part fitted */
-static double plate_part(const struct model *m, double t)
+static void tail_coefs(struct anvil_plate_tail *tl)
 {
-	return t * t * gsl_spline_eval(m->ks.sp, log(t), m->ks.acc) - m->shs * t;
+	const double *k = tl->k;
+	size_t n = tl->nk;
+	tl->bc[0] = tl->bc[1] = tl->bc[n - 2] = tl->bc[n - 1] = 0.0; /* not used */
+	for (size_t i = 2; i + 2 < n; i++)
+		tl->bc[i] = (k[i - 2] - 10.0 * k[i - 1] + 54.0 * k[i] - 10.0 * k[i + 1] + k[i + 2]) /
+			    36.0;
 }
 
-static void basis(const struct model *m, double t, double *b)
+/* The interval j (its coefficients j-1 .. j+2 exist: 3 <= j <= nk - 5) and
+ * the place f in it of u = log t. */
+static size_t tail_at(const struct anvil_plate_tail *tl, double t, double *f)
 {
-	double x = t / m->t1; /* scaled: the normal matrix stays well conditioned */
+	double x = (log(t) - tl->u0) / K_H, j = floor(x);
+	double jmax = (double)(tl->nk - 5);
+	j = j < 3.0 ? 3.0 : j > jmax ? jmax : j;
+	*f = x - j;
+	return (size_t)j;
+}
+
+/* K(t)/t^2 and (d) its derivative in log t. */
+static double k_interp(const struct anvil_plate_tail *tl, double t, double *d)
+{
+	double f;
+	size_t j = tail_at(tl, t, &f);
+	double g = 1.0 - f;
+	const double *b = tl->bc + j - 1;
+	double f2 = f * f, f3 = f2 * f;
+	if (d)
+		*d = (-0.5 * g * g * b[0] + (1.5 * f2 - 2.0 * f) * b[1] +
+		      (-1.5 * f2 + f + 0.5) * b[2] + 0.5 * f2 * b[3]) / K_H;
+	return (g * g * g * b[0] + (3.0 * f3 - 6.0 * f2 + 4.0) * b[1] +
+		(-3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0) * b[2] + f3 * b[3]) / 6.0;
+}
+
+/* ---- the model and its fit ---- */
+
+/* g - (K - s_hs t) at t, the part fitted */
+static double plate_part(const struct anvil_plate_tail *tl, double t)
+{
+	return t * t * k_interp(tl, t, NULL) - tl->shs * t;
+}
+
+static void basis(const struct anvil_plate_tail *tl, double t, double *b)
+{
+	double x = t / tl->t1; /* scaled: the normal matrix stays well conditioned */
 	b[0] = 1.0;
 	b[1] = x;
 	b[2] = x * log(x);
 }
 
+static double model_at(const struct anvil_plate_tail *tl, const double c[3], double t)
+{
+	double b[3];
+	basis(tl, t, b);
+	return plate_part(tl, t) + c[0] * b[0] + c[1] * b[1] + c[2] * b[2];
+}
+
+double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t)
+{
+	return model_at(tl, tl->c, t);
+}
+
+double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t)
+{
+	double d, s = k_interp(tl, t, &d), x = t / tl->t1;
+	return t * (2.0 * s + d) - tl->shs + (tl->c[1] + tl->c[2] * (log(x) + 1.0)) / tl->t1;
+}
+
+double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t)
+{
+	return k_interp(tl, t, NULL);
+}
+
+double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t)
+{
+	return tl->v * fmax(1.0, t / tl->t1);
+}
+
 /* Least squares (GSL's SVD-based multifit) of ramp - plate_part over the
  * samples with t in [ta, tb], at most 1024 of them. */
-static int fit(const struct model *m, const double *ramp, double dtau, double ta, double tb,
-	       double c[3])
+static int fit(const struct anvil_plate_tail *tl, const double *ramp, double dtau, double ta,
+	       double tb, double c[3])
 {
 	size_t j0 = (size_t)ceil(ta / dtau), j1 = (size_t)floor(tb / dtau);
 	size_t stride = (j1 - j0) / 1024 + 1, n = (j1 - j0) / stride + 1;
@@ -193,10 +277,10 @@ static int fit(const struct model *m, const double *ramp, double dtau, double ta
 	for (size_t i = 0; !st && i < n; i++) {
 		size_t j = j0 + i * stride;
 		double t = (double)j * dtau, b[3];
-		basis(m, t, b);
+		basis(tl, t, b);
 		for (int k = 0; k < 3; k++)
 			gsl_matrix_set(X, i, (size_t)k, b[k]);
-		gsl_vector_set(y, i, ramp[j] - plate_part(m, t));
+		gsl_vector_set(y, i, ramp[j] - plate_part(tl, t));
 	}
 	double chi2;
 	if (!st && gsl_multifit_linear(X, y, cv, cov, &chi2, w))
@@ -211,13 +295,6 @@ static int fit(const struct model *m, const double *ramp, double dtau, double ta
 	return st;
 }
 
-static double model_at(const struct model *m, const double c[3], double t)
-{
-	double b[3];
-	basis(m, t, b);
-	return plate_part(m, t) + c[0] * b[0] + c[1] * b[1] + c[2] * b[2];
-}
-
 /* The join.  The least-squares model does not pass through the
  * inversion's last samples: they differ by the inversion's error there
  * (largest at T1, its e^{c0 t} amplification), e.g. 50 in 1.3e6 at h =
@@ -229,48 +306,83 @@ static double model_at(const struct model *m, const double c[3], double t)
  * ramp stays C2, the offset d spreads over T1/2 (at most 5.8 d (2/T1)^2 in
  * the impulse response), and each blended sample, a convex combination
  * of two estimates of the same function, is within the larger of their
- * errors (both already in abserr). */
-static void blend(const struct model *m, const double c[3], double dtau, size_t n1, double *ramp)
+ * errors (both already in abserr).  Beyond T1 the samples (the spline's
+ * pad) are the model's. */
+static void blend(const struct anvil_plate_tail *tl, double dtau, size_t n1, size_t n,
+		  double *ramp)
 {
-	double ta = 0.5 * m->t1, w = m->t1 - ta;
+	double ta = 0.5 * tl->t1, w = tl->t1 - ta;
 	for (size_t j = (size_t)ceil(ta / dtau); j < n1; j++) {
 		double t = (double)j * dtau, x = fmin(1.0, (t - ta) / w);
 		double s = x * x * x * (10.0 - 15.0 * x + 6.0 * x * x);
-		ramp[j] += s * (model_at(m, c, t) - ramp[j]);
+		ramp[j] += s * (model_at(tl, tl->c, t) - ramp[j]);
 	}
+	for (size_t j = n1; j < n; j++)
+		ramp[j] = model_at(tl, tl->c, (double)j * dtau);
 }
 
-int anvil_plate_extend(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
-		       double *ext_err)
+static int tail_alloc(struct anvil_plate_tail *tl, double hh, double nu, double t1, size_t nk)
 {
-	return anvil_plate_extend_memo(hh, nu, dtau, n1, n, ramp, ext_err, NULL);
+	*tl = (struct anvil_plate_tail){ .hh = hh, .nu = nu, .t1 = t1, .nk = nk,
+					 .beta = plate_beta(hh, nu),
+					 .shs = 3.0 / (16.0 * (1.0 - anvil_kappa2(nu))),
+					 .u0 = node_u0(t1) };
+	if (nk < 10)
+		return ANVIL_EINVAL;
+	tl->k = malloc(2 * nk * sizeof *tl->k);
+	if (!tl->k)
+		return ANVIL_ENOMEM;
+	tl->bc = tl->k + nk;
+	return ANVIL_OK;
 }
 
-int anvil_plate_extend_memo(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
-			    double *ext_err, struct anvil_plate_memo *memo)
+void anvil_plate_tail_free(struct anvil_plate_tail *tl)
 {
-	struct model m = { .beta = hh / sqrt(6.0 * (1.0 - nu)), .hh = hh,
-			   .shs = 3.0 / (16.0 * (1.0 - anvil_kappa2(nu))),
-			   .t1 = (double)(n1 - 2) * dtau };
-	double tend = (double)(n - 1) * dtau, c[3], cv[3], v = 0;
-	/* nodes a little beyond both ends: log t at the last sample must not
-	 * round past the last node */
-	int own;
-	int st = kspline_get(memo, m.beta, hh, m.t1 / 17.0, 1.01 * tend, &m.ks, &own);
+	free(tl->k);
+	*tl = (struct anvil_plate_tail){ 0 };
+}
+
+int anvil_plate_tail_make(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
+			  double tau_end, struct anvil_plate_memo *memo,
+			  struct anvil_plate_tail *tl)
+{
+	double t1 = (double)(n1 - 2) * dtau, cv[3], v = 0;
+	int st = tail_alloc(tl, hh, nu, t1, anvil_plate_nodes(t1, tau_end));
+	if (!st)
+		st = nodes_get(memo, tl->beta, hh, tl->u0, tl->nk, tl->k);
 	if (st)
 		return st;
+	tail_coefs(tl);
 	/* the validation: fitted on [T1/8, T1/2], checked on [T1/2, T1] */
-	st = fit(&m, ramp, dtau, m.t1 / 8.0, m.t1 / 2.0, cv);
-	for (size_t j = (size_t)ceil(0.5 * m.t1 / dtau); !st && (double)j * dtau <= m.t1; j++)
-		v = fmax(v, fabs(model_at(&m, cv, (double)j * dtau) - ramp[j]));
+	st = fit(tl, ramp, dtau, t1 / 8.0, t1 / 2.0, cv);
+	for (size_t j = (size_t)ceil(0.5 * t1 / dtau); !st && (double)j * dtau <= t1; j++)
+		v = fmax(v, fabs(model_at(tl, cv, (double)j * dtau) - ramp[j]));
 	if (!st)
-		st = fit(&m, ramp, dtau, m.t1 / 4.0, m.t1, c);
-	for (size_t j = n1; !st && j < n; j++)
-		ramp[j] = model_at(&m, c, (double)j * dtau);
+		st = fit(tl, ramp, dtau, t1 / 4.0, t1, tl->c);
 	if (!st)
-		blend(&m, c, dtau, n1, ramp);
-	*ext_err = v * tend / m.t1;
-	if (own)
-		kspline_free(&m.ks);
+		blend(tl, dtau, n1, n, ramp);
+	tl->v = v;
 	return st;
+}
+
+int anvil_plate_tail_init(struct anvil_plate_tail *tl, double hh, double nu, double t1,
+			  const double c[3], double v, double tau_end, size_t nk, const double *k)
+{
+	if (!(t1 > 0) || nk != anvil_plate_nodes(t1, tau_end) || !(v >= 0 && isfinite(v)) ||
+	    !isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2])) {
+		*tl = (struct anvil_plate_tail){ 0 };
+		return ANVIL_EINVAL;
+	}
+	int st = tail_alloc(tl, hh, nu, t1, nk);
+	double alpha = 1.0 / (8.0 * tl->beta * hh);
+	for (size_t i = 0; !st && i < nk; i++)
+		if (!(k[i] > 0 && k[i] <= alpha))
+			st = ANVIL_EINVAL;
+	if (st)
+		return st;
+	memcpy(tl->k, k, nk * sizeof *k);
+	memcpy(tl->c, c, sizeof tl->c);
+	tl->v = v;
+	tail_coefs(tl);
+	return ANVIL_OK;
 }

@@ -16,7 +16,19 @@
  * the last three terms the local (thickness-direction) compliance and the
  * shear and rotary inertia of a thick (Mindlin) plate, whose leading
  * effect on the impulse response decays like 1/t.  They are fitted to the
- * inversion over [T1/4, T1] and the sum is used beyond T1.
+ * inversion over [T1/4, T1] and the sum, in closed form, is the response
+ * beyond T1 (the "tail"): no samples there, whatever the window.
+ *
+ * K(t)/t^2 is smooth and slowly varying in log t: it is tabulated at
+ * ANVIL_PLATE_PER_OCTAVE nodes per octave from T1/17 to the window's end
+ * (O(log tau_end) quadratures) and interpolated by a cubic B-spline
+ * quasi-interpolant (C2, local: a value depends on the eight nodes about
+ * it only, so that a longer window's table gives the same bits where both
+ * are defined).  Its interpolation error, measured against the quadrature
+ * at the midpoints between nodes, is that of GSL's interpolating cubic
+ * spline on the same nodes: 2.9e-9 of K at h = 0.02 r0 (near T1/8, where
+ * a thin plate's K/t^2 bends most), 2.3e-10 at 0.1 r0, below 3e-10 on
+ * thicker layers and at late times (tests/test_tail.c).
  *
  * Measured (normal settings, nu = 0.3, against one inversion over the
  * whole window, 8 T1): the relative error of g beyond T1 was 2e-6 at
@@ -32,33 +44,79 @@
 /* The inversion window T1 before the plate takes over: 64 max(1, hh) (the
  * waves that matter are then 8 times longer than h and the reverberations
  * between the faces have died down); 0 when the window tau_end is shorter
- * than 4 T1 (a plain inversion is cheap enough there).  A function of hh
- * and tau_end only, so that the cache's key still says everything. */
+ * than 4 T1 (a plain inversion is cheap enough there).  T1 does not grow
+ * with the window: the closed form covers any length. */
 double anvil_plate_t1(double hh, double tau_end);
 
-/* Extend the ramp samples ramp[j] at tau_j = j dtau, known (from the
- * inversion) for j < n1, to j < n: the fit of a + b t + c t log t to
- * g - (K - s_hs t) over [T1/4, T1] with T1 = (n1 - 2) dtau, then the sum
- * beyond.  *ext_err gets the estimated absolute error of the extended
- * samples: the same fit made over [T1/16, T1/4] misses the inversion over
- * [T1/4, T1] by v; the error grows with the extrapolation's length, so
- * v (tau_end/T1) is taken (the measured errors above were 3-30 times
- * below it).  ANVIL_ENUM when the quadrature of K fails, ANVIL_ENOMEM. */
-int anvil_plate_extend(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
-		       double *ext_err);
+/* The samples a response with a tail keeps beyond the inversion's
+ * window: its cubic spline (green.c) ends in a natural end condition,
+ * whose effect decays by 0.27 a sample; 32 of them (1e-18) keep it off
+ * [0, T1], where the spline is used. */
+#define ANVIL_PLATE_PAD 32
+/* Nodes of the K(t)/t^2 table per octave (quasi-interpolant, above). */
+#define ANVIL_PLATE_PER_OCTAVE 32
+/* The K table's nodes for a tail from T1 to tau_end: t_i = (T1/17)
+ * 2^(i/32), i < n, three below T1/8 and four beyond tau_end at least (the
+ * quasi-interpolant's reach). */
+size_t anvil_plate_nodes(double t1, double tau_end);
 
-/* The last K(t) table that anvil_plate_extend_memo made (its quadratures,
- * a third of a long window's response), for the next extension of the
- * same plate and span: a layer correction, its twin and the patch's
- * correction of one window share it.  A pure function's memo: the same
- * bits whether it held the table or not.  Owned by one thread at a time
- * (the solver's, beside its cache).  NULL when out of memory. */
+/* The closed form beyond T1: what rebuilds it to the bit (green.c stores
+ * it in the cache).  All owned by the tail. */
+struct anvil_plate_tail {
+	double hh, nu, t1;
+	double c[3];  /* a + b x + c x log x, x = t/T1 */
+	double v;     /* the validation's misfit: the error bound's unit (below) */
+	size_t nk;    /* K(t)/t^2 at the nodes, k[0..nk-1] */
+	double *k;
+	double *bc;   /* their B-spline coefficients (from k, the same bits) */
+	double beta, shs, u0;
+};
+
+/* The tail of the samples ramp[j] at tau_j = j dtau, known (from the
+ * inversion) for j < n1, over the window [0, tau_end]: the fit of
+ * a + b t + c t log t to g - (K - s_hs t) over [T1/4, T1] with
+ * T1 = (n1 - 2) dtau; then ramp[j] for n1 <= j < n (n - n1 small: the
+ * spline's pad) the model's values, and over [T1/2, T1] the blend from
+ * the inversion to the model (plate.c says why).  tl->v: the same fit
+ * made over [T1/8, T1/2] misses the inversion over [T1/2, T1] by v; the
+ * error grows with the extrapolation's length, so the tail's error at
+ * t >= T1 is taken to be v t/T1 (anvil_plate_tail_err; the measured
+ * errors above were 3-30 times below it).  memo: the K table kept from one
+ * tail to the next (NULL: none).  The caller frees tl with
+ * anvil_plate_tail_free (also on failure).  ANVIL_ENUM when the
+ * quadrature of K fails, ANVIL_ENOMEM. */
 struct anvil_plate_memo;
+int anvil_plate_tail_make(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
+			  double tau_end, struct anvil_plate_memo *memo,
+			  struct anvil_plate_tail *tl);
+/* A tail from what tail_make stored (t1, c, v, nk nodes k copied): the
+ * same bits.  ANVIL_EINVAL for a table that does not fit the window
+ * (nk != anvil_plate_nodes(t1, tau_end)) or implausible values (not
+ * finite; K/t^2 outside (0, alpha*], where the plate's moves no faster
+ * than its limit alpha* t^2/2 and always forward), ANVIL_ENOMEM. */
+int anvil_plate_tail_init(struct anvil_plate_tail *tl, double hh, double nu, double t1,
+			  const double c[3], double v, double tau_end, size_t nk, const double *k);
+void anvil_plate_tail_free(struct anvil_plate_tail *tl); /* frees the arrays; zeroed */
+
+/* The ramp and step (its analytic derivative: the quasi-interpolant's in
+ * log t) at t >= T1/8, within the table. */
+double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t);
+double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t);
+/* K(t)/t^2 from the table (the quasi-interpolant), for tests. */
+double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t);
+/* The error bound at t >= T1: v t/T1. */
+double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t);
+
+/* K(t)/t^2 by its quadrature (to 1e-12), for tests of the table. */
+int anvil_plate_k(double hh, double nu, double t, double *val);
+
+/* The K(t) table that anvil_plate_tail_make made last (its quadratures),
+ * for the next tail of the same plate: a layer correction, its twin and
+ * the patch's correction of one window share it; a longer window extends
+ * it.  A pure function's memo: the same bits whether it held the table or
+ * not.  Owned by one thread at a time (the solver's, beside its cache).
+ * NULL when out of memory. */
 struct anvil_plate_memo *anvil_plate_memo_alloc(void);
 void anvil_plate_memo_free(struct anvil_plate_memo *m); /* NULL is a no-op */
-
-/* anvil_plate_extend through memo (NULL: none). */
-int anvil_plate_extend_memo(double hh, double nu, double dtau, size_t n1, size_t n, double *ramp,
-			    double *ext_err, struct anvil_plate_memo *memo);
 
 #endif

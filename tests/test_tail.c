@@ -1,0 +1,303 @@
+/* test_tail: the layer correction's plate tail (plate.h, green.h
+ * anvil_green_t_plate): beyond T1 the response is the plate's closed form,
+ * not samples to the window's end.
+ *  - the K(t)/t^2 table's interpolant against its quadrature between nodes;
+ *  - the closed form against a cubic spline through its own samples at the
+ *    inversion's step (the response before: the plate's model sampled to the
+ *    window's end and interpolated), on h = 0.1, 0.5, 2 r0;
+ *  - ramp and step continuous at T1;
+ *  - a window 1e6 T1 long: as many samples as a 16 T1 one, the same bits
+ *    below 8 T1, its error bound per time, and the plate's memo;
+ *  - the cache's round trip to the bit, and a damaged tail refused;
+ *  - anvil_green_t_plate's value, and the planner's arithmetic. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_interp.h>
+
+#include "cache.h"
+#include "green.h"
+#include "plan.h"
+#include "plate.h"
+#include "tap.h"
+
+static struct anvil_green *make(double hh, double tau_end, double omega, int no_plate,
+				struct anvil_plate_memo *memo)
+{
+	struct anvil_green_settings gs;
+	struct anvil_err e;
+	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+	gs.omega_max = omega;
+	gs.no_plate = no_plate;
+	gs.plate = memo;
+	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3, tau_end,
+						  &gs, NULL, NULL, &e);
+	if (!g)
+		diag("h = %g r0, window %g: %s", hh, tau_end, e.msg);
+	return g;
+}
+
+static double t1_of(double hh) { return 64.0 * fmax(1.0, hh); }
+
+/* The table (32 nodes an octave, cubic B-spline quasi-interpolant) against
+ * K's quadrature at the midpoints between nodes, where its error is the
+ * largest, from T1/8 to 1e6 T1. */
+static void test_k_table(const struct anvil_green *g, double hh)
+{
+	struct anvil_green_samples s;
+	struct anvil_plate_tail tl;
+	anvil_green_export(g, &s);
+	int st = anvil_plate_tail_init(&tl, hh, 0.3, s.t1, s.tail_c, s.tail_v, s.tau_end, s.nk, s.k);
+	double worst = 0, h = M_LN2 / ANVIL_PLATE_PER_OCTAVE;
+	for (double u = log(s.t1 / 8.0) + 0.5 * h; !st && u < log(s.tau_end); u += 7.0 * h) {
+		double q, t = exp(u);
+		if (anvil_plate_k(hh, 0.3, t, &q)) {
+			st = 1;
+			break;
+		}
+		worst = fmax(worst, fabs(anvil_plate_tail_k(&tl, t) - q) / q);
+	}
+	ok(!st && worst < 1e-9,
+	   "h = %g r0: K(t)/t^2 from its table within %.1e of its quadrature between nodes", hh,
+	   worst);
+	anvil_plate_tail_free(&tl);
+}
+
+/* The closed form beyond T1 against the response before this change: the
+ * same model sampled at the inversion's step dtau to the window's end and
+ * interpolated by a natural cubic spline.  They differ by that spline's
+ * interpolation error, (5/384) dtau^4 max |g''''| with g'''' ~ c/t^3 (the
+ * t log t term) and K's: below 1e-12 of the response beyond T1 + 64 dtau
+ * (nearer T1 the old samples held the blend, which the spline's pad still
+ * holds).  Checked at points off the sample grid, to 7 T1 (the natural
+ * end at 8 T1 is the old spline's own). */
+static void test_against_samples(double hh)
+{
+	double t1 = t1_of(hh), tau_end = 8.0 * t1;
+	struct anvil_green *g = make(hh, tau_end, 2.0, 0, NULL);
+	if (!g) {
+		ok(0, "h = %g r0: response made", hh);
+		return;
+	}
+	struct anvil_green_samples s;
+	anvil_green_export(g, &s);
+	size_t n = (size_t)floor(tau_end / s.dtau) + 2;
+	double *x = malloc(2 * n * sizeof *x), *y = x + n, worst = 0;
+	for (size_t j = 0; j < n; j++) {
+		x[j] = (double)j * s.dtau;
+		if (j < s.n)
+			y[j] = s.ramp[j];
+		else
+			anvil_green_ramp(g, fmin(x[j], tau_end), &y[j]);
+	}
+	gsl_interp *sp = gsl_interp_alloc(gsl_interp_cspline, n);
+	gsl_interp_accel *acc = gsl_interp_accel_alloc();
+	gsl_interp_init(sp, x, y, n);
+	for (double t = t1 + 64.0 * s.dtau + 0.37 * s.dtau; t < 7.0 * t1; t += 13.1 * s.dtau) {
+		double a, b = gsl_interp_eval(sp, x, y, t, acc);
+		anvil_green_ramp(g, t, &a);
+		worst = fmax(worst, fabs(a - b) / fabs(b));
+	}
+	ok(worst < 1e-12, "h = %g r0: the closed form beyond T1 = %g is the old sampled tail to "
+	   "%.1e (its spline's interpolation error at dtau = %.3g)", hh, t1, worst, s.dtau);
+	gsl_interp_accel_free(acc);
+	gsl_interp_free(sp);
+	free(x);
+	test_k_table(g, hh);
+	anvil_green_free(g);
+}
+
+/* At T1 the ramp goes from the samples' spline to the closed form: the
+ * samples there are the model's, so ramp and step join to the spline's
+ * interpolation error (the step: its derivative's, O(dtau^3)). */
+static void test_join(double hh)
+{
+	double t1 = t1_of(hh);
+	struct anvil_green *g = make(hh, 16.0 * t1, 2.0, 0, NULL);
+	if (!g) {
+		ok(0, "h = %g r0: response made", hh);
+		return;
+	}
+	double tp = anvil_green_t_plate(g), above = nextafter(tp, INFINITY), r0, r1, s0, s1;
+	anvil_green_ramp(g, tp, &r0);
+	anvil_green_ramp(g, above, &r1);
+	anvil_green_step(g, tp, &s0);
+	anvil_green_step(g, above, &s1);
+	double dr = fabs(r1 - r0) / fabs(r0), ds = fabs(s1 - s0) / fabs(s0);
+	ok(dr < 1e-13 && ds < 1e-8, "h = %g r0: at T1 the ramp joins to %.1e, the step to %.1e",
+	   hh, dr, ds);
+	/* the closed form's step is its ramp's derivative (analytic, not a
+	 * difference: checked against one) */
+	double t = 3.3 * t1, d = 1e-3 * t1, rp, rm, st;
+	anvil_green_ramp(g, t + d, &rp);
+	anvil_green_ramp(g, t - d, &rm);
+	anvil_green_step(g, t, &st);
+	double fd = (rp - rm) / (2.0 * d);
+	ok(fabs(fd - st) < 1e-8 * fabs(st), "h = %g r0: the tail's step = d ramp/dt (%.1e)", hh,
+	   fabs(fd - st) / fabs(st));
+	anvil_green_free(g);
+}
+
+static int same_at(const struct anvil_green *a, const struct anvil_green *b, double lo,
+		   double hi)
+{
+	for (double t = lo; t < hi; t += 0.01731 * (hi - lo)) {
+		double x, y, u, v;
+		anvil_green_ramp(a, t, &x);
+		anvil_green_ramp(b, t, &y);
+		anvil_green_step(a, t, &u);
+		anvil_green_step(b, t, &v);
+		if (memcmp(&x, &y, sizeof x) || memcmp(&u, &v, sizeof u))
+			return 0;
+	}
+	return 1;
+}
+
+/* A window 1e6 T1 long: the inversion and the samples are T1's, the K
+ * table O(log tau_end); below 8 T1 the same bits as a 16 T1 window's (the
+ * fit is over [T1/4, T1], T1 does not depend on the window, and the K
+ * table's interpolant is local), also when a memo held the longer table
+ * first. */
+static void test_long_window(void)
+{
+	double hh = 0.5, t1 = t1_of(hh);
+	struct anvil_plate_memo *m = anvil_plate_memo_alloc();
+	struct anvil_green *l = make(hh, 1e6 * t1, 2.0, 0, m);
+	struct anvil_green *sm = make(hh, 16.0 * t1, 2.0, 0, m);
+	struct anvil_green *s0 = make(hh, 16.0 * t1, 2.0, 0, NULL);
+	if (!l || !sm || !s0) {
+		ok(0, "windows 1e6 T1 and 16 T1 made");
+		goto out;
+	}
+	struct anvil_green_samples a, b;
+	anvil_green_export(l, &a);
+	anvil_green_export(sm, &b);
+	ok(a.n == b.n && anvil_green_evals(l) == anvil_green_evals(s0),
+	   "window 1e6 T1: %zu samples and %zu evaluations, as a 16 T1 window (K table: %zu "
+	   "nodes against %zu)", a.n, anvil_green_evals(l), a.nk, b.nk);
+	ok(same_at(l, s0, 1e-3, 8.0 * t1) && same_at(sm, s0, 1e-3, 16.0 * t1),
+	   "  its ramp and step below 8 T1 have the 16 T1 window's bits (also from the memo)");
+	double v = a.tail_v, e1 = anvil_green_abserr_at(l, 1e5 * t1);
+	ok(anvil_green_abserr(l) == anvil_green_abserr(s0) && v > 0 &&
+		   fabs(e1 - (anvil_green_abserr(l) + v * (1e5 - 1.0))) <= 1e-12 * e1,
+	   "  its error bound: %.3g to T1, per time beyond (v = %.3g, %.3g at 1e5 T1)",
+	   anvil_green_abserr(l), v, e1);
+	double r, want = 1.0 / (8.0 * (hh / sqrt(6.0 * 0.7)) * hh) * 0.5;
+	anvil_green_ramp(l, 1e6 * t1, &r);
+	double tt = 1e6 * t1;
+	ok(fabs(r / (tt * tt) - want) < 1e-4 * want,
+	   "  at 1e6 T1 the ramp is the plate's alpha* t^2/2 to %.1e", fabs(r / (tt * tt) - want) / want);
+out:
+	anvil_green_free(l);
+	anvil_green_free(sm);
+	anvil_green_free(s0);
+	anvil_plate_memo_free(m);
+}
+
+/* The cache's file (format 8): a tailed response written and read back
+ * gives the same bits, beyond T1 too; a damaged tail (a coefficient, a
+ * node) is refused by the importer. */
+static void test_cache(void)
+{
+	double hh = 0.1, t1 = t1_of(hh);
+	char dir[] = "/tmp/anvil-test-tail-XXXXXX", path[4096];
+	struct anvil_cache_key key = { hh, 0.3, ANVIL_ACC_DRAFT, 4, 40, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_err e;
+	struct anvil_green *g = make(hh, anvil_cache_grid(key.tau_idx), anvil_cache_grid(key.omega_idx),
+				     0, NULL);
+	if (!g || !mkdtemp(dir)) {
+		ok(0, "a tailed response and a directory");
+		anvil_green_free(g);
+		return;
+	}
+	anvil_cache_path(dir, &key, path, sizeof path);
+	int rc = anvil_cache_write(path, &key, g, &e);
+	struct anvil_green *h = anvil_cache_read(path, &key, &e);
+	struct anvil_green_samples x, y;
+	anvil_green_export(g, &x);
+	if (h)
+		anvil_green_export(h, &y);
+	double tend = anvil_cache_grid(key.tau_idx);
+	ok(!rc && h && x.n == y.n && x.nk == y.nk && x.t1 == y.t1 &&
+		   !memcmp(x.ramp, y.ramp, x.n * sizeof *x.ramp) &&
+		   !memcmp(x.k, y.k, x.nk * sizeof *x.k) &&
+		   !memcmp(x.tail_c, y.tail_c, sizeof x.tail_c) && same_at(g, h, 1e-3, tend),
+	   "cache: a tailed response (window %g = %.3g T1, %zu samples, %zu nodes) read back to "
+	   "the bit, beyond T1 too", tend, tend / t1, x.n, x.nk);
+	anvil_green_free(h);
+	struct anvil_green_samples z = x;
+	z.tail_c[1] *= 1.0 + 1e-12;
+	h = anvil_green_import(&z, &e);
+	ok(!h, "  a fitted coefficient off by 1e-12: refused (%s)", h ? "" : e.msg);
+	anvil_green_free(h);
+	double *k = malloc(x.nk * sizeof *k);
+	memcpy(k, x.k, x.nk * sizeof *k);
+	k[x.nk / 2] = -k[x.nk / 2];
+	z = x;
+	z.k = k;
+	h = anvil_green_import(&z, &e);
+	ok(!h, "  a K node negative: refused");
+	anvil_green_free(h);
+	z = x;
+	z.nk--;
+	h = anvil_green_import(&z, &e);
+	ok(!h, "  a K table short of the window: refused");
+	anvil_green_free(h);
+	z = x;
+	z.t1 = 0;
+	h = anvil_green_import(&z, &e);
+	ok(!h, "  a long window without its tail: refused");
+	anvil_green_free(h);
+	free(k);
+	unlink(path);
+	rmdir(dir);
+	anvil_green_free(g);
+}
+
+static void test_t_plate(void)
+{
+	struct anvil_green *a = make(0.5, 16.0 * 64.0, 2.0, 0, NULL);
+	struct anvil_green *b = make(2.0, 16.0 * 128.0, 2.0, 0, NULL);
+	struct anvil_green *c = make(0.5, 3.9 * 64.0, 2.0, 0, NULL);
+	struct anvil_green *d = make(0.5, 8.0 * 64.0, 2.0, 1, NULL);
+	struct anvil_green_settings gs;
+	struct anvil_err e;
+	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
+	gs.omega_max = 2.0;
+	struct anvil_green *hs = anvil_green_alloc(ANVIL_GREEN_HALFSPACE, 1.0, 0.3, 20.0, &gs, NULL,
+						   NULL, &e);
+	ok(a && b && c && d && hs && anvil_green_t_plate(a) == 64.0 &&
+		   anvil_green_t_plate(b) == 128.0 && isinf(anvil_green_t_plate(c)) &&
+		   isinf(anvil_green_t_plate(d)) && isinf(anvil_green_t_plate(hs)),
+	   "t_plate: 64 max(1, h/r0) (64 at h = 0.5, 128 at h = 2); infinite for a window "
+	   "under 4 T1, no_plate and the half-space");
+	anvil_green_free(a);
+	anvil_green_free(b);
+	anvil_green_free(c);
+	anvil_green_free(d);
+	anvil_green_free(hs);
+	ok(anvil_green_fits(ANVIL_GREEN_LAYER_CORRECTION, 0.02, 1e12, 8.0) &&
+		   !anvil_green_fits(ANVIL_GREEN_HALFSPACE, 0.02, 1e12, 8.0) &&
+		   anvil_plan_corr_samples(0.02, 8.0, 1e12) == anvil_plan_corr_samples(0.02, 8.0, 1e3),
+	   "planner: a 1e12 window fits with the tail (as many samples as a 1e3 one: %.0f), "
+	   "not without", anvil_plan_corr_samples(0.02, 8.0, 1e12));
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	const double hs[] = { 0.1, 0.5, 2.0 };
+	for (int i = 0; i < 3; i++) {
+		test_against_samples(hs[i]);
+		test_join(hs[i]);
+	}
+	test_long_window();
+	test_cache();
+	test_t_plate();
+	plan(tap_n);
+	return done_testing();
+}
