@@ -33,7 +33,8 @@ struct thin {
 	const char *refusal; /* a word the refusal must hold; NULL: must run */
 	enum anvil_accuracy acc; /* the level run first */
 	int normal;          /* 1: normal too, against the first (draft) */
-	int rest;            /* 1: comes to rest on the plate (impact_rest.c); 0: must not */
+	int rest;            /* 1: comes to rest on the plate (impact_rest.c); 0: must not;
+				EITHER: on the edge, both held to their checks */
 	int dead;            /* 1: R_f ~ 0, the co-moving phase one contact (up to 4) */
 	enum anvil_contact contact;
 };
@@ -41,6 +42,14 @@ struct thin {
 #define DRAFT ANVIL_ACC_DRAFT
 #define NORMAL ANVIL_ACC_NORMAL
 #define PHYS ANVIL_CONTACT_PHYSICAL
+/* Where the late chatter is decided by the layer response's last bits:
+ * the plate tail's K table (plate.c) changed its interpolant at the 1e-9
+ * level (its own error 3e-9 at h = 0.02 r0) and r4 went from 4 contacts
+ * ending at 4860 us (R_f 2.2e-5) to at rest from 1119 us (R_f in [0,
+ * 9.8e-4]); the paper's contact on 1 mm from 7 contacts to 62.6 ms (R_f
+ * 3e-9) to at rest from 913 us (R_f in [0, 9.9e-4]).  Both answers are
+ * bounded and agree within their intervals; neither is the more right. */
+#define EITHER 2
 
 static const struct thin scenes[] = {
 	/* once kicked every T1 = 64 r0/c2 (80 us) by a step in the layer
@@ -48,7 +57,8 @@ static const struct thin scenes[] = {
 	 * the energy bound or lost at a contact's end: now a bounded answer
 	 * (draft: P_max 6.6 +- 0.8 N, 4 contacts; Zener's plate, lambda* =
 	 * 89: 6.25 N); it ends by itself, so the rest state leaves it be */
-	{ "r4: h = 0.02 r0, 0.1 g, 10 m/s", "0.02r0", "0.1g", "10m/s", NULL, NULL, DRAFT, 0, 0, 1, PHYS },
+	{ "r4: h = 0.02 r0, 0.1 g, 10 m/s", "0.02r0", "0.1g", "10m/s", NULL, NULL, DRAFT, 0, EITHER, 1,
+	  PHYS },
 	/* the impactor comes to rest on the unbounded plate: gaps of pm over
 	 * tens of ms, more contacts than the budget: once refused, now at
 	 * rest with R_f bounded (draft follows 47 contacts to the end, 15 s:
@@ -73,7 +83,7 @@ static const struct thin scenes[] = {
 	  PHYS },
 	/* the paper's contact chattered here with no merge and no budget:
 	 * 334 contacts at normal, 10 s (174 and 47 s before the speed-ups) */
-	{ "paper's contact, default rod on 1 mm steel", "1mm", "12.2g", "10m/s", NULL, NULL, DRAFT, 1, 0, 0,
+	{ "paper's contact, default rod on 1 mm steel", "1mm", "12.2g", "10m/s", NULL, NULL, DRAFT, 1, EITHER, 0,
 	  ANVIL_CONTACT_PAPER },
 };
 #define NSCENE (sizeof scenes / sizeof scenes[0])
@@ -142,12 +152,6 @@ static void check_rest(struct anvil_solver *s, const struct thin *x, const struc
 int main(void)
 {
 	gsl_set_error_handler_off();
-	int np = 0;
-	for (size_t i = 0; i < NSCENE; i++) {
-		const struct thin *x = &scenes[i];
-		np += x->refusal ? 3 : 2 + (x->rest ? 2 : 1) + x->dead + (x->normal ? 1 + 2 * x->rest : 0);
-	}
-	plan(np);
 	struct anvil_solver *s = anvil_solver_alloc();
 	anvil_solver_set_cache_dir(s, NULL, NULL); /* in memory: nothing on disk */
 	for (size_t i = 0; i < NSCENE; i++) {
@@ -173,7 +177,7 @@ int main(void)
 		ok(sd >= 0 && sane(&d) && d.ncontacts >= 1 && d.ncontacts <= ANVIL_MAX_RUN_CONTACTS,
 		   "  P_max > 0, t_s > 0, R_f in [0, 1], E_a >= 0, 1 to %d contacts",
 		   ANVIL_MAX_RUN_CONTACTS);
-		if (x->rest)
+		if (x->rest == 1 || (x->rest == EITHER && d.rest_bound > 0))
 			check_rest(s, x, &d, x->acc, sd);
 		else
 			ok(d.rest_bound == 0, "  not at rest: followed to its end");
@@ -200,11 +204,12 @@ int main(void)
 		   val_within(&d.Rf, &n.Rf) && val_within(&d.Ea, &n.Ea),
 		   "  draft and normal agree within their stated errors%s",
 		   both || one ? " (at rest: t_s is when the bound was met)" : "");
-		if (x->rest)
+		if (x->rest == 1 || (x->rest == EITHER && n.rest_bound > 0))
 			check_rest(s, x, &n, ANVIL_ACC_NORMAL, sn);
 		anvil_result_free(&d);
 		anvil_result_free(&n);
 	}
 	anvil_solver_free(s);
+	plan(tap_n); /* at the end (TAP allows it): EITHER's checks depend on the outcome */
 	return done_testing();
 }
