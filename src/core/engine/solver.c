@@ -159,6 +159,14 @@ int solver_response_ramp(void *ctx, double tau, double *val)
 	return st;
 }
 
+int solver_response_impulse(void *ctx, double tau, double *val)
+{
+	const struct response *rs = ctx;
+	if (rs->hs || !rs->corr) /* the half-space's has no closed form here */
+		return ANVIL_EINVAL;
+	return anvil_green_impulse(rs->corr, tau, val); /* a static part's is 0 for tau > 0 */
+}
+
 /* The errors of the layer correction's band, from its twin (run_waves).
  *
  * Each output's is its change |x - coarse| when the bandwidth is halved
@@ -386,6 +394,8 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
 						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
 		wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
+		wv->io.impulse = solver_response_impulse; /* the half-space's: differences */
+		wv->io.impulse_ctx = &wv->rs;
 		st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
 		wv->tau_end = tau_end;
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))

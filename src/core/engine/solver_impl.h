@@ -52,6 +52,10 @@ struct response {
 
 /* The impact's ramp callback (impact.h) over a struct response. */
 int solver_response_ramp(void *ctx, double tau, double *val);
+/* Its second derivative where it has a closed form (a layer correction
+ * beyond its plate's T1, no half-space: anvil_green_impulse), else
+ * ANVIL_EINVAL: the impact's far field (impact.h impulse). */
+int solver_response_impulse(void *ctx, double tau, double *val);
 
 /* Whether r meets the level's target: ANVIL_OK, ANVIL_WTOL (values stand,
  * the estimate says why in err), ANVIL_ENUM (unphysical). */

@@ -113,6 +113,9 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 	u->corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, u->tau_end);
 	u->io.alpha_ref = 0;
 	u->io.t_smooth = anvil_wave_t_smooth(p, j, u->tau_end);
+	u->io.impulse = solver_response_impulse;
+	u->io.impulse_ctx = &u->rs;
+	u->io.impulse2 = NULL;
 	if (!u->corr)
 		return ANVIL_OK;
 	u->rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &u->held, err);
@@ -122,6 +125,8 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 		/* a^2 = R alpha with R = r0 */
 		u->io.ramp2 = solver_response_ramp;
 		u->io.ramp2_ctx = &u->rs2;
+		u->io.impulse2 = solver_response_impulse;
+		u->io.impulse2_ctx = &u->rs2;
 		u->io.alpha_ref = ld.patch * ld.patch * p->r0;
 	}
 	if (!u->rs.corr || (ld.patch > 0 && !u->rs2.corr))

@@ -430,6 +430,10 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 	if (in || s->v[s->n - 1] >= 0)
 		/* a contact, or a new one, outlasts the window (or the nodes) */
 		return impact_long_short(c, s) ? IMPACT_NODES : ANVIL_ETOL;
+	if (impact_rest_grazing(c, s, ioff) && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (!s->parted)
 		s->parted = 2;
 	s->Vs = -(p->V0 - ioff / p->m1);
@@ -593,6 +597,10 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	if (in || s->v[s->n - 1] >= 0)
 		/* a contact, or a new one, outlasts the window (or the nodes) */
 		return impact_long_short(c, s) ? IMPACT_NODES : ANVIL_ETOL;
+	if (impact_rest_grazing(c, s, ioff) && impact_rest_fallback(s)) {
+		peak(s);
+		return ANVIL_OK;
+	}
 	if (!s->parted)
 		s->parted = 2;
 	s->Vs = -(p->V0 - ioff / p->m1);
@@ -830,7 +838,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 			 .rest_tol = o->rest_tol > 0 && o->scheme != ANVIL_SCHEME_PAPER ? o->rest_tol : 0.0,
 			 .grow_after = o->scheme == ANVIL_SCHEME_PAPER ? 0 : o->grow_after,
 			 .grow_eta = o->grow_eta, .lng = lng, .t_smooth = o->t_smooth,
-			 .max_nodes = o->max_steps };
+			 .max_nodes = o->max_steps, .imp = { o->impulse, o->impulse2 },
+			 .ictx = { o->impulse_ctx, o->impulse2_ctx } };
 	c.rest_stop = c.rest_tol > 0 && o->rest_at > 0 ? o->rest_at : 0.0;
 	c.rest_long = impact_rest_long(p);
 	c.rest_last = o->rest_last;

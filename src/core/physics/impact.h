@@ -163,6 +163,12 @@ struct anvil_impact_opts {
 	 * the nodes the grown march makes (ANVIL_ETOL when it needs more).
 	 * 0: never (such a window is refused before any work). */
 	double t_smooth;
+	/* Optional (long mode): the ramps' second derivatives, the impulse
+	 * responses (dimensionless, as the ramps), for the far field beyond
+	 * t_smooth; a call that fails (or none given) leaves the far field to
+	 * a wide difference of the ramp (seven calls, impact_grow.c). */
+	anvil_ramp_fn impulse, impulse2;
+	void *impulse_ctx, *impulse2_ctx;
 };
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the

@@ -180,7 +180,10 @@ double impact_far_h(const struct ctx *c, int r, double t)
 {
 	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
 	void *fx = r ? c->rctx2 : c->rctx;
+	const struct anvil_params *p = c->p;
 	double h = t / FAR_H, v[8];
+	if (c->imp[r] && c->imp[r](c->ictx[r], t * p->c2 / p->r0, &v[0]) == ANVIL_OK)
+		return v[0] * (p->c2 / p->r0) * (p->c2 / p->r0) / (p->mu * p->c2); /* impact.h */
 	if (t + 3.0 * h > c->tau_avail * c->p->r0 / c->p->c2) {
 		/* the window's end within reach: the backward eight-point
 		 * difference, sixth order too (Fornberg's weights), at h = t/48:

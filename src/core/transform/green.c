@@ -447,6 +447,14 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 	return ANVIL_OK;
 }
 
+int anvil_green_impulse(const struct anvil_green *g, double tau, double *val)
+{
+	if (!(g->tailed && tau > g->tail.t1 && tau <= g->tau_end))
+		return ANVIL_EINVAL;
+	*val = anvil_plate_tail_impulse(&g->tail, tau);
+	return ANVIL_OK;
+}
+
 void anvil_green_kernel(double k, double complex s, double nu, double hh,
 			double complex *layer, double complex *halfspace)
 {

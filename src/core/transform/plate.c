@@ -218,6 +218,17 @@ static double k_interp(const struct anvil_plate_tail *tl, double t, double *d)
 		(-3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0) * b[2] + f3 * b[3]) / 6.0;
 }
 
+/* The second derivative in log t of k_interp's (piecewise linear: the
+ * cubic B-spline's). */
+static double k_interp2(const struct anvil_plate_tail *tl, double t)
+{
+	double f;
+	size_t j = tail_at(tl, t, &f);
+	const double *b = tl->bc + j - 1;
+	return ((1.0 - f) * b[0] + (3.0 * f - 2.0) * b[1] + (1.0 - 3.0 * f) * b[2] + f * b[3]) /
+	       (K_H * K_H);
+}
+
 /* ---- the model and its fit ---- */
 
 /* g - (K - s_hs t) at t, the part fitted */
@@ -250,6 +261,14 @@ double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t)
 {
 	double d, s = k_interp(tl, t, &d), x = t / tl->t1;
 	return t * (2.0 * s + d) - tl->shs + (tl->c[1] + tl->c[2] * (log(x) + 1.0)) / tl->t1;
+}
+
+double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t)
+{
+	/* K = t^2 k(log t): K'' = 2 k + 3 k' + k''; the fit's a + b x + c x log x
+	 * (x = t/T1) and -s_hs t leave c/(T1 t) */
+	double d, s = k_interp(tl, t, &d);
+	return 2.0 * s + 3.0 * d + k_interp2(tl, t) + tl->c[2] / (tl->t1 * t);
 }
 
 double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t)

@@ -102,6 +102,10 @@ void anvil_plate_tail_free(struct anvil_plate_tail *tl); /* frees the arrays; ze
  * log t) at t >= T1/8, within the table. */
 double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t);
 double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t);
+/* The impulse response (the ramp's second derivative, analytic: the
+ * quasi-interpolant's, continuous, its slope jumping at the nodes by
+ * about its own error) at t >= T1/8, within the table. */
+double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t);
 /* K(t)/t^2 from the table (the quasi-interpolant), for tests. */
 double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t);
 /* The error bound at t >= T1: v t/T1. */
