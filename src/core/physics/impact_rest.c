@@ -41,14 +41,17 @@
  * a separation not yet resolved, after they have parted and touched
  * again, merged or not, or in one contact longer than twice Hertz's) with
  * the bound within rest_tol is kept, and the march goes on: a contact
- * that ends, however long and however small its rebound, is followed to
- * its end as before (the same bits).  Only where the march would be
- * refused, more contacts than the budget, a later contact's end lost
+ * that ends with a rebound above rest_tol, however long, is followed to
+ * its end as before (the same bits).  Where the march would be refused,
+ * more contacts than the budget, a later contact's end lost
  * (finish_exact) or (the caller's last window, rest_last) a contact that
- * outlasts the window, does the pass fall back
- * to that node: the impactor came to rest there.  A genuine re-contact
- * keeps its count and times: the bound is not small while the impactor
- * still flies or the spring still holds energy. */
+ * outlasts the window, and in long mode where the bodies part at a
+ * rebound within rest_tol (a grazing end, impact_rest_grazing: its time
+ * is determined to no stated accuracy), the pass falls back to that
+ * node: the impactor
+ * came to rest there.  A genuine re-contact keeps its count and times:
+ * the bound is not small while the impactor still flies or the spring
+ * still holds energy. */
 #include <math.h>
 
 #include "hertz.h"
@@ -120,15 +123,19 @@ int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in)
 
 /* A grazing end: the bodies part at a relative speed ~ R_f V0 after
  * co-moving, and the end's time moves by a perturbation of the approach
- * over that speed: the layer response's last bits (1e-9 of a 26 cm plate
- * deflection under 100 kg on h = r0/2 moved t_s from 9.6 s to 5.9 s, at
- * R_f 1e-9) or the K table's interpolant (section 13's 500 g rod on 1 mm:
- * 93.14 to 93.30 ms, against an estimate of 12 us).  What is sure is the
- * bound: the rest state answers, as where the march would be refused. */
+ * over that speed.  In long mode the far field's own error (up to 1e-7
+ * of the deflection at its near edge, impact_grow.c) is such a
+ * perturbation, and 1e-9 of a 26 cm plate deflection under 100 kg on
+ * h = r0/2 (the impulse response by differences against its closed form)
+ * moved t_s from 9.6 s to 5.9 s at R_f 1e-9: what is sure is the bound,
+ * and the rest state answers, as where the march would be refused.
+ * (Shorter contacts keep their ends: there the same amplification of the
+ * K table's interpolant moved section 13's 500 g rod on 1 mm from 93.14
+ * to 93.30 ms against an estimate of 12 us; the note says so.) */
 int impact_rest_grazing(const struct ctx *c, const struct pass *s, double ioff)
 {
 	const struct anvil_params *p = c->p;
-	return c->rest_tol > 0 && s->rest_k && s->rest_k < s->n &&
+	return c->lng && c->rest_tol > 0 && s->rest_k && s->rest_k < s->n &&
 	       fabs(p->V0 - ioff / p->m1) <= c->rest_tol * p->V0;
 }
 
