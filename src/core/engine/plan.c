@@ -345,6 +345,11 @@ static double bending(const struct anvil_params *p)
  * window step in PHYS_RUNS' units).  On the 9 long contacts of
  * scripts/bench section 13 that run (cold, one thread) the physical row's
  * whole prediction is then 1.0-1.5 times the process' CPU time. */
+/* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
+ * both passes), and the far field's cost per grown node and frozen level
+ * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
+#define IMPACT_LONG_W 4096.0
+#define IMPACT_FAR 1.0e-6
 #define IMPACT_GROWN 12.0
 #define IMPACT_HIST 3.5e-6
 #define IMPACT_TAB 1.0e-6
@@ -356,9 +361,15 @@ static double impact_cost(double window_s, double dt, int layer, double nsteps)
 	if (!layer)
 		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
 	double m = n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n; /* the nodes marched */
-	double l2 = log2(fmax(m, 2.0));
+	double l2 = log2(fmax(m, 2.0)), tab = n, far = 0.0;
+	if (n > ANVIL_MAX_STEPS) { /* long mode (impact.h t_smooth): no table to the window's
+				    * end; each level's weights, and the far field per node */
+		double levels = log2(n / fmax(g, 1.0));
+		tab = fmax(2.0 * g + 64.0, IMPACT_LONG_W) + levels * IMPACT_LONG_W;
+		far = (m - g) * levels * IMPACT_FAR;
+	}
 	return m * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) +
-	       (m > g ? (m - g) * IMPACT_HIST + n * IMPACT_TAB : 0.0);
+	       (m > g ? (m - g) * IMPACT_HIST + tab * IMPACT_TAB + far : 0.0);
 }
 
 struct est {
@@ -582,12 +593,19 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
  * follows (4.15 us against the layer's 6.24 at h = 0.1 r0, 12.2 g,
  * 10 m/s; Hertz's 19.8), and the pulse's band missed that peak by 2 % at
  * normal, its estimate 6 % (solver_phys.c, run_physical, which widens the band
- * further when the estimate still misses). */
+ * further when the estimate still misses).  And its step: the level's
+ * nsteps over the pulse resolve a rise of a Hertz pulse's eighth (cf.
+ * Zener's 4.15 us of 19.8 above), but a heavy impactor on a thin plate
+ * rises far sooner, 7.2 us of a 1.1 ms pulse under 10 kg on h = 0.05 r0
+ * at 1 m/s: 2.6 steps, P_max 3.44 +- 1.5 N against Zener's 3.92; so the
+ * step is at most 8 t_rise / nsteps (the scene's own dt is kept). */
 static void phys_band(const struct est *e, struct anvil_wave_job *j)
 {
 	const struct anvil_level *lev = anvil_level(e->pb->accuracy);
 	if (!lev || !(j->t_rise > 0))
 		return;
+	if (!(e->pb->dt > 0) && 8.0 * j->t_rise / j->nsteps < j->dt)
+		j->dt = 8.0 * j->t_rise / j->nsteps;
 	double om = lev->cycles / (2.0 * j->t_rise * e->p.c2 / e->p.r0);
 	if (om > j->omega) {
 		j->omega = om;

@@ -127,12 +127,19 @@ static int level_fill(const struct ctx *c, int L, size_t j0, size_t j1, double d
 {
 	size_t mn = (size_t)1 << L;
 	int bad = 0;
+	/* each ramp value once (beyond the table each is a call): a window
+	 * of three sliding along j, the same operands as before */
+	double a[3] = { j0 ? rraw(c, 0, (j0 - 1) * mn) : 0.0, rraw(c, 0, j0 * mn), 0.0 };
+	double b[3] = { dg && j0 ? rraw(c, 1, (j0 - 1) * mn) : 0.0, dg ? rraw(c, 1, j0 * mn) : 0.0, 0.0 };
 	for (size_t j = j0; j < j1; j++) {
-		g[j] = (rraw(c, 0, (j + 1) * mn) - 2.0 * rraw(c, 0, j * mn) +
-			(j ? rraw(c, 0, (j - 1) * mn) : 0.0)) / dn;
-		if (dg)
-			dg[j] = (rraw(c, 1, (j + 1) * mn) - 2.0 * rraw(c, 1, j * mn) +
-				 (j ? rraw(c, 1, (j - 1) * mn) : 0.0)) / dn - g[j];
+		a[2] = rraw(c, 0, (j + 1) * mn);
+		g[j] = (a[2] - 2.0 * a[1] + (j ? a[0] : 0.0)) / dn;
+		a[0] = a[1], a[1] = a[2];
+		if (dg) {
+			b[2] = rraw(c, 1, (j + 1) * mn);
+			dg[j] = (b[2] - 2.0 * b[1] + (j ? b[0] : 0.0)) / dn - g[j];
+			b[0] = b[1], b[1] = b[2];
+		}
 		bad |= !isfinite(g[j]) || (dg && !isfinite(dg[j]));
 	}
 	return bad;
@@ -219,6 +226,42 @@ static double far_sum(const struct ctx *c, const struct frozen *f, double t)
 	return w;
 }
 
+/* The far field of f at the targets t_k = (u0 + k 2^lev) dt0, k0 <= k < C,
+ * added to out[k].  It is as smooth in the target as in the source: over
+ * a run of targets whose span is within 1/FAR_RHO of its distance from
+ * the charges, its interpolant at FAR_P Chebyshev points of the targets
+ * (the same error as the charges', the two ends' roles swapped), so a
+ * chunk costs FAR_P far sums, not one per target. */
+static void far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+		      double *out)
+{
+	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
+	double t1 = (double)(u0 + ((C - 1) << c->lev)) * c->dt0;
+	if (C - k0 <= 2 * FAR_P || FAR_RHO * (t1 - t0) > t0 - f->tb) {
+		for (size_t k = k0; k < C; k++)
+			out[k] += far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
+		return;
+	}
+	double F[FAR_P], xn[FAR_P], lam[FAR_P];
+	for (int j = 0; j < FAR_P; j++) {
+		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
+		xn[j] = cos(th);
+		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
+		F[j] = far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
+	}
+	for (size_t k = k0; k < C; k++) {
+		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
+		double num = 0, den = 0, hit = NAN;
+		for (int j = 0; j < FAR_P && isnan(hit); j++) {
+			if (x == xn[j])
+				hit = F[j];
+			num += lam[j] * F[j] / (x - xn[j]);
+			den += lam[j] / (x - xn[j]);
+		}
+		out[k] += isnan(hit) ? num / den : hit;
+	}
+}
+
 /* Add the charge (cx, cz) at time t to f's Chebyshev weights over [a, b]
  * (barycentric Lagrange basis at the points of the first kind). */
 static void far_add(struct frozen *f, double a, double b, double t, double cx, double cz)
@@ -254,6 +297,7 @@ static int far_setup(struct ctx *c, struct frozen *f, const double *tn, double d
 	for (size_t m = 1; m < f->S; m++)
 		far_add(f, a, b, tn[m], f->x[m] * dp, f->z ? f->z[m] * dp : 0.0);
 	far_add(f, a, b, b, f->Pb * 0.5 * (dp + dn), f->z ? f->Qb * 0.5 * (dp + dn) : 0.0);
+	f->tb = b;
 	f->t_far = b + fmax(fmax(FAR_RHO * (b - a + 2.0 * dn), FAR_MIN * dn), 2.0 * c->t_smooth);
 	/* the near targets u dt0 < t_far read weights to lag (u - K)/2^L + 1 */
 	double need = ceil((f->t_far / c->dt0 - (double)f->K) / (double)((size_t)1 << f->L)) + 2.0;
@@ -448,8 +492,8 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 		size_t o0 = (u0 - f->K) >> f->L, Cn = C; /* the near targets: k < Cn */
 		while (Cn && (double)(u0 + ((Cn - 1) << c->lev)) * c->dt0 >= f->t_far)
 			Cn--;
-		for (size_t k = Cn; k < C; k++)
-			out[k] += far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
+		if (Cn < C)
+			far_chunk(c, f, u0, Cn, C, out);
 		if (Cn < C && !isfinite(out[C - 1]))
 			return ANVIL_ENUM; /* a ramp call failed */
 		if (!Cn)

@@ -82,7 +82,7 @@ struct frozen {
 	/* long mode: the pass's node of its node 0; targets at u dt0 >=
 	 * t_far take the far field: the charges Wx (P), Wz (Q) at times tc */
 	size_t n0;
-	double t_far;
+	double t_far, tb; /* tb: its last charge's time */
 	double tc[FAR_P], Wx[FAR_P], Wz[FAR_P];
 };
 
@@ -215,7 +215,7 @@ double impact_rtab(const struct ctx *c, int r, size_t u);
 /* The largest segment a long mode's level >= 1 makes before it freezes
  * and goes on at the same level (its weights' count), in the dt pass's
  * nodes (the dt/2 pass: twice). */
-#define IMPACT_LONG_SEG 8192
+#define IMPACT_LONG_SEG 2048
 /* R_r''(t) (r = 0 ramp, 1 ramp2) by a wide five-point difference: the
  * impulse response where the ramps are smooth (far out); NaN on failure. */
 double impact_far_h(const struct ctx *c, int r, double t);
