@@ -180,9 +180,17 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		if (!(anvil_scene_models(sc) & (1u << m)) || (paper && !pl->paper[m].run))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
+		/* the physical layer row's values do not depend on its history
+		 * (the paper's contact's error estimate does: solver.c
+		 * err_nhist): it carries the verdict's, which then needs no
+		 * second run (yield.c long_contact_verdict) */
+		size_t nh = !paper && !o->quiet && m == ANVIL_MODEL_LAYER &&
+				    pl->row[m].contact == ANVIL_CONTACT_PHYSICAL
+			    ? RUN_NHIST
+			    : nhist;
 		int st = anvil_solver_run_contact(s, pl, (enum anvil_model)m,
 						  paper ? ANVIL_CONTACT_PAPER : ANVIL_CONTACT_AUTO,
-						  nhist, &res[*n], &err);
+						  nh, &res[*n], &err);
 		cli_progress_done(&prog.shown);
 		(*n)++;
 		if (st > 0) {
