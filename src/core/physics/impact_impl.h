@@ -178,10 +178,10 @@ int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in);
 /* The pass ends at its first node at rest, if it had one (1; s->rest,
  * n, ncont, ts, Vs set: the contact goes on); else 0, s unchanged. */
 int impact_rest_fallback(struct pass *s);
-/* 1 when pass s (long mode), which ended with the impulse ioff, came to
- * rest before (its first node at rest kept) and parts with a rebound
- * within rest_tol: a grazing end, whose time no estimate bounds
- * (impact_rest.c); the rest state then answers. */
+/* 1 when pass s, which ended with the impulse ioff, came to rest before
+ * (its first node at rest kept) and parts with a rebound below 1e-6 V0
+ * (in long mode: within rest_tol): a grazing end, whose time no estimate
+ * bounds (impact_rest.c); the rest state then answers. */
 int impact_rest_grazing(const struct ctx *c, const struct pass *s, double ioff);
 /* The result of two passes either of which came to rest (after fill):
  * R_f and E_a as the intervals the bound allows, t_s the rest's time,
