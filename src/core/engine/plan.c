@@ -302,7 +302,7 @@ static double bending(const struct anvil_params *p)
  * for yours):
  *   COST_EVAL      one layer-kernel evaluation (green.c's integrand with
  *                  its share of the quadrature's bookkeeping): 0.4-0.8 us;
- *   IMPACT_*       one coupled run (passes at dt and dt/2) over a window of
+ *   IMPACT_*       (plan_work.c) one coupled run (passes at dt and dt/2) over a window of
  *                  n steps: linear (weights, the exact contact end) plus,
  *                  on a layer, the online convolution's n log2(n)^2
  *                  (fastconv.h; it was quadratic before, and the planner
@@ -329,49 +329,6 @@ static double bending(const struct anvil_params *p)
 #define COST_HERTZ 2.0e-6
 #define COST_ZENER 2.0e-4
 #define COST_HALFSPACE 1.0e-4
-#define IMPACT_LIN_HS 5.0e-7
-#define IMPACT_SQ_HS 1.1e-9
-#define IMPACT_LIN_LAYER 2.7e-6
-#define IMPACT_FFT_LAYER 3.2e-9
-/* The growing step (impact.h, impact_grow.c): past ANVIL_GROW_AFTER Hertz
- * pulses of nsteps steps the step doubles where the force is smooth, and a
- * long contact then marches about IMPACT_GROWN more pulses' worth of
- * nodes, whatever its length (the bench's long contacts, normal: 4-19,
- * their predicted/marched nodes 0.75-1.6); each such node pays the frozen
- * past (IMPACT_HIST, s: 8 us before its chunks were held to a few spans
- * of the frozen segments, impact_grow.c hist_cmax, and the plate's K(t)
- * was made once per window, plan_work.c), and every step of the window at
- * dt still costs the ramp's table (IMPACT_TAB, s; measured 0.7-1.2 us per
- * window step in PHYS_RUNS' units).  On the 9 long contacts of
- * scripts/bench section 13 that run (cold, one thread) the physical row's
- * whole prediction is then 1.0-1.5 times the process' CPU time. */
-/* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
- * both passes), and the far field's cost per grown node and frozen level
- * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
-#define IMPACT_LONG_W 4096.0
-#define IMPACT_FAR 1.0e-6
-#define IMPACT_GROWN 12.0
-#define IMPACT_HIST 3.5e-6
-#define IMPACT_TAB 1.0e-6
-/* One coupled run over a window of window_s seconds at step dt, the level
- * asking nsteps steps of a Hertz pulse. */
-static double impact_cost(double window_s, double dt, int layer, double nsteps)
-{
-	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
-	if (!layer)
-		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
-	double m = n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n; /* the nodes marched */
-	double l2 = log2(fmax(m, 2.0)), tab = n, far = 0.0;
-	if (n > ANVIL_MAX_STEPS) { /* long mode (impact.h t_smooth): no table to the window's
-				    * end; each level's weights, and the far field per node */
-		double levels = log2(n / fmax(g, 1.0));
-		tab = fmax(2.0 * g + 64.0, IMPACT_LONG_W) + levels * IMPACT_LONG_W;
-		far = (m - g) * levels * IMPACT_FAR;
-	}
-	return m * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) +
-	       (m > g ? (m - g) * IMPACT_HIST + tab * IMPACT_TAB + far : 0.0);
-}
-
 struct est {
 	struct anvil_params p;
 	const struct anvil_problem *pb;
@@ -407,7 +364,7 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 	*where = wm == ANVIL_CACHE_NONE || wt == ANVIL_CACHE_NONE ? ANVIL_CACHE_NONE
 		 : wm == ANVIL_CACHE_DISK || wt == ANVIL_CACHE_DISK ? ANVIL_CACHE_DISK
 								     : ANVIL_CACHE_MEMORY;
-	return COST_HALFSPACE + evals * COST_EVAL + 2.0 * impact_cost(e->window_lay, e->lay.dt, 1, e->lay.nsteps);
+	return COST_HALFSPACE + evals * COST_EVAL + 2.0 * anvil_plan_impact_cost(e->window_lay, e->lay.dt, 1, e->lay.nsteps);
 }
 
 /* ---- figures ---- */
@@ -564,13 +521,13 @@ static int late_reflection(const struct est *e)
 
 static double static_cost(const struct est *e)
 {
-	return impact_cost(1.4 * e->t_static + 2.0 * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
+	return anvil_plan_impact_cost(1.4 * e->t_static + 2.0 * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
 }
 
 static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j)
 {
 	double window = anvil_wave_window(j, 0) * e->p.r0 / e->p.c2;
-	return COST_HALFSPACE + impact_cost(window, j->dt, 0, 0.0);
+	return COST_HALFSPACE + anvil_plan_impact_cost(window, j->dt, 0, 0.0);
 }
 
 /* The physical contact's layer row: its four corrections
@@ -584,7 +541,7 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
 	struct anvil_wave_job j = *job;
 	j.patch = patch;
 	double corr = anvil_plan_phys_seconds(&j, e->p.nu, e->pb->accuracy, cache, where);
-	return COST_HALFSPACE + corr + PHYS_RUNS * impact_cost(e->window_lay, j.dt, 1, j.nsteps);
+	return COST_HALFSPACE + corr + PHYS_RUNS * anvil_plan_impact_cost(e->window_lay, j.dt, 1, j.nsteps);
 }
 
 /* The physical row's band: the Hertz pulse's, as the paper's contact has
@@ -773,7 +730,7 @@ static void physical_row(const struct est *e, const struct anvil_cache *cache, e
 	int small = layer && d_hs > 0 && e->pb->effects.waves == ANVIL_WAVES_AUTO &&
 		    ANVIL_PLAN_SAFETY * d_hs <= e->target;
 	layer = layer && !small;
-	double hs_cost = impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
+	double hs_cost = anvil_plan_impact_cost(anvil_wave_window(&e->hs, 0) * e->p.r0 / e->p.c2, e->hs.dt, 0, 0.0);
 	enum anvil_cache_where where = ANVIL_CACHE_NONE;
 	/* the Hertz radius as figures() has it, on the patch grid */
 	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);

@@ -349,6 +349,11 @@ int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan
  * solver does): tau_end itself, or for a long window the plate's T1
  * (transform/plate.h), the plate's closed form beyond. */
 double anvil_plan_inversion_window(double hh, double tau_end);
+/* The seconds of one coupled run over a window of window_s seconds at
+ * step dt (layer: on a layer response, the step growing past the level's
+ * ANVIL_GROW_AFTER pulses of nsteps steps, long mode beyond
+ * ANVIL_MAX_STEPS; else the half-space or the static anvil). */
+double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps);
 /* The layer-kernel evaluations the planner predicts for one layer
  * correction (green.h, with its twin) of thickness hh, Poisson ratio nu,
  * bandwidth omega and window tau_end at level acc: the count the cost

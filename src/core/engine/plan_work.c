@@ -185,3 +185,50 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
 	phys_work(j, nu, acc, cache, where, &sec);
 	return sec;
 }
+
+/* ---- the coupled run's cost (plan.c's rows; the unit costs measured as
+ * plan.c's COST_* are) ----
+ * IMPACT_LIN_HS, IMPACT_SQ_HS: a run on the half-space or the static
+ * anvil, linear and quadratic in its steps; IMPACT_LIN_LAYER,
+ * IMPACT_FFT_LAYER: on the layer response, per node and per node's
+ * log^2 (the online fast convolution). */
+#define IMPACT_LIN_HS 5.0e-7
+#define IMPACT_SQ_HS 1.1e-9
+#define IMPACT_LIN_LAYER 2.7e-6
+#define IMPACT_FFT_LAYER 3.2e-9
+/* The growing step (impact.h, impact_grow.c): past ANVIL_GROW_AFTER Hertz
+ * pulses of nsteps steps the step doubles where the force is smooth, and a
+ * long contact then marches about IMPACT_GROWN more pulses' worth of
+ * nodes, whatever its length (the bench's long contacts, normal: 4-19,
+ * their predicted/marched nodes 0.75-1.6); each such node pays the frozen
+ * past (IMPACT_HIST, s: 8 us before its chunks were held to a few spans
+ * of the frozen segments, impact_grow.c hist_cmax, and the plate's K(t)
+ * was made once per window, plan_work.c), and every step of the window at
+ * dt still costs the ramp's table (IMPACT_TAB, s; measured 0.7-1.2 us per
+ * window step in PHYS_RUNS' units).  On the 9 long contacts of
+ * scripts/bench section 13 that run (cold, one thread) the physical row's
+ * whole prediction is then 1.0-1.5 times the process' CPU time. */
+/* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
+ * both passes), and the far field's cost per grown node and frozen level
+ * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
+#define IMPACT_LONG_W 4096.0
+#define IMPACT_FAR 1.0e-6
+#define IMPACT_GROWN 12.0
+#define IMPACT_HIST 3.5e-6
+#define IMPACT_TAB 1.0e-6
+double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps)
+{
+	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
+	if (!layer)
+		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
+	double m = n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n; /* the nodes marched */
+	double l2 = log2(fmax(m, 2.0)), tab = n, far = 0.0;
+	if (n > ANVIL_MAX_STEPS) { /* long mode (impact.h t_smooth): no table to the window's
+				    * end; each level's weights, and the far field per node */
+		double levels = log2(n / fmax(g, 1.0));
+		tab = fmax(2.0 * g + 64.0, IMPACT_LONG_W) + levels * IMPACT_LONG_W;
+		far = (m - g) * levels * IMPACT_FAR;
+	}
+	return m * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) +
+	       (m > g ? (m - g) * IMPACT_HIST + tab * IMPACT_TAB + far : 0.0);
+}

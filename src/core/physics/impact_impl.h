@@ -216,9 +216,20 @@ double impact_rtab(const struct ctx *c, int r, size_t u);
  * and goes on at the same level (its weights' count), in the dt pass's
  * nodes (the dt/2 pass: twice). */
 #define IMPACT_LONG_SEG 2048
-/* R_r''(t) (r = 0 ramp, 1 ramp2) by a wide five-point difference: the
- * impulse response where the ramps are smooth (far out); NaN on failure. */
+/* The far field (impact_far.c).  R_r''(t) (r = 0 ramp, 1 ramp2): the
+ * impulse response where the ramps are smooth (far out), the caller's
+ * closed form (impact.h impulse) or a wide difference; NaN on failure. */
 double impact_far_h(const struct ctx *c, int r, double t);
+/* Frozen segment f's charges at its Chebyshev points and t_far, tb, from
+ * its node times tn (f's node 0 first), its step dp and the next dn. */
+void impact_far_charges(const struct ctx *c, struct frozen *f, const double *tn, double dp,
+			double dn);
+/* f's far field at the target time t (t >= f->t_far). */
+double impact_far_sum(const struct ctx *c, const struct frozen *f, double t);
+/* f's far field at the targets (u0 + k 2^lev) dt0, k0 <= k < C, added to
+ * out[k] (interpolated over the targets where they are far enough). */
+void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+		      double *out);
 /* Long mode: 1 when the march at node s->n - 1 stopped short of the
  * window's end (its nodes ran out, not the window). */
 int impact_long_short(const struct ctx *c, const struct pass *s);

@@ -1,0 +1,149 @@
+/* impact_far.c: the far field of the frozen past (long mode, impact.h
+ * t_smooth; impact_grow.c freezes the segments).
+ *
+ * A frozen segment's hats at lags many times its span enter as charges:
+ * sum_m c_m H(t - t_m), c_m = P_m times the hat's area at its centroid
+ * t_m, H the impulse response.  H is smooth there (beyond twice t_smooth,
+ * impact.h), so H(t - tau) over the segment's span is its interpolant at
+ * FAR_P Chebyshev points tau_j, and the sum is sum_j W_j H(t - tau_j),
+ * W_j = sum_m c_m l_j(t_m) (l_j the Lagrange basis), made once at the
+ * freeze: O(FAR_P) per target, whatever the lag.  Errors (relative to
+ * the segment's deflection): the interpolant's, about (D/(4 Lambda))^P
+ * for span D at lag Lambda (1e-7 at Lambda = FAR_RHO D); a hat as a point,
+ * its second moment, (w/Lambda)^2/12 (1e-7 at FAR_MIN widths); H the
+ * caller's closed form (impact.h impulse: the layer correction's plate
+ * tail, exact but for its table's interpolant), else the
+ * seven-point (sixth-order) second difference of the ramp at h =
+ * Lambda/32, (1/32)^6 of H's eighth derivative scale, its rounding
+ * 6 eps 32^2 (7e-13), where the fine grid's weights round as eps
+ * (Lambda/w)^2: useless by Lambda/w = 1e8 (a 10 s contact at 0.1 us).
+ * The deflection far out is large against the Hertz compression (the
+ * plate's dashpot holds all the impulse), so these relative errors are
+ * amplified in P: tests/test_grow.c measures the whole at under a tenth
+ * of the scheme's own estimates (the five-point difference was 3 times
+ * R_f's estimate there). */
+#include <math.h>
+#include <stddef.h>
+
+#include "impact_impl.h"
+
+#define FAR_RHO 4.0
+#define FAR_MIN 1024.0
+#define FAR_H 32.0
+
+double impact_far_h(const struct ctx *c, int r, double t)
+{
+	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
+	void *fx = r ? c->rctx2 : c->rctx;
+	const struct anvil_params *p = c->p;
+	double h = t / FAR_H, v[8];
+	if (c->imp[r] && c->imp[r](c->ictx[r], t * p->c2 / p->r0, &v[0]) == ANVIL_OK)
+		return v[0] * (p->c2 / p->r0) * (p->c2 / p->r0) / (p->mu * p->c2); /* impact.h */
+	if (t + 3.0 * h > c->tau_avail * c->p->r0 / c->p->c2) {
+		/* the window's end within reach: the backward eight-point
+		 * difference, sixth order too (Fornberg's weights), at h = t/48:
+		 * truncation and rounding (191 eps 48^2) both near 1e-10 */
+		static const double bw[8] = { 469.0 / 90, -223.0 / 10, 879.0 / 20, -949.0 / 18,
+					      41.0, -201.0 / 10, 1019.0 / 180, -7.0 / 10 };
+		double sum = 0;
+		h = t / 48.0;
+		for (int i = 0; i < 8; i++) {
+			if (impact_ramp_of(c, fn, fx, t - (double)i * h, &v[i]))
+				return NAN;
+			sum += bw[i] * v[i];
+		}
+		return sum / (h * h);
+	}
+	for (int i = 0; i < 7; i++)
+		if (impact_ramp_of(c, fn, fx, t + (double)(i - 3) * h, &v[i]))
+			return NAN;
+	return (2.0 * (v[0] + v[6]) - 27.0 * (v[1] + v[5]) + 270.0 * (v[2] + v[4]) - 490.0 * v[3]) /
+	       (180.0 * h * h);
+}
+
+/* The far field of f at the target time t (t >= f->t_far). */
+double impact_far_sum(const struct ctx *c, const struct frozen *f, double t)
+{
+	double w = 0;
+	for (int j = 0; j < FAR_P; j++) {
+		double h0 = impact_far_h(c, 0, t - f->tc[j]);
+		w += f->Wx[j] * h0;
+		if (f->z)
+			w += f->Wz[j] * (impact_far_h(c, 1, t - f->tc[j]) - h0);
+	}
+	return w;
+}
+
+/* The far field of f at the targets t_k = (u0 + k 2^lev) dt0, k0 <= k < C,
+ * added to out[k].  It is as smooth in the target as in the source: over
+ * a run of targets whose span is within 1/FAR_RHO of its distance from
+ * the charges, its interpolant at FAR_P Chebyshev points of the targets
+ * (the same error as the charges', the two ends' roles swapped), so a
+ * chunk costs FAR_P far sums, not one per target. */
+void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+		      double *out)
+{
+	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
+	double t1 = (double)(u0 + ((C - 1) << c->lev)) * c->dt0;
+	if (C - k0 <= 2 * FAR_P || FAR_RHO * (t1 - t0) > t0 - f->tb) {
+		for (size_t k = k0; k < C; k++)
+			out[k] += impact_far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
+		return;
+	}
+	double F[FAR_P], xn[FAR_P], lam[FAR_P];
+	for (int j = 0; j < FAR_P; j++) {
+		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
+		xn[j] = cos(th);
+		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
+		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
+	}
+	for (size_t k = k0; k < C; k++) {
+		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
+		double num = 0, den = 0, hit = NAN;
+		for (int j = 0; j < FAR_P && isnan(hit); j++) {
+			if (x == xn[j])
+				hit = F[j];
+			num += lam[j] * F[j] / (x - xn[j]);
+			den += lam[j] / (x - xn[j]);
+		}
+		out[k] += isnan(hit) ? num / den : hit;
+	}
+}
+
+/* Add the charge (cx, cz) at time t to f's Chebyshev weights over [a, b]
+ * (barycentric Lagrange basis at the points of the first kind). */
+static void far_add(struct frozen *f, double a, double b, double t, double cx, double cz)
+{
+	double x = b > a ? (2.0 * t - a - b) / (b - a) : 0.0, l[FAR_P], sum = 0;
+	for (int j = 0; j < FAR_P; j++) {
+		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P), d = x - cos(th);
+		double lam = (j % 2 ? -1.0 : 1.0) * sin(th);
+		if (d == 0.0) { /* on a node: that node's alone */
+			f->Wx[j] += cx, f->Wz[j] += cz;
+			return;
+		}
+		l[j] = lam / d;
+		sum += l[j];
+	}
+	for (int j = 0; j < FAR_P; j++) {
+		f->Wx[j] += cx * l[j] / sum;
+		f->Wz[j] += cz * l[j] / sum;
+	}
+}
+
+void impact_far_charges(const struct ctx *c, struct frozen *f, const double *tn, double dp,
+			double dn)
+{
+	double a = tn[1], b = tn[f->S] + (dn - dp) / 3.0; /* centroids: first, last hat */
+	if (f->S < 2)
+		a = b;
+	for (int j = 0; j < FAR_P; j++) {
+		f->tc[j] = 0.5 * (a + b) + 0.5 * (b - a) * cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
+		f->Wx[j] = f->Wz[j] = 0.0;
+	}
+	for (size_t m = 1; m < f->S; m++)
+		far_add(f, a, b, tn[m], f->x[m] * dp, f->z ? f->z[m] * dp : 0.0);
+	far_add(f, a, b, b, f->Pb * 0.5 * (dp + dn), f->z ? f->Qb * 0.5 * (dp + dn) : 0.0);
+	f->tb = b;
+	f->t_far = b + fmax(fmax(FAR_RHO * (b - a + 2.0 * dn), FAR_MIN * dn), 2.0 * c->t_smooth);
+}
