@@ -436,15 +436,17 @@ static int area_init(struct area *a, const struct tui_view *v, int top, int bott
 static void area_line(struct area *a, int series, int role, const double *x,
 		      const double *y, size_t n, unsigned dash)
 {
-	double lx[RF_CURVE_N > ODE_N ? RF_CURVE_N : ODE_N];
+	double sx[RF_CURVE_N > ODE_N ? RF_CURVE_N : ODE_N], *lx = sx, *own = NULL;
 	a->role[series % TUI_CANVAS_SERIES] = role;
-	if (a->xlog) { /* short curves only: the charts' own */
-		n = n < sizeof lx / sizeof lx[0] ? n : sizeof lx / sizeof lx[0];
+	if (a->xlog) { /* a history's samples on the heap; the charts' on the stack */
+		if (n > sizeof sx / sizeof sx[0] && !(lx = own = malloc(n * sizeof *lx)))
+			return; /* out of memory: the curve is left out */
 		for (size_t i = 0; i < n; i++)
 			lx[i] = x[i] > 0 ? log10(x[i]) : NAN;
 		x = lx;
 	}
 	tui_canvas_polyline_dash(&a->c, series, x, y, n, dash);
+	free(own);
 }
 
 static void area_draw(const struct area *a)
@@ -486,12 +488,12 @@ static void area_ticks(const struct area *a, const struct tui_view *v, double ys
 		put(a->top + row, PLOT_LEFT - 1, 1, attr(R_DIM), v->utf8 ? "\xe2\x94\xa4" : "+");
 	}
 	int y = a->top + a->rows, name = ncols(xname), last = -1;
-	double lo = a->xlog ? pow(10, a->c.x0) : a->c.x0 * xs;
-	double hi = a->xlog ? pow(10, a->c.x1) : a->c.x1 * xs;
+	double lo = a->xlog ? pow(10, a->c.x0) * xs : a->c.x0 * xs;
+	double hi = a->xlog ? pow(10, a->c.x1) * xs : a->c.x1 * xs;
 	n = tui_ticks(lo, hi, a->xlog, a->cols / 7 < TICKS_MAX ? a->cols / 7 : TICKS_MAX, t);
 	for (int i = 0; i < n; i++) {
 		char s[24];
-		double x = a->xlog ? log10(t[i]) : t[i] / xs;
+		double x = a->xlog ? log10(t[i] / xs) : t[i] / xs;
 		int col = PLOT_LEFT + tui_canvas_xdot(&a->c, x) / a->c.xdots;
 		snprintf(s, sizeof s, "%g", t[i]);
 		int x0 = col - ncols(s) / 2;
@@ -503,28 +505,60 @@ static void area_ticks(const struct area *a, const struct tui_view *v, double ys
 	put_right(y, PLOT_LEFT, COLS - PLOT_LEFT - 1, attr(R_HEAD), xname);
 }
 
-/* The range over every curve shown, always including y = 0. */
-static int plot_range(const struct tui_model *m, double r[4])
+/* The range over every curve shown, always including y = 0; r[4] the
+ * shortest feature (a history's end, or twice its peak's time) for the
+ * time axis (log_time). */
+static int plot_range(const struct tui_model *m, double r[5])
 {
 	int any = 0;
 	r[0] = 0;
 	r[1] = r[2] = r[3] = 0;
+	r[4] = INFINITY;
 	for (int k = 0; k < ANVIL_MODEL_COUNT; ++k) {
 		const struct tui_row *row = &m->rows[k];
 		if (!plottable(row))
 			continue;
 		const struct anvil_history *h = &row->res.hist;
 		const double *y = quantity_data(h, m->quantity);
+		size_t kp = 0;
 		for (size_t i = 0; i < h->n; ++i) {
 			if (!isfinite(h->t[i]) || !isfinite(y[i]))
 				continue;
 			r[1] = fmax(r[1], h->t[i]);
 			r[2] = fmin(r[2], y[i]);
 			r[3] = fmax(r[3], y[i]);
+			if (h->P[i] > h->P[kp])
+				kp = i;
 		}
+		double end = h->t[h->n - 1], rise = 2.0 * h->t[kp];
+		if (end > 0)
+			r[4] = fmin(r[4], rise > 0 ? fmin(end, rise) : end);
 		any = 1;
 	}
 	return any;
+}
+
+/* The time axis as the charts have it (plot.c, history_time_unit): log
+ * when the longest history is over 20 times the shortest feature (a drop
+ * weight's seconds beside a Hertz pulse's microseconds, which a linear
+ * axis squeezes into its first column), from a hundredth of that
+ * feature; the unit the longest history reads best in. */
+static double log_time(double r[5], int *lg, const char **name, const struct tui_view *v)
+{
+	*lg = isfinite(r[4]) && r[1] > 20.0 * r[4];
+	if (*lg)
+		r[0] = 0.01 * r[4], r[1] *= 1.3;
+	if (r[1] <= 20e-3) {
+		*name = *lg ? (v->utf8 ? "t [\xc2\xb5s], log" : "t [us], log")
+			    : (v->utf8 ? "t [\xc2\xb5s]" : "t [us]");
+		return 1e6;
+	}
+	if (r[1] <= 20.0) {
+		*name = *lg ? "t [ms], log" : "t [ms]";
+		return 1e3;
+	}
+	*name = *lg ? "t [s], log" : "t [s]";
+	return 1.0;
 }
 
 static void history_legend(const struct tui_model *m, const struct tui_view *v, int y)
@@ -549,7 +583,7 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 			 int top, int bottom)
 {
 	struct area a;
-	double r[4], h = scene_h_r0(m);
+	double r[5], h = scene_h_r0(m);
 	history_legend(m, v, top);
 	if (!plot_range(m, r)) {
 		putf((top + bottom) / 2, PLOT_LEFT, COLS - PLOT_LEFT - 1, attr(R_DIM), "%s",
@@ -558,7 +592,12 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 	}
 	if (!area_init(&a, v, top, bottom))
 		return;
-	tui_canvas_range(&a.c, r[0], r[1], r[2], r[3]);
+	const char *tname;
+	double ts = log_time(r, &a.xlog, &tname, v);
+	if (a.xlog)
+		tui_canvas_range(&a.c, log10(r[0]), log10(r[1]), r[2], r[3]);
+	else
+		tui_canvas_range(&a.c, r[0], r[1], r[2], r[3]);
 	/* backwards, so the first model of the legend ends up on top */
 	for (int i = ANVIL_MODEL_COUNT - 1; i >= 0; --i) {
 		enum anvil_model k = tui_model_order[i];
@@ -569,7 +608,7 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 				  model_dash(k));
 	}
 	area_draw(&a);
-	area_ticks(&a, v, quantity_scale(m->quantity), 1e6, v->utf8 ? "t [\xc2\xb5s]" : "t [us]");
+	area_ticks(&a, v, quantity_scale(m->quantity), ts, tname);
 	tui_canvas_free(&a.c);
 }
 
