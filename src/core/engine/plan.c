@@ -388,6 +388,8 @@ static const struct anvil_fig_info fig_info[ANVIL_FIG_COUNT] = {
 				ANVIL_UNIT_LENGTH },
 	[ANVIL_FIG_P_MEAN] = { "p_m", "mean contact pressure", ANVIL_UNIT_PRESSURE },
 	[ANVIL_FIG_STEPS] = { "steps", "time steps of a wave run", ANVIL_UNIT_NONE },
+	[ANVIL_FIG_MARCHED] = { "marched", "of them marched (the step grows where P is smooth)",
+				ANVIL_UNIT_NONE },
 	[ANVIL_FIG_TERMS] = { "terms", "Fourier terms of the layer response", ANVIL_UNIT_NONE },
 };
 
@@ -489,6 +491,8 @@ static void figures(const struct est *e, struct anvil_plan *pl)
 	f[ANVIL_FIG_A_HERTZ] = sqrt(a2);
 	f[ANVIL_FIG_P_MEAN] = P / (M_PI * a2);
 	f[ANVIL_FIG_STEPS] = e->steps;
+	f[ANVIL_FIG_MARCHED] = ceil(anvil_plan_marched(e->window_lay, e->lay.dt, e->lay.nsteps,
+						       e->lay.grows));
 	f[ANVIL_FIG_TERMS] = e->terms;
 }
 

@@ -229,6 +229,7 @@ enum anvil_fig {
 	ANVIL_FIG_A_HERTZ,   /* Hertz contact radius sqrt(r0 alpha_max), m */
 	ANVIL_FIG_P_MEAN,    /* mean contact pressure P_max / (pi a^2), Pa */
 	ANVIL_FIG_STEPS,     /* time steps of a wave run (first window) */
+	ANVIL_FIG_MARCHED,   /* of them, the steps its march makes (the step grows) */
 	ANVIL_FIG_TERMS,     /* Fourier terms of the layer correction */
 	ANVIL_FIG_COUNT
 };
@@ -354,6 +355,11 @@ double anvil_plan_inversion_window(double hh, double tau_end);
  * ANVIL_GROW_AFTER pulses of nsteps steps, long mode beyond
  * ANVIL_MAX_STEPS; else the half-space or the static anvil). */
 double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps);
+/* The steps a coupled run over window_s at step dt marches (grows: the
+ * step doubles past ANVIL_GROW_AFTER pulses of nsteps steps, and a long
+ * contact then takes about IMPACT_GROWN more pulses' worth; else every
+ * step of the window). */
+double anvil_plan_marched(double window_s, double dt, double nsteps, int grows);
 /* The layer-kernel evaluations the planner predicts for one layer
  * correction (green.h, with its twin) of thickness hh, Poisson ratio nu,
  * bandwidth omega and window tau_end at level acc: the count the cost

@@ -216,12 +216,18 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
 #define IMPACT_GROWN 12.0
 #define IMPACT_HIST 3.5e-6
 #define IMPACT_TAB 1.0e-6
+double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
+{
+	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
+	return grows && n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n;
+}
+
 double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps)
 {
 	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
 	if (!layer)
 		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
-	double m = n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n; /* the nodes marched */
+	double m = anvil_plan_marched(window_s, dt, nsteps, 1);
 	double l2 = log2(fmax(m, 2.0)), tab = n, far = 0.0;
 	if (n > ANVIL_MAX_STEPS) { /* long mode (impact.h t_smooth): no table to the window's
 				    * end; each level's weights, and the far field per node */
