@@ -125,6 +125,12 @@ check "one long contact whose force peaks early: a log axis too" \
 	"$ANVIL" plot force -s solver.models=zener -s layer.thickness=0.1r0 --script -
 assert "...log scale (Zener's plate: P peaks at 4 us of 16 ms)" grep -q "^set xlabel 't (µs), log scale'" "$tmp/out"
 assert "...its force in N (it peaks at 0.16 kN)" grep -q "^set ylabel 'contact force P (N)'" "$tmp/out"
+check "a drop weight's deflection in mm (Zener's plate: 204 mm under 2 kg on r0/4)" \
+	"$ANVIL" plot deflection -s solver.models=zener -s layer.thickness=0.25r0 -s impactor.mass=2kg --script -
+assert "...w in mm" grep -q "^set ylabel 'deflection w (mm), + into the layer'" "$tmp/out"
+assert "...its values in mm: over 1, under 1000" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $2 > m { m = $2 } END { exit !(m > 1 && m < 1000) }' "$tmp/out"
+check "a short contact's deflection stays in um" "$ANVIL" plot deflection -s solver.models=zener --script -
+assert "...w in um" grep -q "^set ylabel 'deflection w (µm), + into the layer'" "$tmp/out"
 check "a short contact's axis stays linear" \
 	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
 assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"

@@ -398,17 +398,18 @@ static int ok_run(const struct plot_run *run)
 	return run->r != NULL && (unsigned)run->model < ANVIL_MODEL_COUNT;
 }
 
-static const double *history_y(const struct anvil_history *h, int panel, int in_n, double *ys)
+static const double *history_y(const struct anvil_history *h, int panel,
+				const struct plot_chart *c, double *ys)
 {
 	switch (panel) {
 	case 0:
-		*ys = in_n ? 1.0 : 1e-3; /* N, or N -> kN */
+		*ys = c->force_in_n ? 1.0 : 1e-3; /* N, or N -> kN */
 		return h->P;
 	case 1:
 		*ys = 1.0;
 		return h->v;
 	default:
-		*ys = 1e6; /* m -> um */
+		*ys = c->w_in_mm ? 1e3 : 1e6; /* m -> mm or um */
 		return h->w;
 	}
 }
@@ -509,11 +510,23 @@ static int force_unit_n(const struct plot_run *runs, int n)
 	return top > 0 && top < 1e3;
 }
 
+/* w in mm beyond 1 mm: a drop weight pushes an unbounded plate 0.25 m,
+ * "250000" um on the axis pushed its label off the image's edge. */
+static int w_unit_mm(const struct plot_run *runs, int n)
+{
+	double top = 0;
+	for (int i = 0; i < n; i++)
+		if (ok_run(&runs[i]))
+			for (size_t j = 0; j < runs[i].r->hist.n; j++)
+				top = fmax(top, fabs(runs[i].r->hist.w[j]));
+	return top > 1e-3;
+}
+
 /* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
 static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel, double ts)
 {
 	double ys;
-	const double *y = history_y(&run->r->hist, panel, c->force_in_n, &ys);
+	const double *y = history_y(&run->r->hist, panel, c, &ys);
 	int st = plot_chart_add(c, "", model_mark(run->model), run_colour(run),
 				run->r->hist.t, y, run->r->hist.n, ts, ys, 0);
 	if (!st)
@@ -540,6 +553,7 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 		 : what[p0], n > 0 ? runs[0].V0 : 0.0);
 	double ts = history_time_unit(c, runs, n);
 	c->force_in_n = force_unit_n(runs, n);
+	c->w_in_mm = w_unit_mm(runs, n);
 	/* The half-space first: its band goes under the layers. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < n && !st; i++) {

@@ -168,6 +168,7 @@ struct plot_chart {
 	char setup[512];               /* extra gnuplot commands (ranges) */
 	const char *tlabel;            /* a history's time axis ("t (ms)"); NULL: the kind's */
 	int force_in_n;                /* a history's P in N (peaks below 1 kN), else kN */
+	int w_in_mm;                   /* a history's w in mm (beyond 1 mm), else um */
 	int nseries, nkeys, nnotes;
 	struct plot_series s[PLOT_MAX_SERIES];
 	struct plot_key keys[PLOT_MAX_KEYS];

@@ -265,7 +265,9 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 	fputs("set xlabel ", f);
 	plot_put_quoted(f, c->tlabel ? c->tlabel : k->xlabel);
 	fputs("\nset ylabel ", f);
-	plot_put_quoted(f, c->kind == PLOT_FORCE && c->force_in_n ? "contact force P (N)" : k->ylabel);
+	plot_put_quoted(f, c->kind == PLOT_FORCE && c->force_in_n ? "contact force P (N)"
+			   : c->kind == PLOT_DEFLECTION && c->w_in_mm ? "deflection w (mm), + into the layer"
+								      : k->ylabel);
 	fputc('\n', f);
 }
 
@@ -273,7 +275,8 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 static void write_history(FILE *f, const struct plot_chart *c, double top, double bottom)
 {
 	static const enum plot_kind panels[3] = {PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION};
-	const char *const ylabels[3] = {c->force_in_n ? "P (N)" : "P (kN)", "v (m/s)", "w (µm)"};
+	const char *const ylabels[3] = {c->force_in_n ? "P (N)" : "P (kN)", "v (m/s)",
+					c->w_in_mm ? "w (mm)" : "w (µm)"};
 	const double gap = 0.02, h = (top - bottom - 2 * gap) / 3;
 	fputs("set multiplot\n", f);
 	for (int p = 0; p < 3; p++) {
