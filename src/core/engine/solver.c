@@ -394,8 +394,6 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
 						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
 		wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
-		wv->io.impulse = solver_response_impulse; /* the half-space's: differences */
-		wv->io.impulse_ctx = &wv->rs;
 		st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
 		wv->tau_end = tau_end;
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))

@@ -114,11 +114,6 @@ double impact_rtab(const struct ctx *c, int r, size_t u)
 	return r ? rraw(c, 1, u) - rraw(c, 0, u) : rraw(c, 0, u);
 }
 
-static double tab(const struct ctx *c, int r, size_t u)
-{
-	return impact_rtab(c, r, u);
-}
-
 /* Level L's weights j0 <= j < j1 into g (and dg when ramp2 is given) from
  * the ramps at j 2^L dt0 (as weights() makes level 0's); 1 when one is
  * not finite (a ramp call failed). */
@@ -375,7 +370,8 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 			 * would round by eps R/dt, the same way for every hat of a
 			 * width, a bias that grows as R with the lag */
 			for (int r = 0; r < (f->z ? 2 : 1); r++) {
-				double A = tab(c, r, ub + mp), B = tab(c, r, ub), E = tab(c, r, ub - mn);
+				double A = impact_rtab(c, r, ub + mp), B = impact_rtab(c, r, ub),
+				       E = impact_rtab(c, r, ub - mn);
 				out[k] += (r ? f->Qb : f->Pb) * ((A - B) / hp - (B - E) / hn);
 			}
 		}
