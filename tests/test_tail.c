@@ -51,11 +51,11 @@ static void test_k_table(const struct anvil_green *g, double hh)
 	struct anvil_green_samples s;
 	struct anvil_plate_tail tl;
 	anvil_green_export(g, &s);
-	int st = anvil_plate_tail_init(&tl, hh, 0.3, s.t1, s.tail_c, s.tail_v, s.tau_end, s.nk, s.k);
+	int st = anvil_plate_tail_init(&tl, hh, 0.3, s.patch, s.t1, s.tail_c, s.tail_v, s.tau_end, s.nk, s.k);
 	double worst = 0, h = M_LN2 / ANVIL_PLATE_PER_OCTAVE;
 	for (double u = log(s.t1 / 8.0) + 0.5 * h; !st && u < log(s.tau_end); u += 7.0 * h) {
 		double q, t = exp(u);
-		if (anvil_plate_k(hh, 0.3, t, &q)) {
+		if (anvil_plate_k(hh, 0.3, s.patch, t, &q)) {
 			st = 1;
 			break;
 		}

@@ -441,7 +441,9 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 	else {
 		struct anvil_green_samples s = { .mode = ANVIL_GREEN_LAYER_CORRECTION,
 						 .filtered = hd->filtered != 0, .hh = hd->hh,
-						 .nu = hd->nu, .tau_end = hd->tau_end,
+						 .nu = hd->nu,
+						 .patch = hd->load ? hd->patch : 1.0,
+						 .tau_end = hd->tau_end,
 						 .dtau = hd->dtau, .abserr = hd->abserr,
 						 .n = (size_t)hd->n, .ramp = ramp,
 						 .t1 = hd->t1, .tail_v = hd->tail_v,

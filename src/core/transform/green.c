@@ -107,8 +107,8 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 	}
 	g->ramp[0] = 0.0; /* exact: nothing has moved at t = 0 */
 	g->tailed = tailed;
-	if (tailed && (st = anvil_plate_tail_make(g->hh, g->nu, g->dtau, n1, g->n, g->ramp,
-						  g->tau_end, memo, &g->tail)))
+	if (tailed && (st = anvil_plate_tail_make(g->hh, g->nu, g->patch, g->dtau, n1, g->n,
+						  g->ramp, g->tau_end, memo, &g->tail)))
 		return st;
 	/* the tail's bound grows with t (anvil_green_abserr_at): its value at T1 here */
 	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.v : 0.0);
@@ -485,7 +485,7 @@ size_t anvil_green_evals(const struct anvil_green *g) { return g->evals; }
 void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s)
 {
 	*s = (struct anvil_green_samples){ .mode = g->mode, .filtered = g->filtered,
-					   .hh = g->hh, .nu = g->nu,
+					   .hh = g->hh, .nu = g->nu, .patch = g->patch,
 					   .tau_end = g->tau_end, .dtau = g->dtau,
 					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp };
 	if (g->tailed) {
@@ -508,7 +508,8 @@ static int sizes_ok(const struct anvil_green_samples *s)
 	if (!(s->nu > -1 && s->nu < 0.5) || !(s->tau_end > 0 && isfinite(s->tau_end)) ||
 	    !(s->dtau > 0 && isfinite(s->dtau)) || !(s->abserr > 0 && isfinite(s->abserr)) ||
 	    (s->mode != ANVIL_GREEN_LAYER_CORRECTION && s->mode != ANVIL_GREEN_HALFSPACE) ||
-	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) || !s->ramp)
+	    (s->mode == ANVIL_GREEN_LAYER_CORRECTION && !(s->hh > 0 && isfinite(s->hh))) ||
+	    !(s->patch >= 0 && s->patch <= 1) || !s->ramp)
 		return 0;
 	/* a long window's inversion covered [0, T1] only (plate.h) */
 	double t1 = s->mode == ANVIL_GREEN_LAYER_CORRECTION ? anvil_plate_t1(s->hh, s->tau_end) : 0;
@@ -575,8 +576,8 @@ static int samples_plausible(const struct anvil_green_samples *s)
 static int tail_import(struct anvil_green *g, const struct anvil_green_samples *s,
 		       struct anvil_err *err)
 {
-	int st = anvil_plate_tail_init(&g->tail, s->hh, s->nu, s->t1, s->tail_c, s->tail_v,
-				       s->tau_end, s->nk, s->k);
+	int st = anvil_plate_tail_init(&g->tail, s->hh, s->nu, s->patch, s->t1, s->tail_c,
+				       s->tail_v, s->tau_end, s->nk, s->k);
 	g->tailed = 1;
 	for (size_t j = s->n - ANVIL_PLATE_PAD; !st && j < s->n; j++)
 		if (anvil_plate_tail_ramp(&g->tail, (double)j * s->dtau) != s->ramp[j])
@@ -608,7 +609,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 		return NULL;
 	}
 	*g = (struct anvil_green){ .mode = s->mode, .filtered = s->filtered != 0,
-				   .hh = s->hh, .nu = s->nu, .patch = 1.0,
+				   .hh = s->hh, .nu = s->nu, .patch = s->patch,
 				   .kap2 = anvil_kappa2(s->nu), .tau_end = s->tau_end,
 				   .dtau = s->dtau, .n = s->n, .tau = block, .ramp = block + s->n,
 				   .abserr = s->abserr };

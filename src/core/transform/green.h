@@ -95,10 +95,8 @@ int anvil_green_fits(enum anvil_green_mode mode, double hh, double tau_end, doub
  * finite, its integrand decaying like exp(-k h); that is what the physical
  * contact needs (impact.h), the static indentation being Hertz's.  Against
  * the true contact radius a its error is O((a/h)^2) (doc/contact-model.md).
- * Such a response is not for the cache: anvil_green_samples has no patch;
- * nor has it a twin.  A long window is continued by the plate as for r0
- * (plate.h): K is the r0 patch's, and what another patch changes at late
- * times (its t log t, t and constant terms) is in the fitted part. */
+ * It has no twin.  A long window is continued by the plate as for r0
+ * (plate.h), K being this patch's Kirchhoff response. */
 struct anvil_green *anvil_green_alloc_patch(enum anvil_green_mode mode, double hh, double nu,
 					    double patch, double tau_end,
 					    const struct anvil_green_settings *gs,
@@ -177,9 +175,10 @@ struct anvil_green_samples {
 	enum anvil_green_mode mode;
 	int filtered; /* 1: made with gs.filter (its precursor, green.c) */
 	double hh, nu, tau_end, dtau, abserr;
+	double patch;     /* the load's radius / r0 (0: a point load; 1: the paper's) */
 	size_t n;
 	const double *ramp;
-	double t1;        /* 0: no tail (nk 0, k NULL) */
+	double t1;        /* 0: no tail (nk 0, k NULL); its K is the patch's (plate.h) */
 	double tail_c[3]; /* the fit's coefficients */
 	double tail_v;    /* its validation misfit (anvil_green_abserr_at) */
 	size_t nk;        /* the K(t)/t^2 table, k[0..nk-1] */
