@@ -279,8 +279,12 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 			 : fmax(kband, sqrt(pow(0.5 * L / hh, 2) + omega * omega));
 	/* Starting pieces: about the spacing of the Lamb modes in k (pi/h) in
 	 * the band, wider in the smooth tail; the adaptive splitting finds the
-	 * poles from there (the results do not move when these are halved). */
-	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = 4.0;
+	 * poles from there (the results do not move when these are halved).
+	 * The tail's pieces are 16 wide: 2.5 periods of the widest patch's
+	 * zhat, which the splitting resolves where it must; a thin plate's
+	 * tail reaches 0.5 L/hh (580 at hh = 0.02) and held most of the
+	 * pieces at width 4 (h = 0.02 r0, 10 kg: 31.5 M evaluations, 14 M). */
+	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = hs ? 4.0 : 16.0;
 	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
 }
 
