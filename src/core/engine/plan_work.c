@@ -67,7 +67,7 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 		double om = n * M_PI / Tp, wabs = hypot(om, c0);
 		double kband = anvil_kband(om, wabs, nu, hh, cr);
 		double kend = fmax(kband, sqrt(pow(0.5 * L / hh, 2) + om * om)); /* as green.c */
-		panels += stride * (ceil(kband / w0) + ceil((kend - kband) / 4.0));
+		panels += stride * (ceil(kband / w0) + ceil((kend - kband) / ANVIL_KTAIL_PIECE));
 	}
 	return 21.0 * refine(hh, tau_end) * panels;
 }

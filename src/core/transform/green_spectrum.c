@@ -284,7 +284,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	 * zhat, which the splitting resolves where it must; a thin plate's
 	 * tail reaches 0.5 L/hh (580 at hh = 0.02) and held most of the
 	 * pieces at width 4 (h = 0.02 r0, 10 kg: 31.5 M evaluations, 14 M). */
-	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = hs ? 4.0 : 16.0;
+	double w0 = hs ? 0.5 : fmin(1.0, 2.0 / hh), w1 = hs ? 4.0 : ANVIL_KTAIL_PIECE;
 	return adapt(q, h, kband, kend, w0, w1, eps, val, abserr);
 }
 

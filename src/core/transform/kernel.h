@@ -63,4 +63,8 @@ double complex anvil_kernel_tdiff(double complex al1, double complex al2, double
  * planner's cost model (plan.c). */
 double anvil_kband(double omega, double wabs, double nu, double hh, double cr);
 
+/* The width of the layer correction's starting pieces beyond the band
+ * (green_spectrum.c; the planner prices the same, plan_work.c). */
+#define ANVIL_KTAIL_PIECE 16.0
+
 #endif
