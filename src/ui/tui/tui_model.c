@@ -180,21 +180,41 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
 	}
 	if (!m->have_plan || m->plan_gen != m->gen)
 		return -1;
-	/* The plan's is quasi-static Hertz at the rigid anvil's force; once the
-	 * layer (else half-space) row is in, quasi-static Hertz at its own
-	 * computed peak force: on a thin plate that force is a fraction of
-	 * the rigid anvil's (the CLI's run searches the field instead). */
-	struct anvil_verdict at;
-	const struct anvil_verdict *v = &m->plan.verdict;
-	const struct tui_row *r = isfinite(m->plan.pb.p.h) ? &m->rows[ANVIL_MODEL_LAYER]
-							   : &m->rows[ANVIL_MODEL_HALFSPACE];
-	if (r->state == TUI_ROW_DONE && r->have &&
-	    anvil_verdict_at(&m->plan.pb, r->res.Pmax.val, r->res.tmax.val, &at) == ANVIL_OK)
-		v = &at;
+	const struct anvil_verdict *v = m->have_verdict && m->verdict_gen == m->gen
+						? &m->verdict : &m->plan.verdict;
 	anvil_verdict_text(v, layer, n);
 	if (v->imp.fate != ANVIL_HERTZ_ELASTIC)
 		anvil_verdict_impactor_text(v, imp, n);
 	return anvil_verdict_fails(v);
+}
+
+/* The verdict once the plan and the layer (else half-space) row of the
+ * current generation are both in: quasi-static Hertz at the row's own
+ * computed peak force (on a thin plate a fraction of the rigid anvil's
+ * the plan judges), and on a finite layer the plate's bending stress
+ * under the row's history, as `anvil run` judges a long contact
+ * (yield.c): the fate takes the larger stress.  A short contact's `anvil
+ * run` searches the transform field instead (seconds: not for a knob). */
+static void verdict_update(struct tui_model *m)
+{
+	const struct anvil_problem *pb = &m->plan.pb;
+	int finite = isfinite(pb->p.h);
+	const struct tui_row *r = &m->rows[finite ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE];
+	if (!m->have_plan || m->plan_gen != m->gen || r->state != TUI_ROW_DONE || !r->have ||
+	    (m->have_verdict && m->verdict_gen == m->gen))
+		return;
+	struct anvil_verdict v;
+	if (anvil_verdict_at(pb, r->res.Pmax.val, r->res.tmax.val, &v) != ANVIL_OK)
+		return; /* the plan's verdict stays */
+	if (finite) {
+		double ratio = m->plan.row[ANVIL_MODEL_LAYER].job.ts / m->plan.fig[ANVIL_FIG_T_REFLECT];
+		if (ratio > ANVIL_VERDICT_QS_RATIO)
+			v.qs_ratio = ratio;
+		anvil_verdict_bending(pb, &r->res.hist, &v);
+	}
+	m->verdict = v;
+	m->verdict_gen = m->gen;
+	m->have_verdict = 1;
 }
 
 /* ---- messages ---- */
@@ -344,6 +364,7 @@ int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 	memset(&r->hist, 0, sizeof r->hist);
 	row_fill(row, status, msg);
 	m->pending &= ~bit;
+	verdict_update(m);
 	m->run_seconds += row->res.seconds;
 	m->run_computed++;
 	if (cacheable(status)) {
@@ -361,6 +382,7 @@ void tui_model_deliver_plan(struct tui_model *m, unsigned gen, const struct anvi
 	m->plan = *pl;
 	m->plan_gen = gen;
 	m->have_plan = 1;
+	verdict_update(m); /* its row may have come from the cache before it */
 }
 
 void tui_model_progress(struct tui_model *m, unsigned gen, double fraction,

@@ -23,6 +23,7 @@
 #include "result.h"
 #include "scene.h"
 #include "status.h"
+#include "verdict.h"
 
 /* Keys beyond ASCII.  Plain characters ('k', 'H', ':' ...) are themselves. */
 enum tui_key {
@@ -141,6 +142,12 @@ struct tui_model {
 	int have_plan;
 	unsigned plan_gen;
 	struct anvil_plan plan;
+	/* The verdict at the layer (else half-space) row of generation
+	 * verdict_gen, made once that row and the plan are both in (the
+	 * plate's bending estimate costs tens of ms: never per redraw). */
+	int have_verdict;
+	unsigned verdict_gen;
+	struct anvil_verdict verdict;
 	unsigned long stamp;
 	struct tui_cache_entry cache[TUI_CACHE_SIZE];
 };
@@ -194,11 +201,17 @@ const char *tui_model_save_path(const struct tui_model *m);
 /* After a successful save to path. */
 void tui_model_saved(struct tui_model *m, const char *path);
 
-/* The one verdict (verdict.h) of the current generation's plan (the
- * quasi-static Hertz contact, as `anvil plan` prints it): the layer's line
- * into layer, the impactor's into imp when it yields or cracks ("" when it
- * does not).  Returns -1 with no plan yet for this generation (both ""), 1
- * when a body yields or cracks, 0 when not (or not judged). */
+/* The one verdict (verdict.h) of the current generation: the plan's
+ * (quasi-static Hertz at the rigid anvil's force, as `anvil plan` prints
+ * it) until the layer (else half-space) row is in, then quasi-static Hertz
+ * at that row's computed P_max and, on a finite layer, the plate's bending
+ * stress under its history (anvil_verdict_bending; qs_ratio set where the
+ * plan's contact is long, as `anvil run` gives it: the same words).  The
+ * layer's line into layer, the impactor's into imp when it yields or
+ * cracks ("" when it does not); n = ANVIL_VERDICT_TEXT_MAX holds any line.
+ * Returns -1 with no plan yet for this generation (both ""), 1 when a body
+ * yields or cracks, 0 when not (or not judged).  Reads only: the verdict
+ * was made when the row or the plan arrived. */
 int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n);
 
 /* The label and the value (with its unit) of a panel row. */
