@@ -191,6 +191,75 @@ static void test_numbers(void)
 	is_rel(m->sc.radius, 4.1e-3, 1e-15, "radius 4 -> 4.1 mm");
 }
 
+/* Issue 11: values shown without float noise.  A value of at most 6
+ * significant digits (typed, or a step's) exactly, a derived one to 4. */
+static void test_display(void)
+{
+	static const struct {
+		double x;
+		const char *s;
+	} nums[] = {{4, "4"}, {4.1255, "4.1255"}, {0.16842105263157894, "0.1684"},
+		    {100000, "100000"}, {12345.678, "12346"}, {0.99028485, "0.9903"},
+		    {2.5e-3, "0.0025"}, {1.000000000001, "1"}, {0.1 + 0.2, "0.3"}};
+	char buf[48];
+	for (size_t i = 0; i < sizeof nums / sizeof nums[0]; ++i) {
+		tui_number(nums[i].x, buf, sizeof buf);
+		ok(!strcmp(buf, nums[i].s), "tui_number(%.17g) = %s (%s)", nums[i].x, buf,
+		   nums[i].s);
+	}
+	/* tests/cli.sh's long scene: a 38 mm ball on 3.2 mm of glass */
+	struct tui_model *m = fresh();
+	type(m, ":impactor.shape=ball\n");
+	type(m, ":impactor.diameter=38mm\n");
+	type(m, ":layer.thickness=3.2mm\n");
+	ok(!strcmp(text(m, TUI_F_THICK_MM), "3.2 mm") && !strcmp(text(m, TUI_F_THICK_R0), "0.1684 r0"),
+	   "3.2 mm over r0 = 19 mm: %s = %s", text(m, TUI_F_THICK_MM), text(m, TUI_F_THICK_R0));
+	ok(!strcmp(text(m, TUI_F_MASS), "257.4 g"), "  the ball's mass rho pi D^3 / 6: %s (%.17g g)",
+	   text(m, TUI_F_MASS), m->sc.mass * 1e3);
+	double h = anvil_scene_h(&m->sc);
+	m->sel = TUI_F_THICK_R0;
+	tui_model_key(m, TUI_KEY_ENTER);
+	ok(!strcmp(m->edit, "0.1684 r0") && tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW &&
+		   !m->editing && anvil_scene_h(&m->sc) == h && !m->sc.thickness_per_r0,
+	   "Enter, Enter on the derived 0.1684 r0: nothing changes (h = %.17g m)", h);
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	int act = type(m, "0.1687 r0\n");
+	ok(act == TUI_ACT_RECOMPUTE && !m->editing && !strcmp(text(m, TUI_F_THICK_R0), "0.1687 r0"),
+	   "  an edited value is taken: %s", text(m, TUI_F_THICK_R0));
+	is_rel(anvil_scene_h(&m->sc), 0.1687 * 19e-3, 1e-15, "  h = 0.1687 r0");
+	/* every step lands on a value shown exactly, at most 3 digits */
+	static const int fields[] = {TUI_F_THICK_MM, TUI_F_THICK_R0, TUI_F_VELOCITY, TUI_F_MASS,
+				     TUI_F_RADIUS};
+	static const int keys[] = {'l', 'l', 'L', 'h', 'H', 'H', 'h', 'l', 'L', 'L'};
+	int clean = 1;
+	for (size_t f = 0; f < sizeof fields / sizeof fields[0]; ++f) {
+		m->sel = fields[f];
+		for (int r = 0; r < 3; ++r)
+			for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
+				tui_model_key(m, keys[k]);
+				const char *t = text(m, (enum tui_field)fields[f]);
+				double want = fields[f] == TUI_F_THICK_MM ? anvil_scene_h(&m->sc) * 1e3
+					      : fields[f] == TUI_F_THICK_R0
+						  ? anvil_scene_h(&m->sc) / m->sc.radius
+					      : fields[f] == TUI_F_VELOCITY ? m->sc.velocity
+					      : fields[f] == TUI_F_MASS     ? m->sc.mass * 1e3
+									    : m->sc.radius * 1e3;
+				int digits = 0, lead = 1;
+				for (const char *c = t; *c && *c != ' '; ++c)
+					if (*c >= '1' && *c <= '9')
+						lead = 0, digits++;
+					else if (*c == '0' && !lead)
+						digits++;
+				if (fabs(strtod(t, NULL) - want) > 1e-12 * want || digits > 3) {
+					diag("field %d after '%c': %s (%.17g)", fields[f], keys[k], t, want);
+					clean = 0;
+				}
+			}
+	}
+	ok(clean, "steps on every numeric row land on values of at most 3 digits, shown exactly");
+}
+
 static void test_materials(void)
 {
 	struct tui_model *m = fresh();
@@ -373,10 +442,8 @@ static void test_geometry(void)
 	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "  50 mm is taken");
 	is_rel(m->sc.velocity, sqrt(2 * ANVIL_G_STANDARD * 0.05), 1e-12,
 	       "  V0 = sqrt(2 g H) = %.4g m/s", m->sc.velocity);
-	char vtext[64];
-	snprintf(vtext, sizeof vtext, "%.6g m/s", sqrt(2 * ANVIL_G_STANDARD * 0.05));
-	ok(!strcmp(text(m, TUI_F_VELOCITY), vtext), "  the velocity row follows (%s)",
-	   text(m, TUI_F_VELOCITY));
+	ok(!strcmp(text(m, TUI_F_VELOCITY), "0.9903 m/s"),
+	   "  the velocity row follows, to 4 digits (%s)", text(m, TUI_F_VELOCITY));
 	m->sel = TUI_F_VELOCITY;
 	tui_model_key(m, 'l');
 	is_rel(m->sc.velocity, 1.0, 1e-15, "a velocity step replaces the drop height (%.4g m/s)",
@@ -661,7 +728,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(143);
+	plan(158);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
@@ -669,6 +736,7 @@ int main(void)
 	test_selection();
 	test_thickness();
 	test_numbers();
+	test_display();
 	test_materials();
 	test_accuracy();
 	test_edit();

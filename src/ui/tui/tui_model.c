@@ -18,8 +18,8 @@ const char *const tui_help_lines[] = {
 	"anvil tui: the impact explorer",
 	"",
 	"  Up/Down, k/j          select a parameter",
-	"  Left/Right, h/l       change it by a fine step",
-	"  Shift-Left/Right, H/L change it by a coarse step",
+	"  Left/Right, h/l       change it by a fine step (4 -> 4.1)",
+	"  Shift-Left/Right, H/L change it by a coarse step (4 -> 5)",
 	"  Enter                 type a value with its unit (e.g. 8 mm, 2 r0, inf);",
 	"                        a number needs its unit, as in files; Esc cancels",
 	"  Space                 switch a model on or off (on a model row)",
@@ -145,6 +145,34 @@ static int has_overrides(const struct anvil_body *b)
 	return !isnan(b->E) || !isnan(b->nu) || !isnan(b->rho) || !isnan(b->yield);
 }
 
+/* x with p significant digits, positional, trailing zeros dropped. */
+static void number_digits(double x, int p, char *buf, size_t n)
+{
+	int dec = p - 1 - (int)floor(log10(fabs(x)));
+	snprintf(buf, n, "%.*f", dec > 0 ? dec : 0, x);
+	if (dec > 0 && strchr(buf, '.')) {
+		size_t k = strlen(buf);
+		while (k && buf[k - 1] == '0')
+			buf[--k] = '\0';
+		if (k && buf[k - 1] == '.')
+			buf[--k] = '\0';
+	}
+}
+
+void tui_number(double x, char *buf, size_t n)
+{
+	if (!isfinite(x) || x == 0 || fabs(x) < 1e-4 || fabs(x) >= 1e9) {
+		snprintf(buf, n, "%.*g", TUI_DIGITS, x);
+		return;
+	}
+	for (int p = 1; p <= TUI_DIGITS_EXACT; ++p) {
+		number_digits(x, p, buf, n);
+		if (fabs(strtod(buf, NULL) - x) <= 1e-12 * fabs(x))
+			return;
+	}
+	number_digits(x, TUI_DIGITS, buf, n);
+}
+
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n)
 {
@@ -152,10 +180,12 @@ void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 	int mod = field_model(f);
 	if (is_numeric(f)) {
 		double v = field_number(sc, f);
+		char num[48];
+		tui_number(v, num, sizeof num);
 		if (isinf(v))
 			snprintf(buf, n, "inf");
 		else
-			snprintf(buf, n, "%.6g %s", v, numerics[f].unit);
+			snprintf(buf, n, "%s %s", num, numerics[f].unit);
 	} else if (f == TUI_F_IMPACTOR || f == TUI_F_LAYER) {
 		const struct anvil_body *b = f == TUI_F_IMPACTOR ? &sc->impactor : &sc->layer;
 		/* '*': the named material's numbers are not the ones used */
@@ -581,6 +611,7 @@ static void edit_begin(struct tui_model *m, const char *key, const char *unit,
 	snprintf(m->edit_key, sizeof m->edit_key, "%s", key);
 	snprintf(m->edit_unit, sizeof m->edit_unit, "%s", unit ? unit : "");
 	snprintf(m->edit, sizeof m->edit, "%s", text);
+	snprintf(m->edit_orig, sizeof m->edit_orig, "%s", text);
 	m->msg[0] = '\0';
 }
 
@@ -635,6 +666,12 @@ static enum tui_action edit_commit(struct tui_model *m)
 	enum tui_action a;
 	snprintf(v, sizeof v, "%s", m->edit);
 	trim(v);
+	if (m->edit_unit[0] && strcmp(m->edit, m->edit_orig) == 0) {
+		/* a number opened and left as shown (to TUI_DIGITS when derived,
+		 * 3.2 mm / 19 mm as 0.1684 r0): the exact value stays */
+		m->editing = 0;
+		return TUI_ACT_REDRAW;
+	}
 	if (!m->edit_key[0])
 		a = commit_any(m, v);
 	else if (strcmp(m->edit_key, "impactor.material") == 0 ||
@@ -714,10 +751,11 @@ static enum tui_action material_key(struct tui_model *m)
  * opens on the values in use (the drop height V0^2 / 2g of the velocity). */
 static enum tui_action geometry_edit(struct tui_model *m, int drop)
 {
-	char text[64];
+	char text[64], num[48];
 	double g = ANVIL_G_STANDARD;
 	double x = drop ? 0.5 * m->sc.velocity * m->sc.velocity / g : 2 * m->sc.radius;
-	snprintf(text, sizeof text, "%.6g mm", x * 1e3);
+	tui_number(x * 1e3, num, sizeof num);
+	snprintf(text, sizeof text, "%s mm", num);
 	edit_begin(m, drop ? "impact.drop_height" : "impactor.diameter", "mm", text);
 	return TUI_ACT_REDRAW;
 }

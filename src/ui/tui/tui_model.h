@@ -128,6 +128,7 @@ struct tui_model {
 	char edit_key[64];          /* scene key being edited; "" for ':' */
 	char edit_unit[8];          /* unit added to a bare number */
 	char edit[TUI_EDIT_MAX];
+	char edit_orig[TUI_EDIT_MAX]; /* the text the field opened on */
 	char msg[ANVIL_ERR_MSG];    /* status-line message, "" for none */
 	int msg_error;
 	unsigned gen;               /* current request */
@@ -218,6 +219,16 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
 const char *tui_field_label(enum tui_field f);
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n);
+
+/* x as the panel and the text field show it, positional (no exponent
+ * for 1e-4 <= |x| < 1e9): exactly when x is a number of at most
+ * TUI_DIGITS_EXACT significant digits (what a step or the user typed,
+ * to 1e-12 relative: "4.1255"), else TUI_DIGITS significant digits
+ * (a value derived from others: 3.2 mm / 19 mm is "0.1684", not
+ * "0.168421"); trailing zeros dropped. */
+#define TUI_DIGITS 4
+#define TUI_DIGITS_EXACT 6
+void tui_number(double x, char *buf, size_t n);
 
 /* The next "round" value after x > 0 in direction dir (+1/-1): fine steps
  * are a tenth of the leading decimal digit, coarse steps one leading digit
