@@ -376,5 +376,11 @@ assert '...with the plate'"'"'s bending stress and its accuracy' \
 	grep -q "times 2h/c1); bending stress at the far face [0-9.]* MPa at t = [0-9.e+]* us (Kirchhoff plate, within 5 %)" "$tmp/err"
 assert '...at the row'"'"'s t_max' [ "$(sed -n 's/.*below the contact at t = \([0-9.e+-]*\) us.*/\1/p' "$tmp/err" | head -n 1)" = \
 	"$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%.3g", $c["tmax_us"] }' "$tmp/out")" ]
+# The whole line, not cut at 320 characters (it was: "... the larger: judged "):
+# 1 kg at 3 m/s on h = 0.05 r0 yields by the bending, not by the contact.
+check 'a 1 kg rod on h = 0.05 r0 at 3 m/s, draft' "$ANVIL" run -m layer -s solver.accuracy=draft \
+	-s impactor.mass=1kg -s layer.thickness=0.05r0 -s impact.velocity=3m/s
+assert '...yields by the bending, and the line ends whole' \
+	grep -q "^anvil: the steel layer yields: .*bending stress at the far face .*, the larger: judged on it$" "$tmp/err"
 
 done_testing

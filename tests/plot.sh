@@ -135,6 +135,20 @@ check "a short contact's axis stays linear" \
 	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
 assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"
 assert "the paper's cases with the paper's contact, said" grep -q "with the paper''s contact (effects.contact)" "$tmp/out"
+# Without a SCENE: the paper's figures (its bodies at 10 or 100 m/s, at its
+# thicknesses) with its contact; -s keys off them give the run's (physical).
+check "the paper's Fig. 3 (-s impact.velocity=100m/s)" \
+	"$ANVIL" plot force -s solver.models=hertz,halfspace -s impact.velocity=100m/s --script -
+assert "...the paper's contact" grep -q "with the paper''s contact (effects.contact)" "$tmp/out"
+check "...at a paper's thickness in mm (8 mm = 2 r0)" \
+	"$ANVIL" plot force -s solver.models=hertz,halfspace -s layer.thickness=8mm --script -
+assert "...the paper's contact" grep -q "with the paper''s contact (effects.contact)" "$tmp/out"
+for off in impactor.mass=2kg impact.velocity=5m/s layer.thickness=0.1r0 layer.material=glass; do
+	check "-s $off, no SCENE: not the paper's figure" \
+		"$ANVIL" plot force -s solver.models=hertz,halfspace -s "$off" --script -
+	assert "...the physical contact, as anvil run -s $off" \
+		grep -q "with the physical contact (effects.contact)" "$tmp/out"
+done
 printf '[layer]\nthickness = 2 mm\n[solver]\naccuracy = draft\nmodels = layer\n' > "$tmp/user.scene"
 check "a user's scene: its histories with its run's contact" \
 	"$ANVIL" plot force "$tmp/user.scene" --script -

@@ -178,6 +178,51 @@ static void test_force(void)
 		anvil_result_free(&r[i]);
 }
 
+/* Issue 11: a thin plate's P beside the rigid anvil's.  Peaks more than
+ * 20 times apart put P on a log axis (plot_force_log), else linear. */
+static void test_force_log(void)
+{
+	double range[2] = {-1, -1};
+	double near[3] = {4000, 300, 0}, far[3] = {105e3, 78.3, 0}, edge[2] = {2000, 100};
+	ok(plot_force_log(near, 3, range) == 0 && range[0] == -1, "peaks 13x apart: linear");
+	ok(plot_force_log(edge, 2, range) == 0, "exactly 20x apart: linear");
+	int lg = plot_force_log(far, 3, range);
+	ok(lg == 1 && range[0] == 0.783 && range[1] == 1.5 * 105e3,
+	   "105 kN beside 78.3 N: log from a hundredth of the smaller (%g N) to 1.5 times the "
+	   "larger (%g N); a zero peak ignored", range[0], range[1]);
+	struct anvil_result r[3];
+	struct plot_chart c;
+	struct plot_opts o;
+	fake_result(&r[0], ANVIL_MODEL_LAYER, 1.0);
+	fake_result(&r[1], ANVIL_MODEL_HERTZ, 1.0);
+	fake_result(&r[2], ANVIL_MODEL_HALFSPACE, 1.0);
+	for (int i = 0; i < NPTS; i++) /* the rigid anvils 100 times the layer */
+		r[1].hist.P[i] *= 100, r[2].hist.P[i] *= 90;
+	struct plot_run runs[] = {
+		{&r[0], ANVIL_MODEL_LAYER, 0.1, 5, 0},
+		{&r[1], ANVIL_MODEL_HERTZ, 0.1, 5, 0},
+		{&r[2], ANVIL_MODEL_HALFSPACE, INFINITY, 5, 0},
+	};
+	plot_opts_default(&o);
+	int st = plot_chart_history(&c, PLOT_FORCE, runs, 3);
+	ok(st == ANVIL_OK && c.force_log[0] == 0.04 &&
+		   c.force_log[1] == 1.5 * 400,
+	   "force chart of peaks 4 and 400 kN: log P over [%g, %g] kN", c.force_log[0],
+	   c.force_log[1]);
+	is_script(&c, &o, "force-log");
+	plot_chart_free(&c);
+	o.height = 1000;
+	ok(plot_chart_history(&c, PLOT_HISTORY, runs, 3) == ANVIL_OK && c.force_log[1] > 0,
+	   "history chart: its P panel log too");
+	is_script(&c, &o, "history-log");
+	plot_chart_free(&c);
+	ok(plot_chart_history(&c, PLOT_VELOCITY, runs, 3) == ANVIL_OK && c.force_log[1] == 0,
+	   "a velocity chart has no force axis");
+	plot_chart_free(&c);
+	for (int i = 0; i < 3; i++)
+		anvil_result_free(&r[i]);
+}
+
 /* Fig 8: layer points at two thicknesses and two velocities, a dense
  * layer curve, the half-space level, Zener's curves, the paper's values
  * and a marked thickness. */
@@ -605,8 +650,9 @@ static void test_tui_chart(void)
 
 int main(void)
 {
-	plan(82);
+	plan(90);
 	test_force();
+	test_force_log();
 	test_rf_thickness();
 	test_rf_lambda();
 	test_accuracy();

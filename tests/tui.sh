@@ -112,6 +112,7 @@ assert "Zener's t_s changes" wait_changed main "$before"
 after=$(ts_zener main)
 diag "Zener t_s: $before us at 4 mm, $after us at 5 mm"
 
+assert 'P(t) of the paper'"'"'s scene on a linear axis' wait_for main 'P\(t\) \[kN\] vs t'
 T send-keys -t main v
 assert 'v switches the plot to v(t)' wait_for main 'v\(t\) \[m/s\]'
 T send-keys -t main '?'
@@ -154,6 +155,16 @@ assert 'q quits with status 0' wait_for main '^anvil-exit=0$'
 assert 'the alternate screen is left' [ "$(flag main alternate_on)" = 0 ]
 assert 'the cursor is visible again' [ "$(flag main cursor_flag)" = 1 ]
 assert 'the keypad is back in normal mode' [ "$(flag main keypad_cursor_flag)" = 0 ]
+
+# ---- a drop weight on a thin plate: Hertz's 105 kN beside Zener's 0.08 kN ----
+start thin -s solver.models=hertz,zener -s layer.thickness=0.1r0 -s impactor.mass=2kg \
+	-s impact.velocity=5m/s
+assert 'thin plate: peaks 1300 times apart put P on a log axis' wait_for thin 'P\(t\) \[kN, log\] vs t'
+assert '...its ticks the decades down to a hundredth of the smaller peak' \
+	wait_for thin '^ +0\.001 .*$'
+T send-keys -t thin Q
+ask_status thin
+assert 'thin plate: Q quits with status 0' wait_for thin '^anvil-exit=0$'
 
 # ---- q while the worker computes; q with unsaved changes ----
 ENVS="ANVIL_NO_CACHE=1"

@@ -192,8 +192,8 @@ static void stress_text(double s, char *buf, size_t n)
 		snprintf(buf, n, "%.3g MPa", s * 1e-6);
 }
 
-/* A long contact's second clause: the plate's bending stress and its
- * accuracy, or why it was not checked. */
+/* The bending clause (a long contact's, the TUI's on any plate): the
+ * plate's bending stress and its accuracy, or why it was not checked. */
 static void bending_text(const struct anvil_verdict *v, char *buf, size_t n)
 {
 	char s[32];
@@ -231,7 +231,7 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max: the contact "
 			 "lasts %.2g times 2h/c1)", v->qs_ratio);
 	char bend[224] = "";
-	if (v->qs_ratio > 0)
+	if (v->bend_state != 0) /* tried: a long contact's (yield.c) or the TUI's */
 		bending_text(v, bend, sizeof bend);
 	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s%s", v->material, what,
 		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,

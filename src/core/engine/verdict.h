@@ -124,7 +124,11 @@ int anvil_solver_verdict_with(struct anvil_solver *s, const struct anvil_plan *p
 #define ANVIL_VERDICT_NHIST 400 /* = cmd_run.c RUN_NHIST: a run with --history or --png hands its row over */
 
 /* One line without a newline: "the steel layer yields: peak von Mises
- * 3.41 GPa at 0.48 a = 0.42 mm below the contact at t = 32.5 us, Y = 1 GPa". */
+ * 3.41 GPa at 0.48 a = 0.42 mm below the contact at t = 32.5 us, Y = 1 GPa";
+ * with the plate's bending clause ("; bending stress at the far face ...",
+ * or why it was not checked) whenever anvil_verdict_bending was tried on v.
+ * ANVIL_VERDICT_TEXT_MAX holds any line (a long contact's runs past 320). */
+#define ANVIL_VERDICT_TEXT_MAX 1024
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n);
 
 /* The impactor's line, without a newline: "the copper impactor yields

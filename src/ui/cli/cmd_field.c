@@ -158,7 +158,7 @@ static int yield_check(struct fctx *c, const struct fargs *a, struct anvil_field
 	 * depend on whether the check runs (tests/field.sh). */
 	struct anvil_problem pb;
 	struct anvil_verdict *v = &c->v;
-	char line[320];
+	char line[ANVIL_VERDICT_TEXT_MAX];
 	int st = anvil_problem_init(&pb, &c->sc, &err);
 	if (!st)
 		st = anvil_verdict_make(&pb, c->f, v, &err);
@@ -195,7 +195,7 @@ static void write_preamble(FILE *f, const struct fctx *c, const struct fargs *a,
 		return;
 	}
 	/* the peak as computed, then the one verdict (verdict.h) on both bodies */
-	char line[320];
+	char line[ANVIL_VERDICT_TEXT_MAX];
 	fprintf(f, "# yield check: peak von Mises %.4g MPa (+- %.2g) at r = %.4g mm, z = %.4g mm, t = %.4g us\n",
 		pk->vm * 1e-6, pk->vm_err * 1e-6, pk->r * 1e3, pk->z * 1e3, pk->t * 1e6);
 	anvil_verdict_text(&c->v, line, sizeof line);

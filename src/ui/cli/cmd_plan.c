@@ -149,7 +149,7 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
  * same contact, each on its own line. */
 static void print_verdict(FILE *f, const struct anvil_verdict *v)
 {
-	char line[320];
+	char line[ANVIL_VERDICT_TEXT_MAX];
 	anvil_verdict_text(v, line, sizeof line);
 	fprintf(f, "\nverdict\n  %s\n", line);
 	anvil_verdict_impactor_text(v, line, sizeof line);
@@ -262,7 +262,7 @@ static const char *const si_unit[] = {
 static void json_verdict(FILE *f, const char *body, const char *mat, const char *fate,
 			 double stress, double limit, const struct anvil_verdict *v)
 {
-	char line[320];
+	char line[ANVIL_VERDICT_TEXT_MAX];
 	if (body[0] == 'l')
 		anvil_verdict_text(v, line, sizeof line);
 	else

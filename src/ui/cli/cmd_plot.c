@@ -761,6 +761,34 @@ static int render(const struct plot_chart *c, struct plot_args *a)
 	return st ? EXIT_FAIL : EXIT_OK;
 }
 
+/* 1 when x is one of the n values of list (to 1e-9 relative; inf too). */
+static int in_list(double x, const double *list, int n)
+{
+	for (int i = 0; i < n; i++)
+		if (x == list[i] || (isfinite(list[i]) && fabs(x - list[i]) <= 1e-9 * fabs(list[i])))
+			return 1;
+	return 0;
+}
+
+/* The paper's figures: no SCENE, the paper's bodies (the default scene's
+ * impactor, layer, mass, r0), one of its velocities and, when -s fixes
+ * it, one of its thicknesses.  -s keys that move the scene off them make
+ * it the user's scene, which `anvil run` gives the physical contact
+ * (problem.c, contact = auto): so does the chart. */
+static int paper_figure(const struct anvil_scene *sc, const struct plot_args *a)
+{
+	struct anvil_scene d, def;
+	if (a->scene)
+		return 0;
+	anvil_scene_default(&def);
+	d = *sc;
+	d.thickness = def.thickness;
+	d.thickness_per_r0 = def.thickness_per_r0;
+	d.velocity = def.velocity;
+	return anvil_scene_is_paper_case(&d) && in_list(sc->velocity, paper_v, NELEM(paper_v)) &&
+	       (!a->fixed_h || in_list(anvil_scene_h(sc) / sc->radius, paper_h, NELEM(paper_h)));
+}
+
 static int plot_scene(struct plot_args *a)
 {
 	struct anvil_scene sc;
@@ -773,8 +801,9 @@ static int plot_scene(struct plot_args *a)
 	if (st)
 		return cli_exit_code(st);
 	/* The paper's figures with the paper's values beside them: its contact
-	 * model, unless the scene names one (models draws both).  A user's
-	 * SCENE drawn as histories is not the paper's figure: the contact of
+	 * model, unless the scene names one (models draws both).  Histories
+	 * of any other scene (a SCENE, or -s keys off the paper's cases: a
+	 * 2 kg rod on h = 0.1 r0) are not the paper's figure: the contact of
 	 * its 'anvil run' rows (auto: physical), so that the chart shows what
 	 * the table says (a ball on a thin plate peaked at 0.53 kN on the
 	 * chart, the paper's contact, and 0.31 kN in the table). */
@@ -782,8 +811,8 @@ static int plot_scene(struct plot_args *a)
 		      a->kind == PLOT_DEFLECTION || a->kind == PLOT_HISTORY;
 	if (sc.effects.contact == ANVIL_CONTACT_AUTO && a->kind != PLOT_MODELS &&
 	    a->kind != PLOT_RESTITUTION_VELOCITY) /* not the paper's: auto, physical */
-		sc.effects.contact = history && a->scene ? ANVIL_CONTACT_PHYSICAL
-							 : ANVIL_CONTACT_PAPER;
+		sc.effects.contact = history && !paper_figure(&sc, a) ? ANVIL_CONTACT_PHYSICAL
+								       : ANVIL_CONTACT_PAPER;
 	/* Fail on a missing gnuplot before minutes of layer runs. */
 	if (a->out && plot_gnuplot_check(&err)) {
 		cli_error("%s", err.msg);

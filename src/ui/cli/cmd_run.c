@@ -292,7 +292,7 @@ static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 {
 	struct anvil_verdict v;
 	struct anvil_err err = {0};
-	char line[320];
+	char line[ANVIL_VERDICT_TEXT_MAX];
 	if (o->quiet)
 		return;
 	/* the layer row as the plan runs it, already computed (a long

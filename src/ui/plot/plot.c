@@ -522,6 +522,42 @@ static int w_unit_mm(const struct plot_run *runs, int n)
 	return top > 1e-3;
 }
 
+int plot_force_log(const double *peak, int n, double range[2])
+{
+	double lo = INFINITY, hi = 0;
+	for (int i = 0; i < n; i++)
+		if (peak[i] > 0 && isfinite(peak[i])) {
+			lo = fmin(lo, peak[i]);
+			hi = fmax(hi, peak[i]);
+		}
+	if (!(hi > PLOT_LOG_FORCE_RATIO * lo))
+		return 0;
+	range[0] = 0.01 * lo;
+	range[1] = 1.5 * hi;
+	return 1;
+}
+
+/* The chart's P axis: plot_force_log over the peaks of the runs drawn, in
+ * the axis' unit. */
+static void force_axis(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	double peak[PLOT_MAX_SERIES], range[2];
+	int k = 0;
+	for (int i = 0; i < n && k < PLOT_MAX_SERIES; i++) {
+		if (!ok_run(&runs[i]) || runs[i].r->hist.n == 0)
+			continue;
+		peak[k] = 0;
+		for (size_t j = 0; j < runs[i].r->hist.n; j++)
+			peak[k] = fmax(peak[k], runs[i].r->hist.P[j]);
+		k++;
+	}
+	if (plot_force_log(peak, k, range)) {
+		double ys = c->force_in_n ? 1.0 : 1e-3;
+		c->force_log[0] = range[0] * ys;
+		c->force_log[1] = range[1] * ys;
+	}
+}
+
 /* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
 static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel, double ts)
 {
@@ -554,6 +590,8 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 	double ts = history_time_unit(c, runs, n);
 	c->force_in_n = force_unit_n(runs, n);
 	c->w_in_mm = w_unit_mm(runs, n);
+	if (p0 == 0)
+		force_axis(c, runs, n);
 	/* The half-space first: its band goes under the layers. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < n && !st; i++) {

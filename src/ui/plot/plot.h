@@ -169,6 +169,8 @@ struct plot_chart {
 	const char *tlabel;            /* a history's time axis ("t (ms)"); NULL: the kind's */
 	int force_in_n;                /* a history's P in N (peaks below 1 kN), else kN */
 	int w_in_mm;                   /* a history's w in mm (beyond 1 mm), else um */
+	double force_log[2];           /* a history's P axis logarithmic over [lo, hi]
+					  in its unit (plot_force_log); 0: linear */
 	int nseries, nkeys, nnotes;
 	struct plot_series s[PLOT_MAX_SERIES];
 	struct plot_key keys[PLOT_MAX_KEYS];
@@ -249,10 +251,21 @@ int plot_paper_load(struct plot_paper *p, const char *path, struct anvil_err *er
 int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
 		      const struct plot_curve rf[2]);
 
+/* The force axis of histories whose peaks (peak[i], N; those not > 0
+ * ignored) differ more than PLOT_LOG_FORCE_RATIO times: a linear axis
+ * lays the smaller on its zero line (a thin plate's 0.08 kN beside the
+ * rigid anvil's 105 kN), so it is logarithmic over range[0] .. range[1]
+ * N, a hundredth of the smallest peak (P ~ t^(3/2) leaves the axis at a
+ * twentieth of the peak's time) to 1.5 times the largest.  Returns 1 then,
+ * else 0 (range untouched).  The charts' and the TUI's rule. */
+#define PLOT_LOG_FORCE_RATIO 20.0
+int plot_force_log(const double *peak, int n, double range[2]);
+
 /* P(t), v(t) or w(t) (kind PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION) of
  * every run with a history, or all three stacked (PLOT_HISTORY).  Colour
  * by thickness, style by model (see the top); Hertz's w = 0 is left out
- * and said in the footnote. */
+ * and said in the footnote; P on a log axis (force_log, "log scale" in
+ * its label) by plot_force_log. */
 int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 		       const struct plot_run *runs, int n);
 

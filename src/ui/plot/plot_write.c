@@ -260,14 +260,28 @@ static void write_plot(FILE *f, const struct plot_chart *c, int panel, int keys)
 	fputc('\n', f);
 }
 
+/* A history's log P axis (plot_force_log), after the panel's own setup;
+ * powers of ten as 10^n: "0.001" pushed the axis label off the image. */
+static void write_force_log(FILE *f, const struct plot_chart *c)
+{
+	if (c->force_log[1] > 0)
+		fprintf(f, "set logscale y\nset yrange [%.6g:%.6g]\nset format y '10^{%%L}'\n",
+			c->force_log[0], c->force_log[1]);
+}
+
 static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_kind_info *k)
 {
+	char ylabel[PLOT_LABEL_MAX];
 	fputs("set xlabel ", f);
 	plot_put_quoted(f, c->tlabel ? c->tlabel : k->xlabel);
 	fputs("\nset ylabel ", f);
-	plot_put_quoted(f, c->kind == PLOT_FORCE && c->force_in_n ? "contact force P (N)"
-			   : c->kind == PLOT_DEFLECTION && c->w_in_mm ? "deflection w (mm), + into the layer"
-								      : k->ylabel);
+	snprintf(ylabel, sizeof ylabel, "%s", k->ylabel);
+	if (c->kind == PLOT_FORCE)
+		snprintf(ylabel, sizeof ylabel, "contact force P (%s)%s", c->force_in_n ? "N" : "kN",
+			 c->force_log[1] > 0 ? ", log scale" : "");
+	else if (c->kind == PLOT_DEFLECTION && c->w_in_mm)
+		snprintf(ylabel, sizeof ylabel, "deflection w (mm), + into the layer");
+	plot_put_quoted(f, ylabel);
 	fputc('\n', f);
 }
 
@@ -275,8 +289,9 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 static void write_history(FILE *f, const struct plot_chart *c, double top, double bottom)
 {
 	static const enum plot_kind panels[3] = {PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION};
-	const char *const ylabels[3] = {c->force_in_n ? "P (N)" : "P (kN)", "v (m/s)",
-					c->w_in_mm ? "w (mm)" : "w (µm)"};
+	const char *const ylabels[3] = {c->force_log[1] > 0 ? (c->force_in_n ? "P (N), log" : "P (kN), log")
+							    : c->force_in_n ? "P (N)" : "P (kN)",
+					"v (m/s)", c->w_in_mm ? "w (mm)" : "w (µm)"};
 	const double gap = 0.02, h = (top - bottom - 2 * gap) / 3;
 	fputs("set multiplot\n", f);
 	for (int p = 0; p < 3; p++) {
@@ -286,6 +301,8 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 		/* The titles are drawn with the first panel only. */
 		fprintf(f, "%sset ylabel '%s'\n%s%s", p ? "unset label\n" : "", ylabels[p],
 			plot_kind_info(panels[p])->setup, c->setup);
+		if (p == 0)
+			write_force_log(f, c);
 		if (p < 2)
 			fputs("set format x ''\nunset xlabel\nset key off\n", f);
 		else
@@ -293,6 +310,8 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 				c->tlabel ? c->tlabel : "t (µs)");
 		write_notes(f, c, p);
 		write_plot(f, c, p, p == 2);
+		if (p == 0 && c->force_log[1] > 0)
+			fputs("unset logscale y\nset format y '%g'\n", f);
 		fputs("unset offsets\nunset xzeroaxis\nset autoscale y\n", f);
 	}
 	fputs("unset multiplot\n", f);
@@ -346,6 +365,8 @@ int plot_write(FILE *f, const struct plot_chart *c, const struct plot_opts *o)
 		write_axes(f, c, k);
 		fputs(k->setup, f);
 		fputs(c->setup, f);
+		if (c->kind == PLOT_FORCE)
+			write_force_log(f, c);
 		write_notes(f, c, 0);
 		write_plot(f, c, -1, 1);
 	}

@@ -240,7 +240,7 @@ struct notes {
 
 static void notes_collect(const struct tui_model *m, struct notes *nt)
 {
-	char layer[320], imp[320];
+	char layer[ANVIL_VERDICT_TEXT_MAX], imp[ANVIL_VERDICT_TEXT_MAX];
 	int fails = tui_model_verdict(m, layer, imp, sizeof layer);
 	nt->n = 0;
 	if (fails >= 0) {

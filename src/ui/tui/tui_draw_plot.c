@@ -33,6 +33,7 @@ struct area {
 	int top, rows, cols;
 	int role[TUI_CANVAS_SERIES];
 	int xlog;            /* x given to the canvas as log10 */
+	int ylog;            /* y too (a force axis, plot_force_log) */
 };
 
 static const double *quantity_data(const struct anvil_history *h,
@@ -115,17 +116,29 @@ static int area_init(struct area *a, const struct tui_view *v, int top, int bott
 							       : TUI_CANVAS_ASCII);
 }
 
+/* log10 of x > 0, else NaN (a break in the line) */
+static double log_or_nan(double x)
+{
+	return x > 0 ? log10(x) : NAN;
+}
+
 static void area_line(struct area *a, int series, int role, const double *x,
 		      const double *y, size_t n, unsigned dash)
 {
-	double sx[RF_CURVE_N > ODE_N ? RF_CURVE_N : ODE_N], *lx = sx, *own = NULL;
+	enum { NS = RF_CURVE_N > ODE_N ? RF_CURVE_N : ODE_N };
+	double sx[NS], sy[NS], *lx = sx, *ly = sy, *own = NULL;
 	a->role[series % TUI_CANVAS_SERIES] = role;
-	if (a->xlog) { /* a history's samples on the heap; the charts' on the stack */
-		if (n > sizeof sx / sizeof sx[0] && !(lx = own = malloc(n * sizeof *lx)))
+	if (a->xlog || a->ylog) { /* a history's samples on the heap; the charts' on the stack */
+		if (n > NS && !(own = malloc(2 * n * sizeof *own)))
 			return; /* out of memory: the curve is left out */
-		for (size_t i = 0; i < n; i++)
-			lx[i] = x[i] > 0 ? log10(x[i]) : NAN;
+		if (own)
+			lx = own, ly = own + n;
+		for (size_t i = 0; i < n; i++) {
+			lx[i] = a->xlog ? log_or_nan(x[i]) : x[i];
+			ly[i] = a->ylog ? log_or_nan(y[i]) : y[i];
+		}
 		x = lx;
+		y = ly;
 	}
 	tui_canvas_polyline_dash(&a->c, series, x, y, n, dash);
 	free(own);
@@ -146,7 +159,9 @@ static void area_draw(const struct area *a)
 static void area_mark(const struct area *a, double x, double y, attr_t at, const char *g)
 {
 	if (a->xlog)
-		x = x > 0 ? log10(x) : NAN;
+		x = log_or_nan(x);
+	if (a->ylog)
+		y = log_or_nan(y);
 	if (!isfinite(x) || !isfinite(y))
 		return;
 	int col = tui_canvas_xdot(&a->c, x) / a->c.xdots;
@@ -162,10 +177,13 @@ static void area_ticks(const struct area *a, const struct tui_view *v, double ys
 		       double xs, const char *xname)
 {
 	double t[TICKS_MAX];
-	int n = tui_ticks(a->c.y0 * ys, a->c.y1 * ys, 0, a->rows / 3 + 2 < TICKS_MAX
+	double ylo = a->ylog ? pow(10, a->c.y0) * ys : a->c.y0 * ys;
+	double yhi = a->ylog ? pow(10, a->c.y1) * ys : a->c.y1 * ys;
+	int n = tui_ticks(ylo, yhi, a->ylog, a->rows / 3 + 2 < TICKS_MAX
 			  ? a->rows / 3 + 2 : TICKS_MAX, t);
 	for (int i = 0; i < n; i++) {
-		int row = tui_canvas_ydot(&a->c, t[i] / ys) / a->c.ydots;
+		double y = a->ylog ? log10(t[i] / ys) : t[i] / ys;
+		int row = tui_canvas_ydot(&a->c, y) / a->c.ydots;
 		tui_putf(a->top + row, 0, PLOT_LEFT - 2, tui_attr(R_DIM), "%7.4g", t[i]);
 		tui_put(a->top + row, PLOT_LEFT - 1, 1, tui_attr(R_DIM), v->utf8 ? "\xe2\x94\xa4" : "+");
 	}
@@ -243,13 +261,35 @@ static double log_time(double r[5], int *lg, const char **name, const struct tui
 	return 1.0;
 }
 
-static void history_legend(const struct tui_model *m, const struct tui_view *v, int y)
+/* The force axis as the charts have it (plot_force_log): log when the
+ * rows' peaks differ more than 20 times (a thin plate's 0.08 kN beside
+ * the rigid anvil's 105 kN lay on the zero line); range in N. */
+static int log_force(const struct tui_model *m, double range[2])
+{
+	double peak[ANVIL_MODEL_COUNT];
+	int n = 0;
+	if (m->quantity != TUI_Q_FORCE)
+		return 0;
+	for (int k = 0; k < ANVIL_MODEL_COUNT; ++k) {
+		const struct tui_row *row = &m->rows[k];
+		if (!plottable(row))
+			continue;
+		peak[n] = 0;
+		for (size_t i = 0; i < row->res.hist.n; ++i)
+			peak[n] = fmax(peak[n], row->res.hist.P[i]);
+		n++;
+	}
+	return plot_force_log(peak, n, range);
+}
+
+static void history_legend(const struct tui_model *m, const struct tui_view *v, int y, int ylog)
 {
 	char head[64];
 	double h = scene_h_r0(m);
-	snprintf(head, sizeof head, "%s [%s] vs t", tui_quantity_name(m->quantity),
+	snprintf(head, sizeof head, "%s [%s%s] vs t", tui_quantity_name(m->quantity),
 		 v->utf8 && m->quantity == TUI_Q_DEFLECTION ? "\xc2\xb5m"
-							    : tui_quantity_unit(m->quantity));
+							    : tui_quantity_unit(m->quantity),
+		 ylog ? ", log" : "");
 	tui_put(y, 1, COLS - 2, tui_attr(R_HEAD), head);
 	int x = 1 + tui_ncols(head) + 2;
 	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i) {
@@ -265,8 +305,9 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 			 int top, int bottom)
 {
 	struct area a;
-	double r[5], h = scene_h_r0(m);
-	history_legend(m, v, top);
+	double r[5], h = scene_h_r0(m), fr[2];
+	int ylog = log_force(m, fr);
+	history_legend(m, v, top, ylog);
 	if (!plot_range(m, r)) {
 		tui_putf((top + bottom) / 2, PLOT_LEFT, COLS - PLOT_LEFT - 1, tui_attr(R_DIM), "%s",
 		     tui_model_busy(m) ? "computing" : "no histories to plot");
@@ -276,6 +317,8 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 		return;
 	const char *tname;
 	double ts = log_time(r, &a.xlog, &tname, v);
+	if ((a.ylog = ylog))
+		r[2] = log10(fr[0]), r[3] = log10(fr[1]);
 	if (a.xlog)
 		tui_canvas_range(&a.c, log10(r[0]), log10(r[1]), r[2], r[3]);
 	else

@@ -18,8 +18,8 @@ const char *const tui_help_lines[] = {
 	"anvil tui: the impact explorer",
 	"",
 	"  Up/Down, k/j          select a parameter",
-	"  Left/Right, h/l       change it by a fine step",
-	"  Shift-Left/Right, H/L change it by a coarse step",
+	"  Left/Right, h/l       change it by a fine step (4 -> 4.1)",
+	"  Shift-Left/Right, H/L change it by a coarse step (4 -> 5)",
 	"  Enter                 type a value with its unit (e.g. 8 mm, 2 r0, inf);",
 	"                        a number needs its unit, as in files; Esc cancels",
 	"  Space                 switch a model on or off (on a model row)",
@@ -145,6 +145,34 @@ static int has_overrides(const struct anvil_body *b)
 	return !isnan(b->E) || !isnan(b->nu) || !isnan(b->rho) || !isnan(b->yield);
 }
 
+/* x with p significant digits, positional, trailing zeros dropped. */
+static void number_digits(double x, int p, char *buf, size_t n)
+{
+	int dec = p - 1 - (int)floor(log10(fabs(x)));
+	snprintf(buf, n, "%.*f", dec > 0 ? dec : 0, x);
+	if (dec > 0 && strchr(buf, '.')) {
+		size_t k = strlen(buf);
+		while (k && buf[k - 1] == '0')
+			buf[--k] = '\0';
+		if (k && buf[k - 1] == '.')
+			buf[--k] = '\0';
+	}
+}
+
+void tui_number(double x, char *buf, size_t n)
+{
+	if (!isfinite(x) || x == 0 || fabs(x) < 1e-4 || fabs(x) >= 1e9) {
+		snprintf(buf, n, "%.*g", TUI_DIGITS, x);
+		return;
+	}
+	for (int p = 1; p <= TUI_DIGITS_EXACT; ++p) {
+		number_digits(x, p, buf, n);
+		if (fabs(strtod(buf, NULL) - x) <= 1e-12 * fabs(x))
+			return;
+	}
+	number_digits(x, TUI_DIGITS, buf, n);
+}
+
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n)
 {
@@ -152,10 +180,12 @@ void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 	int mod = field_model(f);
 	if (is_numeric(f)) {
 		double v = field_number(sc, f);
+		char num[48];
+		tui_number(v, num, sizeof num);
 		if (isinf(v))
 			snprintf(buf, n, "inf");
 		else
-			snprintf(buf, n, "%.6g %s", v, numerics[f].unit);
+			snprintf(buf, n, "%s %s", num, numerics[f].unit);
 	} else if (f == TUI_F_IMPACTOR || f == TUI_F_LAYER) {
 		const struct anvil_body *b = f == TUI_F_IMPACTOR ? &sc->impactor : &sc->layer;
 		/* '*': the named material's numbers are not the ones used */
@@ -180,21 +210,41 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
 	}
 	if (!m->have_plan || m->plan_gen != m->gen)
 		return -1;
-	/* The plan's is quasi-static Hertz at the rigid anvil's force; once the
-	 * layer (else half-space) row is in, quasi-static Hertz at its own
-	 * computed peak force: on a thin plate that force is a fraction of
-	 * the rigid anvil's (the CLI's run searches the field instead). */
-	struct anvil_verdict at;
-	const struct anvil_verdict *v = &m->plan.verdict;
-	const struct tui_row *r = isfinite(m->plan.pb.p.h) ? &m->rows[ANVIL_MODEL_LAYER]
-							   : &m->rows[ANVIL_MODEL_HALFSPACE];
-	if (r->state == TUI_ROW_DONE && r->have &&
-	    anvil_verdict_at(&m->plan.pb, r->res.Pmax.val, r->res.tmax.val, &at) == ANVIL_OK)
-		v = &at;
+	const struct anvil_verdict *v = m->have_verdict && m->verdict_gen == m->gen
+						? &m->verdict : &m->plan.verdict;
 	anvil_verdict_text(v, layer, n);
 	if (v->imp.fate != ANVIL_HERTZ_ELASTIC)
 		anvil_verdict_impactor_text(v, imp, n);
 	return anvil_verdict_fails(v);
+}
+
+/* The verdict once the plan and the layer (else half-space) row of the
+ * current generation are both in: quasi-static Hertz at the row's own
+ * computed peak force (on a thin plate a fraction of the rigid anvil's
+ * the plan judges), and on a finite layer the plate's bending stress
+ * under the row's history, as `anvil run` judges a long contact
+ * (yield.c): the fate takes the larger stress.  A short contact's `anvil
+ * run` searches the transform field instead (seconds: not for a knob). */
+static void verdict_update(struct tui_model *m)
+{
+	const struct anvil_problem *pb = &m->plan.pb;
+	int finite = isfinite(pb->p.h);
+	const struct tui_row *r = &m->rows[finite ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE];
+	if (!m->have_plan || m->plan_gen != m->gen || r->state != TUI_ROW_DONE || !r->have ||
+	    (m->have_verdict && m->verdict_gen == m->gen))
+		return;
+	struct anvil_verdict v;
+	if (anvil_verdict_at(pb, r->res.Pmax.val, r->res.tmax.val, &v) != ANVIL_OK)
+		return; /* the plan's verdict stays */
+	if (finite) {
+		double ratio = m->plan.row[ANVIL_MODEL_LAYER].job.ts / m->plan.fig[ANVIL_FIG_T_REFLECT];
+		if (ratio > ANVIL_VERDICT_QS_RATIO)
+			v.qs_ratio = ratio;
+		anvil_verdict_bending(pb, &r->res.hist, &v);
+	}
+	m->verdict = v;
+	m->verdict_gen = m->gen;
+	m->have_verdict = 1;
 }
 
 /* ---- messages ---- */
@@ -344,6 +394,7 @@ int tui_model_deliver(struct tui_model *m, unsigned gen, enum anvil_model model,
 	memset(&r->hist, 0, sizeof r->hist);
 	row_fill(row, status, msg);
 	m->pending &= ~bit;
+	verdict_update(m);
 	m->run_seconds += row->res.seconds;
 	m->run_computed++;
 	if (cacheable(status)) {
@@ -361,6 +412,7 @@ void tui_model_deliver_plan(struct tui_model *m, unsigned gen, const struct anvi
 	m->plan = *pl;
 	m->plan_gen = gen;
 	m->have_plan = 1;
+	verdict_update(m); /* its row may have come from the cache before it */
 }
 
 void tui_model_progress(struct tui_model *m, unsigned gen, double fraction,
@@ -559,6 +611,7 @@ static void edit_begin(struct tui_model *m, const char *key, const char *unit,
 	snprintf(m->edit_key, sizeof m->edit_key, "%s", key);
 	snprintf(m->edit_unit, sizeof m->edit_unit, "%s", unit ? unit : "");
 	snprintf(m->edit, sizeof m->edit, "%s", text);
+	snprintf(m->edit_orig, sizeof m->edit_orig, "%s", text);
 	m->msg[0] = '\0';
 }
 
@@ -613,6 +666,12 @@ static enum tui_action edit_commit(struct tui_model *m)
 	enum tui_action a;
 	snprintf(v, sizeof v, "%s", m->edit);
 	trim(v);
+	if (m->edit_unit[0] && strcmp(m->edit, m->edit_orig) == 0) {
+		/* a number opened and left as shown (to TUI_DIGITS when derived,
+		 * 3.2 mm / 19 mm as 0.1684 r0): the exact value stays */
+		m->editing = 0;
+		return TUI_ACT_REDRAW;
+	}
 	if (!m->edit_key[0])
 		a = commit_any(m, v);
 	else if (strcmp(m->edit_key, "impactor.material") == 0 ||
@@ -692,10 +751,11 @@ static enum tui_action material_key(struct tui_model *m)
  * opens on the values in use (the drop height V0^2 / 2g of the velocity). */
 static enum tui_action geometry_edit(struct tui_model *m, int drop)
 {
-	char text[64];
+	char text[64], num[48];
 	double g = ANVIL_G_STANDARD;
 	double x = drop ? 0.5 * m->sc.velocity * m->sc.velocity / g : 2 * m->sc.radius;
-	snprintf(text, sizeof text, "%.6g mm", x * 1e3);
+	tui_number(x * 1e3, num, sizeof num);
+	snprintf(text, sizeof text, "%s mm", num);
 	edit_begin(m, drop ? "impact.drop_height" : "impactor.diameter", "mm", text);
 	return TUI_ACT_REDRAW;
 }

@@ -23,6 +23,7 @@
 #include "result.h"
 #include "scene.h"
 #include "status.h"
+#include "verdict.h"
 
 /* Keys beyond ASCII.  Plain characters ('k', 'H', ':' ...) are themselves. */
 enum tui_key {
@@ -127,6 +128,7 @@ struct tui_model {
 	char edit_key[64];          /* scene key being edited; "" for ':' */
 	char edit_unit[8];          /* unit added to a bare number */
 	char edit[TUI_EDIT_MAX];
+	char edit_orig[TUI_EDIT_MAX]; /* the text the field opened on */
 	char msg[ANVIL_ERR_MSG];    /* status-line message, "" for none */
 	int msg_error;
 	unsigned gen;               /* current request */
@@ -141,6 +143,12 @@ struct tui_model {
 	int have_plan;
 	unsigned plan_gen;
 	struct anvil_plan plan;
+	/* The verdict at the layer (else half-space) row of generation
+	 * verdict_gen, made once that row and the plan are both in (the
+	 * plate's bending estimate costs tens of ms: never per redraw). */
+	int have_verdict;
+	unsigned verdict_gen;
+	struct anvil_verdict verdict;
 	unsigned long stamp;
 	struct tui_cache_entry cache[TUI_CACHE_SIZE];
 };
@@ -194,17 +202,33 @@ const char *tui_model_save_path(const struct tui_model *m);
 /* After a successful save to path. */
 void tui_model_saved(struct tui_model *m, const char *path);
 
-/* The one verdict (verdict.h) of the current generation's plan (the
- * quasi-static Hertz contact, as `anvil plan` prints it): the layer's line
- * into layer, the impactor's into imp when it yields or cracks ("" when it
- * does not).  Returns -1 with no plan yet for this generation (both ""), 1
- * when a body yields or cracks, 0 when not (or not judged). */
+/* The one verdict (verdict.h) of the current generation: the plan's
+ * (quasi-static Hertz at the rigid anvil's force, as `anvil plan` prints
+ * it) until the layer (else half-space) row is in, then quasi-static Hertz
+ * at that row's computed P_max and, on a finite layer, the plate's bending
+ * stress under its history (anvil_verdict_bending; qs_ratio set where the
+ * plan's contact is long, as `anvil run` gives it: the same words).  The
+ * layer's line into layer, the impactor's into imp when it yields or
+ * cracks ("" when it does not); n = ANVIL_VERDICT_TEXT_MAX holds any line.
+ * Returns -1 with no plan yet for this generation (both ""), 1 when a body
+ * yields or cracks, 0 when not (or not judged).  Reads only: the verdict
+ * was made when the row or the plan arrived. */
 int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n);
 
 /* The label and the value (with its unit) of a panel row. */
 const char *tui_field_label(enum tui_field f);
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n);
+
+/* x as the panel and the text field show it, positional (no exponent
+ * for 1e-4 <= |x| < 1e9): exactly when x is a number of at most
+ * TUI_DIGITS_EXACT significant digits (what a step or the user typed,
+ * to 1e-12 relative: "4.1255"), else TUI_DIGITS significant digits
+ * (a value derived from others: 3.2 mm / 19 mm is "0.1684", not
+ * "0.168421"); trailing zeros dropped. */
+#define TUI_DIGITS 4
+#define TUI_DIGITS_EXACT 6
+void tui_number(double x, char *buf, size_t n);
 
 /* The next "round" value after x > 0 in direction dir (+1/-1): fine steps
  * are a tenth of the leading decimal digit, coarse steps one leading digit
