@@ -618,11 +618,13 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 	double wd0 = 3.0 / (2.0 * M_PI * p->r0 * p->r0) / (p->rho * p->c1);
 	s->v[0] = p->V0;
 	s->n = 1;
+	anvil_fastconv_reset(c->fc);
 	for (size_t n = 1; n < s->cap; n++) {
 		double W = n == 1 ? p->V0 * dt : s->W[n - 1] + s->v[n - 1] * dt + 0.5 * a_prev * dt * dt;
-		double w = n >= 2 ? 0.5 * dt * wd0 * s->P[n - 1] : 0.0;
-		for (size_t m = 1; m + 2 <= n; m++) /* w_delta(t_{n-1} - t_m) = g'/dt */
-			w += dt * s->P[m] * c->g[n - 1 - m] / dt;
+		/* w_delta(t_{n-1} - t_m) = g'/dt over m < n - 1 (P_0 = 0), the
+		 * pushes so far: the fast convolution, O(N log^2 N) (a direct
+		 * sum took minutes on a 2.4e5-step contact, h = 0.3 r0) */
+		double w = n >= 2 ? 0.5 * dt * wd0 * s->P[n - 1] + anvil_fastconv_next(c->fc) : 0.0;
 		double v = n == 1 ? p->V0 : s->v[n - 1] + a_prev * dt;
 		if (W - w <= 0) {
 			finish(s, p, W - w, impulse);
@@ -638,6 +640,8 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 		impulse += 0.5 * dt * (s->P[n - 1] + s->P[n]);
 		a_prev = -s->P[n] / p->m1;
 		s->n = n + 1;
+		if (anvil_fastconv_push(c->fc, s->P[n - 1]) == -2)
+			return ANVIL_ENOMEM;
 	}
 	return ANVIL_ETOL;
 }
