@@ -94,3 +94,8 @@ double anvil_kband(double omega, double wabs, double nu, double hh, double cr)
 	double kflex = isfinite(hh) ? pow(6.0 * (1.0 - nu) * wabs * wabs / (hh * hh), 0.25) : 0.0;
 	return 1.6 * fmax(omega / cr, kflex) + 3.0;
 }
+
+double anvil_kband_piece(double hh, double kband)
+{
+	return fmin(2.0 / hh, fmin(4.0, fmax(1.0, kband / 32.0)));
+}

@@ -63,8 +63,12 @@ double complex anvil_kernel_tdiff(double complex al1, double complex al2, double
  * planner's cost model (plan.c). */
 double anvil_kband(double omega, double wabs, double nu, double hh, double cr);
 
-/* The width of the layer correction's starting pieces beyond the band
- * (green_spectrum.c; the planner prices the same, plan_work.c). */
+/* The layer correction's starting pieces (green_spectrum.c; the planner
+ * prices the same, plan_work.c): in the band [0, kband], about the Lamb
+ * modes' spacing pi/h, at most 1 wide, or kband/32 up to 4 wide in a wide
+ * band (a thin plate's, which holds two poles); beyond it,
+ * ANVIL_KTAIL_PIECE wide. */
 #define ANVIL_KTAIL_PIECE 16.0
+double anvil_kband_piece(double hh, double kband);
 
 #endif
