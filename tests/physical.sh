@@ -57,6 +57,16 @@ assert '  naming file, line and key' grep -q 'bad.scene:2: effects.contact' "$tm
 # r0/4, fast convolution against the direct sum) and test_thin.c (merged
 # sub-resolution separations, the contact budget, thin-layer refusals).
 
+# A contact end pending across long mode's freeze of a full segment: the
+# end's node lies in the frozen segment (impact.c, contact_end).  This
+# scene crashed (its index wrapped round) once the plate's tail was the
+# point load's own (plate.c).
+check 'h = 0.05 r0, 100 kg at 0.1 m/s: long mode, an end pending across a freeze' \
+	"$ANVIL" run -q -m layer -s layer.thickness=0.05r0 -s impactor.mass=100kg \
+	-s impact.velocity=0.1m/s -f tsv
+assert '  the layer row answers, R_f in [0, 1]' \
+	awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } $1 == "layer" { r = $c["Rf"]; n++ } END { exit !(n == 1 && r >= 0 && r <= 1) }' "$tmp/out"
+
 # ---- anvil plot models (the script: no gnuplot needed) ----
 check 'plot models --script' "$ANVIL" plot models --script "$tmp/m.gp"
 assert '  two panels side by side' grep -q '^# panel 2: R_f against h/r0$' "$tmp/m.gp"

@@ -238,6 +238,22 @@ static int contact_end(const struct ctx *c, struct pass *s, size_t k, double a_n
 	struct pass v = impact_view(c, s); /* the segment up to node k (arrays shared) */
 	double toff = NAN;
 	int st = ANVIL_OK;
+	if (k < c->seg0 && k >= 1) {
+		/* The end is pending across a segment's freeze (long mode freezes
+		 * a full segment whatever is pending: impact_grow_due): its nodes
+		 * k - 1, k and k + 1 are the pass's, on their own times; the
+		 * parabola through alpha_H there (finish's).  Before, k + 1 -
+		 * seg0 wrapped round and the exact end read far outside the
+		 * arrays (h = 0.05 r0, 100 kg at 0.1 m/s: a crash). */
+		const double *P = s->P, *t = s->t;
+		double a0 = c->p->k0 * pow(P[k - 1], 2.0 / 3.0), a1 = c->p->k0 * pow(P[k], 2.0 / 3.0);
+		toff = zero_crossing(t[k - 1], a0, t[k], a1, t[k + 1], a_n);
+		*ioff = impulse + 0.4 * P[k] * (toff - t[k]);
+		if (s->ncont <= ANVIL_MAX_CONTACTS)
+			s->off[s->ncont - 1] = toff;
+		s->ts = toff;
+		return ANVIL_OK;
+	}
 	v.n = k + 1 - c->seg0;
 	if (v.n >= 3) {
 		st = impact_finish_exact(c, &v, impulse, &toff, ioff);
