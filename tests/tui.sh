@@ -162,6 +162,7 @@ start thin -s solver.models=hertz,zener -s layer.thickness=0.1r0 -s impactor.mas
 assert 'thin plate: peaks 1300 times apart put P on a log axis' wait_for thin 'P\(t\) \[kN, log\] vs t'
 assert '...its ticks the decades down to a hundredth of the smaller peak' \
 	wait_for thin '^ +0\.001 .*$'
+assert 'thin plate: the 2 kg mass shown in kg, not 2000 g' wait_for thin 'mass +2 kg'
 T send-keys -t thin Q
 ask_status thin
 assert 'thin plate: Q quits with status 0' wait_for thin '^anvil-exit=0$'
