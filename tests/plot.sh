@@ -130,7 +130,15 @@ check "a drop weight's deflection in mm (Zener's plate: 204 mm under 2 kg on r0/
 assert "...w in mm" grep -q "^set ylabel 'deflection w (mm), + into the layer'" "$tmp/out"
 assert "...its values in mm: over 1, under 1000" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $2 > m { m = $2 } END { exit !(m > 1 && m < 1000) }' "$tmp/out"
 check "a short contact's deflection stays in um" "$ANVIL" plot deflection -s solver.models=zener --script -
-assert "...w in um" grep -q "^set ylabel 'deflection w (µm), + into the layer'" "$tmp/out"
+# Zener's 105 um at h = r0 beside 1.5 um at 10 r0, none below 0: log w, not |w|
+assert "...w in um, on a log axis (peaks 70 times apart)" \
+	grep -q "^set ylabel 'deflection w (µm), log scale'" "$tmp/out"
+check "the brief's drop weight: the plate's 640 mm beside the half-space's +-0.47 um" \
+	"$ANVIL" plot deflection -s solver.models=zener,halfspace -s layer.thickness=0.1r0 \
+	-s impactor.mass=2kg -s impact.velocity=5m/s --script -
+assert "...|w| on a log axis in mm (the physical half-space's w changes sign)" \
+	grep -q "^set ylabel 'deflection |w| (mm), log scale'" "$tmp/out"
+assert "...no value drawn below 0" awk '/^\$d/ { d = 1; next } /^EOD/ { d = 0 } d && $2 < 0 { exit 1 }' "$tmp/out"
 check "a short contact's axis stays linear" \
 	"$ANVIL" plot history -s solver.models=hertz,halfspace --script -
 assert "no log axis" sh -c "! grep -q '^set logscale x' '$tmp/out'"

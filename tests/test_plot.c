@@ -223,6 +223,96 @@ static void test_force_log(void)
 		anvil_result_free(&r[i]);
 }
 
+/* A script as text (plot_write into memory); the caller frees it. */
+static char *script_text(const struct plot_chart *c, const struct plot_opts *o)
+{
+	char *got = NULL;
+	size_t len = 0;
+	FILE *m = open_memstream(&got, &len);
+	int st = plot_write(m, c, o);
+	fclose(m);
+	if (st) {
+		free(got);
+		return NULL;
+	}
+	return got;
+}
+
+/* A drop weight's plate w beside the half-space's: the deflection axis
+ * takes the force's 20x rule (plot_deflection_log), |w| where a curve
+ * changes sign (the physical contact's half-space), w where none does,
+ * linear and not cut at 0 when the peaks are near. */
+static void test_deflection_log(void)
+{
+	double range[2] = {-1, -1};
+	int abs = -1;
+	double drop[2] = {0.64, 0.47e-6}, dlow[2] = {0, -0.47e-6};
+	double paper[2] = {105e-6, 8.8e-6}, plow[2] = {0, 0};
+	double zen[2] = {105e-6, 1.5e-6};
+	ok(plot_deflection_log(paper, plow, 2, range, &abs) == 0 && range[0] == -1 && abs == -1,
+	   "w peaks 12x apart: linear");
+	int lg = plot_deflection_log(zen, plow, 2, range, &abs);
+	ok(lg == 1 && abs == 0 &&
+		   range[0] == 0.01 * 1.5e-6 && range[1] == 1.5 * 105e-6,
+	   "70x apart, every w >= 0: log w over [%g, %g] m", range[0], range[1]);
+	ok(plot_deflection_log(drop, dlow, 2, range, &abs) == 1 && abs == 1 &&
+		   range[0] == 0.01 * 0.47e-6,
+	   "640 mm beside +-0.47 um: log, |w| (a curve changes sign)");
+	struct anvil_result r[3];
+	struct plot_chart c;
+	struct plot_opts o;
+	fake_result(&r[0], ANVIL_MODEL_LAYER, 1.0);
+	fake_result(&r[1], ANVIL_MODEL_HERTZ, 1.0);
+	fake_result(&r[2], ANVIL_MODEL_HALFSPACE, 1.0);
+	static const double hs_w[NPTS] = {0, -0.5e-6, 0, 0.5e-6, 0.25e-6};
+	for (int i = 0; i < NPTS; i++) { /* the plate 4 mm; the half-space +-0.5 um */
+		r[0].hist.w[i] *= 1000;
+		r[2].hist.w[i] = hs_w[i];
+	}
+	struct plot_run runs[] = {
+		{&r[0], ANVIL_MODEL_LAYER, 0.1, 5, 0},
+		{&r[1], ANVIL_MODEL_HERTZ, 0.1, 5, 0},
+		{&r[2], ANVIL_MODEL_HALFSPACE, INFINITY, 5, 0},
+	};
+	plot_opts_default(&o);
+	int st = plot_chart_history(&c, PLOT_DEFLECTION, runs, 3);
+	ok(st == ANVIL_OK && c.w_in_mm && c.w_abs && c.w_log[0] == 0.01 * 0.5e-3 &&
+		   c.w_log[1] == 1.5 * 4,
+	   "deflection chart, 4 mm beside +-0.5 um: log |w| over [%g, %g] mm", c.w_log[0],
+	   c.w_log[1]);
+	int drawn = c.nseries == 2, pos = 1;
+	for (int i = 0; drawn && i < c.nseries; i++)
+		for (size_t j = 0; j < c.s[i].n; j++)
+			pos &= c.s[i].y[j] >= 0;
+	ok(drawn && pos && c.s[0].y[1] == 0.5e-6, "  |w| drawn: the half-space's -0.5 um at 0.5");
+	char *txt = script_text(&c, &o);
+	ok(txt && strstr(txt, "set ylabel 'deflection |w| (mm), log scale'") &&
+		   strstr(txt, "set logscale y\nset yrange [5e-06:6]"),
+	   "  labelled |w|, log scale");
+	free(txt);
+	is_script(&c, &o, "deflection-log");
+	plot_chart_free(&c);
+	o.height = 1000;
+	ok(plot_chart_history(&c, PLOT_HISTORY, runs, 3) == ANVIL_OK && c.w_log[1] > 0 &&
+		   (txt = script_text(&c, &o)) && strstr(txt, "set ylabel '|w| (mm), log'"),
+	   "history chart: its w panel log |w| too");
+	free(txt);
+	plot_chart_free(&c);
+	/* near peaks, one below 0: linear, the dip kept (the kind's [0:*] lifted) */
+	for (int i = 0; i < NPTS; i++)
+		r[2].hist.w[i] = 1e-3 * i * (i - 2);
+	o.height = 600;
+	ok(plot_chart_history(&c, PLOT_DEFLECTION, runs, 3) == ANVIL_OK && c.w_log[1] == 0 &&
+		   c.w_neg && (txt = script_text(&c, &o)) &&
+		   strstr(txt, "set yrange [0:*]\nset yrange [*:*]") &&
+		   strstr(txt, "deflection w (mm), + into the layer"),
+	   "peaks near, a curve below 0: linear, not cut at 0, w");
+	free(txt);
+	plot_chart_free(&c);
+	for (int i = 0; i < 3; i++)
+		anvil_result_free(&r[i]);
+}
+
 /* Fig 8: layer points at two thicknesses and two velocities, a dense
  * layer curve, the half-space level, Zener's curves, the paper's values
  * and a marked thickness. */
@@ -630,6 +720,10 @@ static void test_tui_chart(void)
 	ok(n == 6 && t[0] == 0.5 && t[3] == 5 && t[5] == 20, "log ticks 0.5 1 2 5 10 20");
 	n = tui_ticks(1e-3, 1.5, 1, 5, t);
 	ok(n == 4 && t[0] == 1e-3 && t[3] == 1, "too many on a log axis: the decades");
+	n = tui_ticks(4.7e-6, 957, 1, 7, t);
+	ok(n == 4 && t[0] == 1e-4 && t[1] == 1e-2 && t[3] == 100,
+	   "8 decades on 7 ticks: every other decade over the whole axis (%d: %g .. %g)", n,
+	   t[0], t[n - 1]);
 	ok(tui_ticks(1, 1, 0, 5, t) == 0 && tui_ticks(0, 1, 1, 5, t) == 0 &&
 	   tui_ticks(0, NAN, 0, 5, t) == 0, "empty, non-positive log or undefined range: none");
 	struct tui_canvas c;
@@ -650,9 +744,10 @@ static void test_tui_chart(void)
 
 int main(void)
 {
-	plan(90);
+	plan(100);
 	test_force();
 	test_force_log();
+	test_deflection_log();
 	test_rf_thickness();
 	test_rf_lambda();
 	test_accuracy();

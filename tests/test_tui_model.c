@@ -191,6 +191,111 @@ static void test_numbers(void)
 	is_rel(m->sc.radius, 4.1e-3, 1e-15, "radius 4 -> 4.1 mm");
 }
 
+/* The value of row f whose text is t, in t's unit (the number of t
+ * should be it). */
+static double shown_value(const struct tui_model *m, int f, const char *t)
+{
+	static const struct {
+		const char *name;
+		double si;
+	} units[] = {{"um", 1e-6}, {"mm", 1e-3}, {"m", 1}, {"mg", 1e-6}, {"g", 1e-3},
+		     {"kg", 1}, {"mm/s", 1e-3}, {"m/s", 1}, {"km/s", 1e3}};
+	const char *u = strchr(t, ' ');
+	double si = f == TUI_F_THICK_MM ? anvil_scene_h(&m->sc)
+		: f == TUI_F_VELOCITY ? m->sc.velocity
+		: f == TUI_F_MASS ? m->sc.mass : m->sc.radius;
+	if (f == TUI_F_THICK_R0)
+		return anvil_scene_h(&m->sc) / m->sc.radius;
+	for (size_t i = 0; u && i < sizeof units / sizeof units[0]; ++i)
+		if (!strcmp(u + 1, units[i].name))
+			return si / units[i].si;
+	return NAN;
+}
+
+/* Issue: a 100 kg drop weight read "100000 g".  Each row is shown in the
+ * unit that fits (mg/g/kg, um/mm/m, mm/s, m/s, km/s); steps cross the
+ * unit on the same grid and back; Enter opens the value as shown. */
+static void test_units_fit(void)
+{
+	static const struct {
+		const char *set, *want;
+		enum tui_field f;
+	} cases[] = {
+		{":impactor.mass=100kg\n", "100 kg", TUI_F_MASS},
+		{":impactor.mass=2kg\n", "2 kg", TUI_F_MASS},
+		{":impactor.mass=1000g\n", "1 kg", TUI_F_MASS},
+		{":impactor.mass=999.5g\n", "999.5 g", TUI_F_MASS},
+		{":impactor.mass=0.5g\n", "0.5 g", TUI_F_MASS},
+		{":impactor.mass=0.1g\n", "0.1 g", TUI_F_MASS},
+		{":impactor.mass=50mg\n", "50 mg", TUI_F_MASS},
+		{":impactor.mass=999.99999g\n", "1 kg", TUI_F_MASS}, /* "1000" to 4 digits */
+		{":impactor.diameter=1m\n", "500 mm", TUI_F_RADIUS},
+		{":impactor.diameter=3m\n", "1.5 m", TUI_F_RADIUS},
+		{":layer.thickness=0.05mm\n", "50 um", TUI_F_THICK_MM},
+		{":layer.thickness=0.5mm\n", "0.5 mm", TUI_F_THICK_MM},
+		{":layer.thickness=2m\n", "2 m", TUI_F_THICK_MM},
+		{":impact.velocity=1mm/s\n", "1 mm/s", TUI_F_VELOCITY},
+		{":impact.velocity=0.1m/s\n", "0.1 m/s", TUI_F_VELOCITY},
+		{":impact.velocity=1.5km/s\n", "1.5 km/s", TUI_F_VELOCITY},
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+		struct tui_model *m = fresh();
+		type(m, cases[i].set);
+		ok(!strcmp(text(m, cases[i].f), cases[i].want), "%.*s shown as %s (%s)",
+		   (int)strlen(cases[i].set) - 2, cases[i].set + 1, text(m, cases[i].f),
+		   cases[i].want);
+	}
+	struct tui_model *m = fresh();
+	type(m, ":impactor.mass=900g\n");
+	m->sel = TUI_F_MASS;
+	tui_model_key(m, 'L');
+	ok(m->sc.mass == 1 && !strcmp(text(m, TUI_F_MASS), "1 kg"), "900 g, coarse up: %s",
+	   text(m, TUI_F_MASS));
+	tui_model_key(m, 'l');
+	ok(m->sc.mass == 1.1 && !strcmp(text(m, TUI_F_MASS), "1.1 kg"),
+	   "  then fine up: %s (the kg grid, not a jump)", text(m, TUI_F_MASS));
+	tui_model_key(m, 'h');
+	tui_model_key(m, 'h');
+	ok(m->sc.mass == 0.99 && !strcmp(text(m, TUI_F_MASS), "990 g"),
+	   "  fine down twice: %s, the double \"990 g\" and \"0.99 kg\" both give",
+	   text(m, TUI_F_MASS));
+	tui_model_key(m, 'H');
+	ok(m->sc.mass == 0.9 && !strcmp(text(m, TUI_F_MASS), "900 g"), "  coarse down: %s",
+	   text(m, TUI_F_MASS));
+	type(m, ":impactor.mass=0.1g\n");
+	tui_model_key(m, 'h');
+	ok(m->sc.mass == 99e-6 && !strcmp(text(m, TUI_F_MASS), "99 mg"), "0.1 g, fine down: %s",
+	   text(m, TUI_F_MASS));
+	tui_model_key(m, 'l');
+	ok(m->sc.mass == 1e-4 && !strcmp(text(m, TUI_F_MASS), "0.1 g"), "  and back up: %s",
+	   text(m, TUI_F_MASS));
+	m->sel = TUI_F_VELOCITY;
+	type(m, ":impact.velocity=0.1m/s\n");
+	tui_model_key(m, 'H');
+	ok(m->sc.velocity == 0.09 && !strcmp(text(m, TUI_F_VELOCITY), "90 mm/s"),
+	   "0.1 m/s, coarse down: %s", text(m, TUI_F_VELOCITY));
+	tui_model_key(m, 'L');
+	ok(m->sc.velocity == 0.1, "  and back up: %s", text(m, TUI_F_VELOCITY));
+	/* Enter: the value as shown, with its unit; any unit may be typed */
+	type(m, ":impactor.mass=2kg\n");
+	m->sel = TUI_F_MASS;
+	tui_model_key(m, TUI_KEY_ENTER);
+	ok(m->editing && !strcmp(m->edit, "2 kg") && !strcmp(m->edit_unit, "kg"),
+	   "Enter on a 2 kg mass opens '%s'", m->edit);
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW && !m->editing && m->sc.mass == 2,
+	   "  Enter again: nothing changes");
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	int act = type(m, "1500 g\n");
+	ok(act == TUI_ACT_RECOMPUTE && m->sc.mass == 1.5 &&
+		   !strcmp(text(m, TUI_F_MASS), "1.5 kg"),
+	   "  '1500 g' typed: 1.5 kg exactly, shown as %s", text(m, TUI_F_MASS));
+	type(m, ":impactor.diameter=1.2m\n");
+	tui_model_key(m, 'D');
+	ok(m->editing && !strcmp(m->edit, "1.2 m"), "D on a 1.2 m ball opens '%s'", m->edit);
+	tui_model_key(m, TUI_KEY_ESC);
+}
+
 /* Issue 11: values shown without float noise.  A value of at most 6
  * significant digits (typed, or a step's) exactly, a derived one to 4. */
 static void test_display(void)
@@ -239,12 +344,7 @@ static void test_display(void)
 			for (size_t k = 0; k < sizeof keys / sizeof keys[0]; ++k) {
 				tui_model_key(m, keys[k]);
 				const char *t = text(m, (enum tui_field)fields[f]);
-				double want = fields[f] == TUI_F_THICK_MM ? anvil_scene_h(&m->sc) * 1e3
-					      : fields[f] == TUI_F_THICK_R0
-						  ? anvil_scene_h(&m->sc) / m->sc.radius
-					      : fields[f] == TUI_F_VELOCITY ? m->sc.velocity
-					      : fields[f] == TUI_F_MASS     ? m->sc.mass * 1e3
-									    : m->sc.radius * 1e3;
+				double want = shown_value(m, fields[f], t);
 				int digits = 0, lead = 1;
 				for (const char *c = t; *c && *c != ' '; ++c)
 					if (*c >= '1' && *c <= '9')
@@ -728,7 +828,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(158);
+	plan(186);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
@@ -737,6 +837,7 @@ int main(void)
 	test_thickness();
 	test_numbers();
 	test_display();
+	test_units_fit();
 	test_materials();
 	test_accuracy();
 	test_edit();

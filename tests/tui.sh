@@ -157,11 +157,16 @@ assert 'the cursor is visible again' [ "$(flag main cursor_flag)" = 1 ]
 assert 'the keypad is back in normal mode' [ "$(flag main keypad_cursor_flag)" = 0 ]
 
 # ---- a drop weight on a thin plate: Hertz's 105 kN beside Zener's 0.08 kN ----
-start thin -s solver.models=hertz,zener -s layer.thickness=0.1r0 -s impactor.mass=2kg \
+start thin -s solver.models=hertz,zener,halfspace -s layer.thickness=0.1r0 -s impactor.mass=2kg \
 	-s impact.velocity=5m/s
 assert 'thin plate: peaks 1300 times apart put P on a log axis' wait_for thin 'P\(t\) \[kN, log\] vs t'
 assert '...its ticks the decades down to a hundredth of the smaller peak' \
 	wait_for thin '^ +0\.001 .*$'
+assert 'thin plate: the 2 kg mass shown in kg, not 2000 g' wait_for thin 'mass +2 kg'
+T send-keys -t thin v v
+# Zener's 640 mm beside the half-space's +-0.47 um (the physical contact's
+# radiation lag changes sign): |w| on a log axis, in mm
+assert "thin plate: w(t) as |w| on a log axis in mm" wait_for thin '\|w\|\(t\) \[mm, log\] vs t'
 T send-keys -t thin Q
 ask_status thin
 assert 'thin plate: Q quits with status 0' wait_for thin '^anvil-exit=0$'

@@ -558,16 +558,59 @@ static void force_axis(struct plot_chart *c, const struct plot_run *runs, int n)
 	}
 }
 
+int plot_deflection_log(const double *peak, const double *low, int n, double range[2],
+			int *abs)
+{
+	if (!plot_force_log(peak, n, range))
+		return 0;
+	*abs = 0;
+	for (int i = 0; i < n; i++)
+		*abs |= low[i] < 0;
+	return 1;
+}
+
+/* The chart's w axis: plot_deflection_log over the curves drawn (not
+ * Hertz's w = 0), in the axis' unit.  Linear, a curve below 0 keeps its
+ * dip: the kind's [0:*] would cut it off. */
+static void deflection_axis(struct plot_chart *c, const struct plot_run *runs, int n)
+{
+	double peak[PLOT_MAX_SERIES] = {0}, low[PLOT_MAX_SERIES] = {0}, range[2];
+	int k = 0;
+	for (int i = 0; i < n && k < PLOT_MAX_SERIES; i++) {
+		const struct anvil_history *h = ok_run(&runs[i]) ? &runs[i].r->hist : NULL;
+		if (!h || h->n == 0 || runs[i].model == ANVIL_MODEL_HERTZ)
+			continue;
+		peak[k] = low[k] = 0;
+		for (size_t j = 0; j < h->n; j++) {
+			peak[k] = fmax(peak[k], fabs(h->w[j]));
+			low[k] = fmin(low[k], h->w[j]);
+		}
+		c->w_neg |= low[k] < 0;
+		k++;
+	}
+	if (plot_deflection_log(peak, low, k, range, &c->w_abs)) {
+		double ys = c->w_in_mm ? 1e3 : 1e6;
+		c->w_log[0] = range[0] * ys;
+		c->w_log[1] = range[1] * ys;
+	}
+}
+
 /* One run's curve in one panel (0 P, 1 v, 2 w), time scaled by ts. */
 static int history_curve(struct plot_chart *c, const struct plot_run *run, int panel, double ts)
 {
 	double ys;
 	const double *y = history_y(&run->r->hist, panel, c, &ys);
+	size_t n = run->r->hist.n;
+	int abs = panel == 2 && c->w_log[1] > 0 && c->w_abs; /* |w|, copied */
 	int st = plot_chart_add(c, "", model_mark(run->model), run_colour(run),
-				run->r->hist.t, y, run->r->hist.n, ts, ys, 0);
-	if (!st)
-		c->s[c->nseries - 1].panel = panel;
-	return st;
+				run->r->hist.t, y, n, ts, ys, abs);
+	if (st)
+		return st;
+	struct plot_series *s = &c->s[c->nseries - 1];
+	s->panel = panel;
+	for (size_t j = 0; abs && j < n; j++)
+		s->own[n + j] = fabs(s->own[n + j]);
+	return ANVIL_OK;
 }
 
 int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
@@ -592,6 +635,8 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 	c->w_in_mm = w_unit_mm(runs, n);
 	if (p0 == 0)
 		force_axis(c, runs, n);
+	if (p1 == 2)
+		deflection_axis(c, runs, n);
 	/* The half-space first: its band goes under the layers. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < n && !st; i++) {

@@ -171,6 +171,10 @@ struct plot_chart {
 	int w_in_mm;                   /* a history's w in mm (beyond 1 mm), else um */
 	double force_log[2];           /* a history's P axis logarithmic over [lo, hi]
 					  in its unit (plot_force_log); 0: linear */
+	double w_log[2];               /* a history's w axis logarithmic over [lo, hi]
+					  in its unit (plot_deflection_log); 0: linear */
+	int w_abs;                     /* with w_log: a curve changes sign, |w| drawn */
+	int w_neg;                     /* linear w with a curve below 0: not cut at 0 */
 	int nseries, nkeys, nnotes;
 	struct plot_series s[PLOT_MAX_SERIES];
 	struct plot_key keys[PLOT_MAX_KEYS];
@@ -261,11 +265,22 @@ int plot_chart_models(struct plot_chart *c, const struct plot_run *runs, int n,
 #define PLOT_LOG_FORCE_RATIO 20.0
 int plot_force_log(const double *peak, int n, double range[2]);
 
+/* The deflection axis: plot_force_log's rule over the curves' largest
+ * |w| (peak[i], m).  A log axis has no room for w <= 0, and with the
+ * physical contact w changes sign (the half-space's is the radiation lag
+ * beyond Hertz's dent, -0.47 .. +0.47 um beside a drop weight's plate's
+ * 640 mm): when a curve goes below 0 (low[i] < 0, its least w) *abs = 1
+ * and the axis is |w|'s, labelled so; else *abs = 0.  Returns 1 for a log
+ * axis over range[0] .. range[1] m, else 0 (range and *abs untouched).
+ * The charts' and the TUI's rule. */
+int plot_deflection_log(const double *peak, const double *low, int n, double range[2],
+			int *abs);
+
 /* P(t), v(t) or w(t) (kind PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION) of
  * every run with a history, or all three stacked (PLOT_HISTORY).  Colour
  * by thickness, style by model (see the top); Hertz's w = 0 is left out
  * and said in the footnote; P on a log axis (force_log, "log scale" in
- * its label) by plot_force_log. */
+ * its label) by plot_force_log, w (or |w|) by plot_deflection_log. */
 int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 		       const struct plot_run *runs, int n);
 

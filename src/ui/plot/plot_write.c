@@ -269,6 +269,26 @@ static void write_force_log(FILE *f, const struct plot_chart *c)
 			c->force_log[0], c->force_log[1]);
 }
 
+/* A history's w axis (plot_deflection_log), after the panel's own
+ * setup: log as P's; linear with a curve below 0, not cut at 0. */
+static void write_deflection_axis(FILE *f, const struct plot_chart *c)
+{
+	if (c->w_log[1] > 0)
+		fprintf(f, "set logscale y\nset yrange [%.6g:%.6g]\nset format y '10^{%%L}'\n",
+			c->w_log[0], c->w_log[1]);
+	else if (c->w_neg)
+		fputs("set yrange [*:*]\n", f);
+}
+
+/* "w (µm)", "|w| (mm), log scale": the w axis' name, unit and scale. */
+static void deflection_label(char *buf, size_t n, const struct plot_chart *c, int chart)
+{
+	int lg = c->w_log[1] > 0;
+	snprintf(buf, n, "%s%s (%s)%s", chart ? "deflection " : "", lg && c->w_abs ? "|w|" : "w",
+		 c->w_in_mm ? "mm" : "µm",
+		 lg ? (chart ? ", log scale" : ", log") : chart ? ", + into the layer" : "");
+}
+
 static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_kind_info *k)
 {
 	char ylabel[PLOT_LABEL_MAX];
@@ -279,8 +299,8 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 	if (c->kind == PLOT_FORCE)
 		snprintf(ylabel, sizeof ylabel, "contact force P (%s)%s", c->force_in_n ? "N" : "kN",
 			 c->force_log[1] > 0 ? ", log scale" : "");
-	else if (c->kind == PLOT_DEFLECTION && c->w_in_mm)
-		snprintf(ylabel, sizeof ylabel, "deflection w (mm), + into the layer");
+	else if (c->kind == PLOT_DEFLECTION)
+		deflection_label(ylabel, sizeof ylabel, c, 1);
 	plot_put_quoted(f, ylabel);
 	fputc('\n', f);
 }
@@ -289,9 +309,11 @@ static void write_axes(FILE *f, const struct plot_chart *c, const struct plot_ki
 static void write_history(FILE *f, const struct plot_chart *c, double top, double bottom)
 {
 	static const enum plot_kind panels[3] = {PLOT_FORCE, PLOT_VELOCITY, PLOT_DEFLECTION};
+	char wlabel[PLOT_LABEL_MAX];
+	deflection_label(wlabel, sizeof wlabel, c, 0);
 	const char *const ylabels[3] = {c->force_log[1] > 0 ? (c->force_in_n ? "P (N), log" : "P (kN), log")
 							    : c->force_in_n ? "P (N)" : "P (kN)",
-					"v (m/s)", c->w_in_mm ? "w (mm)" : "w (µm)"};
+					"v (m/s)", wlabel};
 	const double gap = 0.02, h = (top - bottom - 2 * gap) / 3;
 	fputs("set multiplot\n", f);
 	for (int p = 0; p < 3; p++) {
@@ -303,6 +325,8 @@ static void write_history(FILE *f, const struct plot_chart *c, double top, doubl
 			plot_kind_info(panels[p])->setup, c->setup);
 		if (p == 0)
 			write_force_log(f, c);
+		else if (p == 2)
+			write_deflection_axis(f, c);
 		if (p < 2)
 			fputs("set format x ''\nunset xlabel\nset key off\n", f);
 		else
@@ -367,6 +391,8 @@ int plot_write(FILE *f, const struct plot_chart *c, const struct plot_opts *o)
 		fputs(c->setup, f);
 		if (c->kind == PLOT_FORCE)
 			write_force_log(f, c);
+		else if (c->kind == PLOT_DEFLECTION)
+			write_deflection_axis(f, c);
 		write_notes(f, c, 0);
 		write_plot(f, c, -1, 1);
 	}

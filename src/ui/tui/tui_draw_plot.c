@@ -33,7 +33,8 @@ struct area {
 	int top, rows, cols;
 	int role[TUI_CANVAS_SERIES];
 	int xlog;            /* x given to the canvas as log10 */
-	int ylog;            /* y too (a force axis, plot_force_log) */
+	int ylog;            /* y too (a force or w axis, plot_force_log) */
+	int yabs;            /* with ylog: |y| (a w that changes sign) */
 };
 
 static const double *quantity_data(const struct anvil_history *h,
@@ -42,10 +43,10 @@ static const double *quantity_data(const struct anvil_history *h,
 	return q == TUI_Q_FORCE ? h->P : q == TUI_Q_VELOCITY ? h->v : h->w;
 }
 
-/* SI -> the unit shown on the axis */
-static double quantity_scale(enum tui_quantity q)
+/* SI -> the unit shown on the axis; w_mm: w in mm (else um) */
+static double quantity_scale(enum tui_quantity q, int w_mm)
 {
-	return q == TUI_Q_FORCE ? 1e-3 : q == TUI_Q_DEFLECTION ? 1e6 : 1;
+	return q == TUI_Q_FORCE ? 1e-3 : q == TUI_Q_DEFLECTION ? (w_mm ? 1e3 : 1e6) : 1;
 }
 
 static int plottable(const struct tui_row *row)
@@ -135,7 +136,7 @@ static void area_line(struct area *a, int series, int role, const double *x,
 			lx = own, ly = own + n;
 		for (size_t i = 0; i < n; i++) {
 			lx[i] = a->xlog ? log_or_nan(x[i]) : x[i];
-			ly[i] = a->ylog ? log_or_nan(y[i]) : y[i];
+			ly[i] = a->ylog ? log_or_nan(a->yabs ? fabs(y[i]) : y[i]) : y[i];
 		}
 		x = lx;
 		y = ly;
@@ -261,35 +262,47 @@ static double log_time(double r[5], int *lg, const char **name, const struct tui
 	return 1.0;
 }
 
-/* The force axis as the charts have it (plot_force_log): log when the
- * rows' peaks differ more than 20 times (a thin plate's 0.08 kN beside
- * the rigid anvil's 105 kN lay on the zero line); range in N. */
-static int log_force(const struct tui_model *m, double range[2])
+/* The P or w axis as the charts have it (plot_force_log,
+ * plot_deflection_log): log when the rows' peaks differ more than 20
+ * times (a thin plate's 0.08 kN beside the rigid anvil's 105 kN lay on
+ * the zero line; its 640 mm beside the half-space's 0.47 um), |w| then
+ * when a row's w changes sign (*abs); range in SI.  *w_mm: w beyond 1 mm
+ * in mm, as the charts (250000 um does not fit the ticks' 7 columns). */
+static int log_axis(const struct tui_model *m, double range[2], int *abs, int *w_mm)
 {
-	double peak[ANVIL_MODEL_COUNT];
-	int n = 0;
-	if (m->quantity != TUI_Q_FORCE)
+	double peak[ANVIL_MODEL_COUNT] = {0}, low[ANVIL_MODEL_COUNT] = {0}, top = 0;
+	int n = 0, q = m->quantity;
+	*abs = *w_mm = 0;
+	if (q != TUI_Q_FORCE && q != TUI_Q_DEFLECTION)
 		return 0;
 	for (int k = 0; k < ANVIL_MODEL_COUNT; ++k) {
 		const struct tui_row *row = &m->rows[k];
 		if (!plottable(row))
 			continue;
-		peak[n] = 0;
-		for (size_t i = 0; i < row->res.hist.n; ++i)
-			peak[n] = fmax(peak[n], row->res.hist.P[i]);
+		const double *y = quantity_data(&row->res.hist, m->quantity);
+		for (size_t i = 0; i < row->res.hist.n; ++i) {
+			peak[n] = fmax(peak[n], fabs(y[i]));
+			low[n] = fmin(low[n], y[i]);
+		}
+		top = fmax(top, peak[n]);
 		n++;
 	}
-	return plot_force_log(peak, n, range);
+	if (q == TUI_Q_FORCE)
+		return plot_force_log(peak, n, range);
+	*w_mm = top > 1e-3;
+	return plot_deflection_log(peak, low, n, range, abs);
 }
 
-static void history_legend(const struct tui_model *m, const struct tui_view *v, int y, int ylog)
+static void history_legend(const struct tui_model *m, const struct tui_view *v, int y,
+			   const struct area *a, int w_mm)
 {
 	char head[64];
 	double h = scene_h_r0(m);
-	snprintf(head, sizeof head, "%s [%s%s] vs t", tui_quantity_name(m->quantity),
-		 v->utf8 && m->quantity == TUI_Q_DEFLECTION ? "\xc2\xb5m"
-							    : tui_quantity_unit(m->quantity),
-		 ylog ? ", log" : "");
+	int w = m->quantity == TUI_Q_DEFLECTION;
+	snprintf(head, sizeof head, "%s [%s%s] vs t",
+		 w && a->yabs ? "|w|(t)" : tui_quantity_name(m->quantity),
+		 w && w_mm ? "mm" : w && v->utf8 ? "\xc2\xb5m" : tui_quantity_unit(m->quantity),
+		 a->ylog ? ", log" : "");
 	tui_put(y, 1, COLS - 2, tui_attr(R_HEAD), head);
 	int x = 1 + tui_ncols(head) + 2;
 	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i) {
@@ -304,10 +317,11 @@ static void history_legend(const struct tui_model *m, const struct tui_view *v, 
 static void draw_history(const struct tui_model *m, const struct tui_view *v,
 			 int top, int bottom)
 {
-	struct area a;
+	struct area a, axis = {0};
 	double r[5], h = scene_h_r0(m), fr[2];
-	int ylog = log_force(m, fr);
-	history_legend(m, v, top, ylog);
+	int w_mm, ylog = log_axis(m, fr, &axis.yabs, &w_mm);
+	axis.ylog = ylog;
+	history_legend(m, v, top, &axis, w_mm);
 	if (!plot_range(m, r)) {
 		tui_putf((top + bottom) / 2, PLOT_LEFT, COLS - PLOT_LEFT - 1, tui_attr(R_DIM), "%s",
 		     tui_model_busy(m) ? "computing" : "no histories to plot");
@@ -317,6 +331,7 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 		return;
 	const char *tname;
 	double ts = log_time(r, &a.xlog, &tname, v);
+	a.yabs = axis.yabs;
 	if ((a.ylog = ylog))
 		r[2] = log10(fr[0]), r[3] = log10(fr[1]);
 	if (a.xlog)
@@ -333,7 +348,7 @@ static void draw_history(const struct tui_model *m, const struct tui_view *v,
 				  model_dash(k));
 	}
 	area_draw(&a);
-	area_ticks(&a, v, quantity_scale(m->quantity), ts, tname);
+	area_ticks(&a, v, quantity_scale(m->quantity, w_mm), ts, tname);
 	tui_canvas_free(&a.c);
 }
 

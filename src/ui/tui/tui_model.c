@@ -73,18 +73,41 @@ const char *tui_quantity_unit(enum tui_quantity q)
 
 /* ---- panel rows ---- */
 
-/* A numeric row: the scene key it sets, the unit it is shown and stepped
- * in.  Steps happen in the shown unit so that the values stay round. */
+/* A unit a numeric row may be shown in: SI per unit is 10^exp10, and it
+ * is shown from `from` (SI) up, until the next unit's `from`. */
+struct shown_unit {
+	const char *name;
+	int exp10;
+	double from;
+};
+
+/* The row's usual unit (g, mm, m/s) holds down to a tenth of itself
+ * (0.5 mm, not 500 um) and gives way to the next larger one from 1 of
+ * it (1 kg, not 1000 g: a drop weight read 100000 g).  Powers of 1000
+ * apart, so a step's grid (a tenth of the leading digit) is the same in
+ * either unit: 990 g -> 1 kg -> 1.1 kg, and back. */
+static const struct shown_unit mass_shown[] = {
+	{"mg", -6, 0}, {"g", -3, 1e-4}, {"kg", 0, 1}, {NULL, 0, 0}};
+static const struct shown_unit length_shown[] = {
+	{"um", -6, 0}, {"mm", -3, 1e-4}, {"m", 0, 1}, {NULL, 0, 0}};
+static const struct shown_unit velocity_shown[] = {
+	{"mm/s", -3, 0}, {"m/s", 0, 0.1}, {"km/s", 3, 1e3}, {NULL, 0, 0}};
+static const struct shown_unit r0_shown[] = {{"r0", 0, 0}, {NULL, 0, 0}};
+
+/* A numeric row: the scene key it sets, the units it is shown and
+ * stepped in.  Steps happen in the shown unit so that the values stay
+ * round. */
 struct numeric {
-	const char *key, *unit;
+	const char *key;
+	const struct shown_unit *units;
 };
 
 static const struct numeric numerics[TUI_F_COUNT] = {
-	[TUI_F_THICK_MM] = {"layer.thickness", "mm"},
-	[TUI_F_THICK_R0] = {"layer.thickness", "r0"},
-	[TUI_F_VELOCITY] = {"impact.velocity", "m/s"},
-	[TUI_F_MASS] = {"impactor.mass", "g"},
-	[TUI_F_RADIUS] = {"impactor.radius", "mm"},
+	[TUI_F_THICK_MM] = {"layer.thickness", length_shown},
+	[TUI_F_THICK_R0] = {"layer.thickness", r0_shown},
+	[TUI_F_VELOCITY] = {"impact.velocity", velocity_shown},
+	[TUI_F_MASS] = {"impactor.mass", mass_shown},
+	[TUI_F_RADIUS] = {"impactor.radius", length_shown},
 };
 
 static const char *const labels[TUI_F_COUNT] = {
@@ -121,23 +144,29 @@ static int field_model(int f)
 	return (int)tui_model_order[f - TUI_F_SHOW_LAYER];
 }
 
-/* The value of a numeric row in its shown unit. */
-static double field_number(const struct anvil_scene *sc, int f)
+/* The value of a numeric row in SI (r0 for the thickness in r0). */
+static double field_si(const struct anvil_scene *sc, int f)
 {
 	switch (f) {
 	case TUI_F_THICK_MM:
-		return anvil_scene_h(sc) * 1e3;
+		return anvil_scene_h(sc);
 	case TUI_F_THICK_R0:
 		return anvil_scene_h(sc) / sc->radius;
 	case TUI_F_VELOCITY:
 		return sc->velocity;
 	case TUI_F_MASS:
-		return sc->mass * 1e3;
+		return sc->mass;
 	case TUI_F_RADIUS:
-		return sc->radius * 1e3;
+		return sc->radius;
 	default:
 		return NAN;
 	}
+}
+
+/* SI -> unit u: by an exact power of ten (0.0122 kg * 1e3 is 12.2 g). */
+static double in_unit(double si, const struct shown_unit *u)
+{
+	return u->exp10 < 0 ? si * pow(10, -u->exp10) : si / pow(10, u->exp10);
 }
 
 static int has_overrides(const struct anvil_body *b)
@@ -173,19 +202,45 @@ void tui_number(double x, char *buf, size_t n)
 	number_digits(x, TUI_DIGITS, buf, n);
 }
 
+/* The unit of units that si is shown in: the largest whose `from` it
+ * reaches; then the next one up if the number as shown rounds onto that
+ * one's start (a derived 999.99999 g reads "1000" to TUI_DIGITS: 1 kg). */
+static const struct shown_unit *pick_unit(const struct shown_unit *u, double si)
+{
+	while (u[1].name && fabs(si) >= u[1].from)
+		u++;
+	if (u[1].name && isfinite(si)) {
+		char num[48];
+		tui_number(in_unit(si, u), num, sizeof num);
+		if (fabs(strtod(num, NULL)) >= in_unit(u[1].from, u) * (1 - 1e-12))
+			u++;
+	}
+	return u;
+}
+
+/* The unit row f shows its value in, and the value in it (*x). */
+static const struct shown_unit *field_shown(const struct anvil_scene *sc, int f, double *x)
+{
+	double si = field_si(sc, f);
+	const struct shown_unit *u = pick_unit(numerics[f].units, si);
+	*x = in_unit(si, u);
+	return u;
+}
+
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n)
 {
 	const struct anvil_scene *sc = &m->sc;
 	int mod = field_model(f);
 	if (is_numeric(f)) {
-		double v = field_number(sc, f);
+		double v;
+		const struct shown_unit *u = field_shown(sc, f, &v);
 		char num[48];
 		tui_number(v, num, sizeof num);
 		if (isinf(v))
 			snprintf(buf, n, "inf");
 		else
-			snprintf(buf, n, "%s %s", num, numerics[f].unit);
+			snprintf(buf, n, "%s %s", num, u->name);
 	} else if (f == TUI_F_IMPACTOR || f == TUI_F_LAYER) {
 		const struct anvil_body *b = f == TUI_F_IMPACTOR ? &sc->impactor : &sc->layer;
 		/* '*': the named material's numbers are not the ones used */
@@ -488,17 +543,31 @@ double tui_step(double x, int dir, int coarse)
 	return y > 0 ? y : x;
 }
 
+/* x as the shortest decimal that reads back as x: a step's 0.099 g goes
+ * to the parser as "0.099 g", the double nearest 9.9e-5 kg that "99 mg"
+ * gives too ("%.17g" would pass 0.099000000000000005). */
+static void shortest(double x, char *buf, size_t n)
+{
+	for (int p = 1; p <= 17; ++p) {
+		snprintf(buf, n, "%.*g", p, x);
+		if (strtod(buf, NULL) == x)
+			return;
+	}
+}
+
 static enum tui_action step_number(struct tui_model *m, int dir, int coarse)
 {
-	char value[64];
-	double x = field_number(&m->sc, m->sel);
+	char num[40], value[64];
+	double x;
+	const struct shown_unit *u = field_shown(&m->sc, m->sel, &x);
 	if (isinf(x)) {
 		tui_model_message(m, 1, "the layer is a half-space (inf): press Enter to type a thickness");
 		return TUI_ACT_REDRAW;
 	}
+	/* in the unit shown, which the new value may leave (990 g -> 1 kg) */
+	shortest(tui_step(x, dir, coarse), num, sizeof num);
 	/* "2.5r0" without a space: the thickness key reads the r0 suffix */
-	snprintf(value, sizeof value, "%.17g%s%s", tui_step(x, dir, coarse),
-		 m->sel == TUI_F_THICK_R0 ? "" : " ", numerics[m->sel].unit);
+	snprintf(value, sizeof value, "%s%s%s", num, m->sel == TUI_F_THICK_R0 ? "" : " ", u->name);
 	return apply(m, numerics[m->sel].key, value);
 }
 
@@ -629,10 +698,12 @@ static enum tui_action edit_field(struct tui_model *m)
 	tui_model_field_text(m, f, text, sizeof text);
 	if (f == TUI_F_IMPACTOR || f == TUI_F_LAYER) /* drop the override mark */
 		text[strcspn(text, "*")] = '\0';
-	if (is_numeric(f))
-		edit_begin(m, numerics[f].key, numerics[f].unit, text);
-	else
+	if (is_numeric(f)) { /* the text as shown, with its unit ("1.5 kg") */
+		double x;
+		edit_begin(m, numerics[f].key, field_shown(&m->sc, f, &x)->name, text);
+	} else {
 		edit_begin(m, keys[f], NULL, text);
+	}
 	return TUI_ACT_REDRAW;
 }
 
@@ -754,9 +825,10 @@ static enum tui_action geometry_edit(struct tui_model *m, int drop)
 	char text[64], num[48];
 	double g = ANVIL_G_STANDARD;
 	double x = drop ? 0.5 * m->sc.velocity * m->sc.velocity / g : 2 * m->sc.radius;
-	tui_number(x * 1e3, num, sizeof num);
-	snprintf(text, sizeof text, "%s mm", num);
-	edit_begin(m, drop ? "impact.drop_height" : "impactor.diameter", "mm", text);
+	const struct shown_unit *u = pick_unit(length_shown, x);
+	tui_number(in_unit(x, u), num, sizeof num);
+	snprintf(text, sizeof text, "%s %s", num, u->name);
+	edit_begin(m, drop ? "impact.drop_height" : "impactor.diameter", u->name, text);
 	return TUI_ACT_REDRAW;
 }
 

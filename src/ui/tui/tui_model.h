@@ -53,7 +53,7 @@ enum tui_action {
 
 /* The rows of the parameter panel, top to bottom. */
 enum tui_field {
-	TUI_F_THICK_MM,   /* layer thickness in mm */
+	TUI_F_THICK_MM,   /* layer thickness in um, mm or m (the unit that fits) */
 	TUI_F_THICK_R0,   /* the same thickness in multiples of r0 */
 	TUI_F_VELOCITY,
 	TUI_F_IMPACTOR,   /* impactor material */
@@ -126,7 +126,7 @@ struct tui_model {
 	int editing;                /* the status line is a text field */
 	int confirm_quit;           /* q with unsaved changes: y quits */
 	char edit_key[64];          /* scene key being edited; "" for ':' */
-	char edit_unit[8];          /* unit added to a bare number */
+	char edit_unit[8];          /* the unit of the number the field opened on; "" for text */
 	char edit[TUI_EDIT_MAX];
 	char edit_orig[TUI_EDIT_MAX]; /* the text the field opened on */
 	char msg[ANVIL_ERR_MSG];    /* status-line message, "" for none */
@@ -215,7 +215,11 @@ void tui_model_saved(struct tui_model *m, const char *path);
  * was made when the row or the plan arrived. */
 int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t n);
 
-/* The label and the value (with its unit) of a panel row. */
+/* The label and the value (with its unit) of a panel row.  A length,
+ * mass or velocity is shown in the unit that fits it: its usual one (mm,
+ * g, m/s) from a tenth of it, the next smaller (um, mg, mm/s) below,
+ * the next larger (m, kg, km/s) from 1 of that; steps and Enter work in
+ * the unit shown. */
 const char *tui_field_label(enum tui_field f);
 void tui_model_field_text(const struct tui_model *m, enum tui_field f,
 			  char *buf, size_t n);

@@ -242,23 +242,29 @@ int tui_ticks(double lo, double hi, int log, int max, double *out)
 		return 0;
 	if (!log)
 		return linear_ticks(lo, hi, max, out);
-	/* 1, 2, 5 per decade; just the decades when that is too many. */
-	for (int dense = 1; dense >= 0; dense--) {
-		static const double m[] = {1, 2, 5};
-		int n = 0, fits = 1;
-		for (int e = (int)floor(log10(lo)); e <= (int)ceil(log10(hi)) && fits; e++)
-			for (int i = 0; i < (dense ? 3 : 1); i++) {
-				double t = m[i] * pow(10, e);
-				if (t < lo * (1 - 1e-9) || t > hi * (1 + 1e-9))
-					continue;
-				if (n == max) {
-					fits = 0;
-					break;
-				}
-				out[n++] = t;
-			}
-		if (fits || !dense)
-			return n;
+	/* 1, 2, 5 per decade when they fit */
+	static const double m[] = {1, 2, 5};
+	int n = 0, e0 = (int)floor(log10(lo)), e1 = (int)ceil(log10(hi));
+	for (int e = e0; e <= e1 && n <= max; e++)
+		for (int i = 0; i < 3 && n <= max; i++) {
+			double t = m[i] * pow(10, e);
+			if (t >= lo * (1 - 1e-9) && t <= hi * (1 + 1e-9) && n++ < max)
+				out[n - 1] = t;
+		}
+	if (n <= max)
+		return n;
+	/* else the decades, every step-th (multiples of step, so 10^0 is one)
+	 * across the whole axis: 8 decades of a w axis on 7 rows of ticks
+	 * lost their top ones when cut at max */
+	int nd = 0;
+	for (int e = e0; e <= e1; e++)
+		nd += pow(10, e) >= lo * (1 - 1e-9) && pow(10, e) <= hi * (1 + 1e-9);
+	int step = (nd + max - 1) / max;
+	n = 0;
+	for (int e = e0; e <= e1 && n < max; e++) {
+		double t = pow(10, e);
+		if (((e % step) + step) % step == 0 && t >= lo * (1 - 1e-9) && t <= hi * (1 + 1e-9))
+			out[n++] = t;
 	}
-	return 0;
+	return n;
 }
