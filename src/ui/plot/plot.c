@@ -369,7 +369,7 @@ void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 void plot_chart_subtitle_materials(struct plot_chart *c, const struct anvil_scene *sc,
 				   int mass_in_key)
 {
-	char r0[32], h[128], hh[24], m[32] = "";
+	char r0[32], h[80], hh[24], m[32] = ""; /* room for them all in the subtitle */
 	double hm = anvil_scene_h(sc);
 	put_mm(r0, sizeof r0, sc->radius);
 	put_mm(hh, sizeof hh, hm);
