@@ -22,6 +22,8 @@
 /* A pass's status when a contact's end cannot be bracketed (finish_exact):
  * ANVIL_ENUM to the caller, with a message that says when and what to do. */
 #define IMPACT_END_LOST (-101)
+/* The contact budget (ANVIL_MAX_CONTACTS) spent: the march stops. */
+#define IMPACT_BUDGET (-100)
 /* Long mode: the grown march needs more nodes than max_nodes (or its
  * first segment more than its weights): ANVIL_ETOL, t_s infinite. */
 #define IMPACT_NODES (-102)
@@ -236,5 +238,22 @@ int impact_long_short(const struct ctx *c, const struct pass *s);
 /* The pass's arrays from the current segment's node 0 on, as a pass of
  * uniform step (n, cap local). */
 struct pass impact_view(const struct ctx *c, const struct pass *s);
+
+/* impact_contact.c: the contact's state through the march. */
+/* The pass's peak force and its time (a vertex through the largest nodes). */
+void impact_peak(struct pass *s);
+/* The end between nodes n - 1 and n (alpha would be a_n <= 0) by the
+ * parabola through alpha_H; s->ts, s->Vs (impulse: up to t_{n-1}). */
+void impact_finish(struct pass *s, const struct anvil_params *p, double a_n, double impulse);
+/* A pending separation made real (its end found); ANVIL_OK when none. */
+int impact_sep_resolve(const struct ctx *c, struct pass *s, double *ioff);
+/* In contact or not at node n, A (alpha_H if P_n were 0): *in and *ioff
+ * updated, a contact started, a separation opened, merged or resolved;
+ * IMPACT_BUDGET when the contacts run out, IMPACT_END_LOST, ANVIL_ENOMEM. */
+int impact_contact_state(const struct ctx *c, struct pass *s, size_t n, double A, double a_prev,
+			 double amax, double impulse, int *in, double *ioff);
+/* Parted for good at node n (impact.h). */
+int impact_parted(const struct ctx *c, const struct pass *s, size_t n, double impulse,
+		  double amax);
 
 #endif
