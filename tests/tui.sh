@@ -167,6 +167,7 @@ T send-keys -t thin v v
 # Zener's 640 mm beside the half-space's +-0.47 um (the physical contact's
 # radiation lag changes sign): |w| on a log axis, in mm
 assert "thin plate: w(t) as |w| on a log axis in mm" wait_for thin '\|w\|\(t\) \[mm, log\] vs t'
+assert "...its legend: Hertz's w = 0, which a log axis cannot draw" wait_for thin 'Hertz \(w = 0\)'
 T send-keys -t thin Q
 ask_status thin
 assert 'thin plate: Q quits with status 0' wait_for thin '^anvil-exit=0$'

@@ -308,9 +308,13 @@ static void history_legend(const struct tui_model *m, const struct tui_view *v, 
 	for (int i = 0; i < ANVIL_MODEL_COUNT; ++i) {
 		enum anvil_model k = tui_model_order[i];
 		char ascii[2];
+		/* Hertz's rigid anvil has w = 0, which a log axis cannot draw:
+		 * the legend says so, as the charts' key does */
+		int unseen = w && a->ylog && k == ANVIL_MODEL_HERTZ;
 		if (plottable(&m->rows[k]))
 			legend_item(y, &x, tui_attr(model_role(k, h)),
-				    dash_sample(v, model_dash(k), i, ascii), tui_model_title(k));
+				    dash_sample(v, model_dash(k), i, ascii),
+				    unseen ? "Hertz (w = 0)" : tui_model_title(k));
 	}
 }
 
