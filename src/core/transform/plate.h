@@ -124,12 +124,13 @@ double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t);
 /* K(t)/t^2 by its quadrature (to 1e-12), for tests of the table. */
 int anvil_plate_k(double hh, double nu, double patch, double t, double *val);
 
-/* The K(t) table that anvil_plate_tail_make made last (its quadratures),
- * for the next tail of the same plate: a layer correction, its twin and
- * the patch's correction of one window share it; a longer window extends
- * it.  A pure function's memo: the same bits whether it held the table or
- * not.  Owned by one thread at a time (the solver's, beside its cache).
- * NULL when out of memory. */
+/* The K(t) tables that anvil_plate_tail_make made last (their
+ * quadratures), one for each of the last four loads, for the next tail of
+ * the same plate and load: a layer correction and its twin share one, so
+ * do the physical contact's corrections of one load at two bands; a longer
+ * window extends it.  A pure function's memo: the same bits whether it
+ * held the table or not.  Owned by one thread at a time (the solver's,
+ * beside its cache).  NULL when out of memory. */
 struct anvil_plate_memo *anvil_plate_memo_alloc(void);
 void anvil_plate_memo_free(struct anvil_plate_memo *m); /* NULL is a no-op */
 
