@@ -385,11 +385,16 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * green.c's count). */
 double anvil_plan_corr_samples(double hh, double omega, double tau_end);
 /* Fraction of the impact energy radiated into an elastic half-space during
- * a Hertz impact (derivation in plan.c); NaN for bad parameters. */
+ * a Hertz impact (derivation in plan_est.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);
 /* Contact time and peak force of the quasi-static anvil (Hertz plus the
  * static patch compliance), from its energy integral.  ANVIL_ENUM when the
  * quadrature fails. */
 int anvil_plan_static(const struct anvil_params *p, double *ts, double *pmax);
+/* How far a layer is from the half-space: the largest relative change of
+ * P_max, t_s and R_f that its bending (Zener's plate) or the bottom
+ * reflection makes (plan_est.c); 0 on a half-space, inf when Zener's
+ * model cannot tell. */
+double anvil_plan_bending(const struct anvil_params *p);
 
 #endif
