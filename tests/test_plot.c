@@ -180,6 +180,19 @@ static void test_force(void)
 
 /* Issue 11: a thin plate's P beside the rigid anvil's.  Peaks more than
  * 20 times apart put P on a log axis (plot_force_log), else linear. */
+/* A drop weight's three rows on h = 0.1 r0 at 5 m/s: the layer, Hertz's
+ * rigid anvil and the half-space (fake histories, scaled by the caller). */
+static void drop_weight(struct anvil_result r[3], struct plot_run runs[3])
+{
+	static const enum anvil_model m[3] = {ANVIL_MODEL_LAYER, ANVIL_MODEL_HERTZ,
+					      ANVIL_MODEL_HALFSPACE};
+	for (int i = 0; i < 3; i++) {
+		fake_result(&r[i], m[i], 1.0);
+		runs[i] = (struct plot_run){&r[i], m[i], m[i] == ANVIL_MODEL_HALFSPACE ? INFINITY : 0.1,
+					    5, 0};
+	}
+}
+
 static void test_force_log(void)
 {
 	double range[2] = {-1, -1};
@@ -191,18 +204,12 @@ static void test_force_log(void)
 	   "105 kN beside 78.3 N: log from a hundredth of the smaller (%g N) to 1.5 times the "
 	   "larger (%g N); a zero peak ignored", range[0], range[1]);
 	struct anvil_result r[3];
+	struct plot_run runs[3];
 	struct plot_chart c;
 	struct plot_opts o;
-	fake_result(&r[0], ANVIL_MODEL_LAYER, 1.0);
-	fake_result(&r[1], ANVIL_MODEL_HERTZ, 1.0);
-	fake_result(&r[2], ANVIL_MODEL_HALFSPACE, 1.0);
+	drop_weight(r, runs);
 	for (int i = 0; i < NPTS; i++) /* the rigid anvils 100 times the layer */
 		r[1].hist.P[i] *= 100, r[2].hist.P[i] *= 90;
-	struct plot_run runs[] = {
-		{&r[0], ANVIL_MODEL_LAYER, 0.1, 5, 0},
-		{&r[1], ANVIL_MODEL_HERTZ, 0.1, 5, 0},
-		{&r[2], ANVIL_MODEL_HALFSPACE, INFINITY, 5, 0},
-	};
 	plot_opts_default(&o);
 	int st = plot_chart_history(&c, PLOT_FORCE, runs, 3);
 	ok(st == ANVIL_OK && c.force_log[0] == 0.04 &&
@@ -259,21 +266,15 @@ static void test_deflection_log(void)
 		   range[0] == 0.01 * 0.47e-6,
 	   "640 mm beside +-0.47 um: log, |w| (a curve changes sign)");
 	struct anvil_result r[3];
+	struct plot_run runs[3];
 	struct plot_chart c;
 	struct plot_opts o;
-	fake_result(&r[0], ANVIL_MODEL_LAYER, 1.0);
-	fake_result(&r[1], ANVIL_MODEL_HERTZ, 1.0);
-	fake_result(&r[2], ANVIL_MODEL_HALFSPACE, 1.0);
+	drop_weight(r, runs);
 	static const double hs_w[NPTS] = {0, -0.5e-6, 0, 0.5e-6, 0.25e-6};
 	for (int i = 0; i < NPTS; i++) { /* the plate 4 mm; the half-space +-0.5 um */
 		r[0].hist.w[i] *= 1000;
 		r[2].hist.w[i] = hs_w[i];
 	}
-	struct plot_run runs[] = {
-		{&r[0], ANVIL_MODEL_LAYER, 0.1, 5, 0},
-		{&r[1], ANVIL_MODEL_HERTZ, 0.1, 5, 0},
-		{&r[2], ANVIL_MODEL_HALFSPACE, INFINITY, 5, 0},
-	};
 	plot_opts_default(&o);
 	int st = plot_chart_history(&c, PLOT_DEFLECTION, runs, 3);
 	ok(st == ANVIL_OK && c.w_in_mm && c.w_abs && c.w_log[0] == 0.01 * 0.5e-3 &&

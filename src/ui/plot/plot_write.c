@@ -260,22 +260,28 @@ static void write_plot(FILE *f, const struct plot_chart *c, int panel, int keys)
 	fputc('\n', f);
 }
 
-/* A history's log P axis (plot_force_log), after the panel's own setup;
- * powers of ten as 10^n: "0.001" pushed the axis label off the image. */
-static void write_force_log(FILE *f, const struct plot_chart *c)
+/* A log y axis over range (set when range[1] > 0), after the panel's own
+ * setup; powers of ten as 10^n: "0.001" pushed the axis label off the
+ * image. */
+static void write_log_y(FILE *f, const double range[2])
 {
-	if (c->force_log[1] > 0)
+	if (range[1] > 0)
 		fprintf(f, "set logscale y\nset yrange [%.6g:%.6g]\nset format y '10^{%%L}'\n",
-			c->force_log[0], c->force_log[1]);
+			range[0], range[1]);
 }
 
-/* A history's w axis (plot_deflection_log), after the panel's own
- * setup: log as P's; linear with a curve below 0, not cut at 0. */
+/* A history's log P axis (plot_force_log). */
+static void write_force_log(FILE *f, const struct plot_chart *c)
+{
+	write_log_y(f, c->force_log);
+}
+
+/* A history's w axis (plot_deflection_log): log as P's; linear with a
+ * curve below 0, not cut at 0. */
 static void write_deflection_axis(FILE *f, const struct plot_chart *c)
 {
 	if (c->w_log[1] > 0)
-		fprintf(f, "set logscale y\nset yrange [%.6g:%.6g]\nset format y '10^{%%L}'\n",
-			c->w_log[0], c->w_log[1]);
+		write_log_y(f, c->w_log);
 	else if (c->w_neg)
 		fputs("set yrange [*:*]\n", f);
 }
