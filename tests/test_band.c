@@ -42,10 +42,48 @@ static int run(struct anvil_plan *pl, struct anvil_result *r)
 	return st;
 }
 
+/* lambda* >= 1e4 (h = 0.05 r0, 100 kg at 1 m/s: 3.6e4): the plan starts at
+ * twice its band (plan.c, PHYS_WIDE_LAMBDA), where the solver went after
+ * throwing a round away; planned at the narrower band, the solver doubles
+ * it and lands on the same bits. */
+static void wide_band(void)
+{
+	struct anvil_scene sc;
+	struct anvil_plan pl;
+	struct anvil_err e;
+	anvil_scene_default(&sc);
+	const char *kv[] = { "layer.thickness", "0.05r0", "impactor.mass", "100kg",
+			     "impact.velocity", "1m/s", "effects.waves", "layer", NULL };
+	int bad = 0;
+	for (int i = 0; kv[i]; i += 2)
+		bad |= anvil_scene_set(&sc, kv[i], kv[i + 1], NULL, 0, &e);
+	bad = bad || scene_plan(&sc, &pl, &e);
+	if (!ok(!bad && pl.pb.p.lambda_star > 1e4, "h = 0.05 r0, 100 kg, 1 m/s planned (lambda* %.3g)",
+		bad ? 0.0 : pl.pb.p.lambda_star))
+		return;
+	struct anvil_result a, b;
+	double tgt = anvil_accuracy_target(ANVIL_ACC_NORMAL);
+	int sa = run(&pl, &a);
+	ok(sa == ANVIL_OK && a.Pmax.err <= tgt * a.Pmax.val && !strstr(a.note, "the band"),
+	   "  at its planned band: P_max %.6g +- %.2g N meets normal, no doubling", a.Pmax.val,
+	   a.Pmax.err);
+	struct anvil_wave_job *j = &pl.row[ANVIL_MODEL_LAYER].job;
+	j->omega_idx -= ANVIL_CACHE_STEPS;
+	j->omega = anvil_cache_grid(j->omega_idx);
+	j->twin_idx = j->omega_idx - ANVIL_CACHE_STEPS;
+	int sb = run(&pl, &b);
+	ok(sb == ANVIL_OK && strstr(b.note, "the band 2x the plan's") && a.Pmax.val == b.Pmax.val &&
+		   a.ts.val == b.ts.val && a.tmax.val == b.tmax.val && a.Rf.val == b.Rf.val,
+	   "  at half of it the solver doubles it (%s) to the same bits",
+	   strstr(b.note, "the band") ? strstr(b.note, "the band") : "no doubling");
+	anvil_result_free(&a);
+	anvil_result_free(&b);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(6);
+	plan(9);
 	struct anvil_plan thin, paper, thick, thick_paper;
 	int st = plan_of("0.1r0", ANVIL_CONTACT_PHYSICAL, &thin) |
 		 plan_of("0.1r0", ANVIL_CONTACT_PAPER, &paper) |
@@ -90,5 +128,6 @@ int main(void)
 	   c.Pmax.val, c.Pmax.err);
 	anvil_result_free(&a);
 	anvil_result_free(&c);
+	wide_band();
 	return done_testing();
 }

@@ -11,7 +11,7 @@
 #include "plate.h"
 
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc);
+			 enum anvil_accuracy acc, double split_f);
 
 /* The adaptive splitting's work over the starting panels: it bisects
  * towards each Lamb-mode pole until the pieces are as narrow as the poles'
@@ -21,11 +21,18 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
  * min(1, hh/2)^(1/4)).  Fitted on 383 responses (tests/test_work.c's
  * generator, another seed, h/r0 0.18-25, draft and normal): the
  * prediction was within 0.73-1.36 of the count; the form before (a
- * function of hh alone) was off by 0.33-2.2. */
-static double refine(double hh, double tau_end)
+ * function of hh alone) was off by 0.33-2.2.
+ * Those bands were 2 and more (the floor then).  Below, on a thick
+ * layer whose floor falls as 4/hh (plan.c), the splitting grows less:
+ * on the grid's physical rows at h/r0 2-100 (windows 300-12000) the
+ * fraction of the fitted growth it showed was 0.97, 0.76, 0.40, 0.17
+ * and about 0 at bands 2, 1.6, 0.8, 0.4 and 0.25.  With the factor
+ * min(1, omega/2) the 60 rows of h/r0 1-1000 over 3e5 evaluations are
+ * priced 0.89-1.10 of their count (1.6-3.7 without). */
+static double refine(double hh, double tau_end, double omega)
 {
 	double w0 = fmin(1.0, 2.0 / hh), l = fmax(0.0, log2(tau_end * w0 / 16.0));
-	return 1.0 + 0.5 * pow(l, 1.25) * pow(fmin(1.0, 0.5 * hh), 0.25);
+	return 0.5 * pow(l, 1.25) * pow(fmin(1.0, 0.5 * hh), 0.25) * fmin(1.0, 0.5 * omega);
 }
 
 /* The tail's 16-wide starting pieces (kernel.h) end up split about 2.5
@@ -46,7 +53,7 @@ double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
 	double xr;
 	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
 		return NAN;
-	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc);
+	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc, 1.0);
 }
 
 double anvil_plan_inversion_window(double hh, double tau_end)
@@ -56,8 +63,9 @@ double anvil_plan_inversion_window(double hh, double tau_end)
 	return t1 > 0 ? t1 : tau_end;
 }
 
+/* split_f: the splitting's share times this (PHYS_EVAL_F, a point load's) */
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc)
+			 enum anvil_accuracy acc, double split_f)
 {
 	struct anvil_green_settings gs;
 	double t1 = anvil_plate_t1(hh, tau_end);
@@ -76,7 +84,7 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 		panels += stride * (ceil(kband / anvil_kband_piece(hh, kband)) +
 				    KTAIL_SPLIT * ceil((kend - kband) / ANVIL_KTAIL_PIECE));
 	}
-	return 21.0 * refine(hh, tau_end) * panels;
+	return 21.0 * (1.0 + split_f * refine(hh, tau_end, omega)) * panels;
 }
 
 
@@ -125,9 +133,12 @@ static double plate_nodes(double hh, double tau_end)
  * physical_errors): four corrections (the point load and the Hertz patch at
  * the job's bandwidth, the patch below, the point load at half the band),
  * each a little dearer than the r0 patch's response (the point load's
- * integrand does not decay with k: PHYS_EVAL_F, fitted on 30 scenes, h/r0
- * 0.3-9, 3 g-0.3 kg, 0.3-30 m/s: predicted/actual evaluations 0.8-1.15;
- * the price of the r0 response alone was 3.6-5.2 times short).  Corrections
+ * integrand does not decay with k: its pieces split PHYS_EVAL_F times as
+ * often, fitted on 30 scenes, h/r0 0.3-9, 3 g-0.3 kg, 0.3-30 m/s:
+ * predicted/actual evaluations 0.8-1.15; the price of the r0 response
+ * alone was 3.6-5.2 times short; a set that splits nothing, a short
+ * window's, makes exactly its starting pieces' evaluations, which the
+ * factor on the whole had priced 1.3 times over).  Corrections
  * already in the cache cost nothing.  Those missing are made as one set
  * (solver_phys.c phys_prefetch, green.h anvil_green_alloc_set): the kernel is
  * evaluated once per node for all of them, so the set's evaluations are
@@ -162,7 +173,7 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
 		if (w == ANVIL_CACHE_NONE) {
 			double om = anvil_cache_grid(load[i].omega_idx);
-			double e = PHYS_EVAL_F * corr_evals(j->hh, nu, sqrt(xr), om, tq, acc);
+			double e = corr_evals(j->hh, nu, sqrt(xr), om, tq, acc, PHYS_EVAL_F);
 			sum += e;
 			widest = fmax(widest, e);
 			/* the plate's nodes once: the solver keeps its K(t) table
@@ -212,9 +223,13 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * of the frozen segments, impact_grow.c hist_cmax, and the plate's K(t)
  * was made once per window, plan_work.c), and every step of the window at
  * dt still costs the ramp's table (IMPACT_TAB, s; measured 0.7-1.2 us per
- * window step in PHYS_RUNS' units).  On the 9 long contacts of
- * scripts/bench section 13 that run (cold, one thread) the physical row's
- * whole prediction is then 1.0-1.5 times the process' CPU time. */
+ * window step in PHYS_RUNS' units before the plate's tail left the
+ * samples beyond T1 out, 0.44-0.47 us after: 19 grid rows of 3.4e5 and
+ * 6e5 window steps, priced 1.9-2.3 times their CPU at 1 us).  On the 18
+ * long contacts of scripts/bench section 13 (cold, one thread) the
+ * physical row's whole prediction is then 0.73-1.52 times the process'
+ * CPU time, and 0.55 on h = 0.05 r0, 10 kg at 1 m/s, whose band the
+ * solver doubles (lambda* = 9000: plan.c, PHYS_WIDE_LAMBDA). */
 /* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
  * both passes), and the far field's cost per grown node and frozen level
  * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
@@ -222,7 +237,7 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
 #define IMPACT_FAR 1.0e-6
 #define IMPACT_GROWN 12.0
 #define IMPACT_HIST 3.5e-6
-#define IMPACT_TAB 1.0e-6
+#define IMPACT_TAB 4.5e-7
 double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
 {
 	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
