@@ -78,12 +78,24 @@ static void wide_band(void)
 	   strstr(b.note, "the band") ? strstr(b.note, "the band") : "no doubling");
 	anvil_result_free(&a);
 	anvil_result_free(&b);
+
+	/* 1 kg at 1 km/s on h = 0.02 r0 (lambda* 5.6e4): the contact is wider
+	 * than the layer, which is why the row is refused, whatever the wide
+	 * band's terms would cost (24298, over the limit: the refusal said so
+	 * first) */
+	anvil_scene_set(&sc, "layer.thickness", "0.02r0", NULL, 0, &e);
+	anvil_scene_set(&sc, "impactor.mass", "1kg", NULL, 0, &e);
+	anvil_scene_set(&sc, "impact.velocity", "1000m/s", NULL, 0, &e);
+	bad = scene_plan(&sc, &pl, &e);
+	const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+	ok(!bad && r->status && strstr(r->refusal, "exceeds h"), "1 kg at 1 km/s: refused for a/h (%s)",
+	   bad ? e.msg : r->refusal);
 }
 
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(9);
+	plan(10);
 	struct anvil_plan thin, paper, thick, thick_paper;
 	int st = plan_of("0.1r0", ANVIL_CONTACT_PHYSICAL, &thin) |
 		 plan_of("0.1r0", ANVIL_CONTACT_PAPER, &paper) |

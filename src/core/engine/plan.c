@@ -454,7 +454,7 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
  * solver's doubled round, without the round it threw away (the same
  * bits), and the plan prices what runs. */
 #define PHYS_WIDE_LAMBDA 1e4
-static void phys_band(const struct est *e, struct anvil_wave_job *j)
+static void phys_band(const struct est *e, int widen, struct anvil_wave_job *j)
 {
 	const struct anvil_level *lev = anvil_level(e->pb->accuracy);
 	if (!lev || !(j->t_rise > 0))
@@ -463,7 +463,7 @@ static void phys_band(const struct est *e, struct anvil_wave_job *j)
 		j->dt = PHYS_RISE * j->t_rise / j->nsteps;
 	double om = lev->cycles / (2.0 * j->t_rise * e->p.c2 / e->p.r0);
 	double want = fmax(om, j->omega);
-	int wide = e->p.lambda_star >= PHYS_WIDE_LAMBDA;
+	int wide = widen && e->p.lambda_star >= PHYS_WIDE_LAMBDA;
 	if (want > j->omega || wide) {
 		j->omega = wide ? 2.0 * want : want;
 		j->omega_idx = anvil_cache_grid_up(want) + (wide ? ANVIL_CACHE_STEPS : 0);
@@ -633,8 +633,16 @@ static void physical_row(const struct est *e, const struct anvil_cache *cache, e
 	double a = sqrt(e->p.r0 * anvil_hertz_alpha_max() * e->p.T * e->p.V0);
 	double patch = anvil_plan_patch(fmin(1.0, a / e->p.r0));
 	struct anvil_wave_job pj = e->lay;
-	if (layer)
-		phys_band(e, &pj);
+	if (layer) {
+		phys_band(e, 1, &pj);
+		/* the wide band only where it is not refused: the solver would
+		 * not have widened it there either (solver_phys.c) */
+		if (anvil_wave_refuse(&e->p, e->pb->dt, m, &pj, anvil_wave_window(&pj, 0), pj.omega,
+				      NULL)) {
+			pj = e->lay;
+			phys_band(e, 0, &pj);
+		}
+	}
 	double cost = layer ? physical_cost(e, &pj, cache, patch, &where) : hs_cost;
 	int run = r->run;
 	enum anvil_plan_why off = r->off;
@@ -653,10 +661,11 @@ static void physical_row(const struct est *e, const struct anvil_cache *cache, e
 	row_fig(r, ANVIL_FIG_A_HERTZ);
 	if (layer)
 		row_fig(r, ANVIL_FIG_T_REFLECT);
-	r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job, anvil_wave_window(&r->job, 0),
-				      r->job.omega, &err);
-	if (!r->status && layer)
-		r->status = thin_refuse(&e->p, m, &err);
+	/* a contact wider than the layer first: then no cost matters */
+	r->status = layer ? thin_refuse(&e->p, m, &err) : ANVIL_OK;
+	if (!r->status)
+		r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job,
+					      anvil_wave_window(&r->job, 0), r->job.omega, &err);
 	if (r->status)
 		snprintf(r->refusal, sizeof r->refusal, "%s", err.msg);
 }
