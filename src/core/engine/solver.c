@@ -321,7 +321,9 @@ int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err)
 {
 	double tgt = anvil_accuracy_target(acc);
-	double e_p = r->Pmax.err / r->Pmax.val, e_t = r->ts.err / r->ts.val;
+	/* at rest (impact_rest.c) t_s is when the rebound's bound fell within
+	 * the target, known to the bound's halving time, not a contact's end */
+	double e_p = r->Pmax.err / r->Pmax.val, e_t = r->rest_bound > 0 ? 0.0 : r->ts.err / r->ts.val;
 	double e_r = r->Rf.err / fmax(fabs(r->Rf.val), 0.1);
 	if (!isfinite(r->ts.val) || !isfinite(r->Pmax.val) || !isfinite(r->Rf.val) || !(r->ts.val > 0) ||
 	    !(r->Pmax.val > 0) || r->Rf.val > 1.0 + fmax(10.0 * r->Rf.err, 1e-6))

@@ -61,10 +61,12 @@ struct pass {
 	double Pmax_run; /* the largest P so far (co_moving) */
 	/* the rest state (impact_rest.c): rest_k the first node at rest (0:
 	 * none), with the contacts then and the rebound's bound (relative to
-	 * V0); rest 1 when the pass ended there (t_s = t[rest_k]) */
+	 * V0); rest 1 when the pass ended there (t_s = t[rest_k]); rest_t2 the
+	 * first co-moving node's time with the bound within twice rest_tol
+	 * (0: none), what t_s's sensitivity is measured against */
 	int rest;
 	size_t rest_k, rest_ncont;
-	double rest_bound;
+	double rest_bound, rest_t2;
 };
 
 /* A frozen segment of a grown step (impact_grow.c): its nodes 1 .. S-1
