@@ -383,4 +383,16 @@ check 'a 1 kg rod on h = 0.05 r0 at 3 m/s, draft' "$ANVIL" run -m layer -s solve
 assert '...yields by the bending, and the line ends whole' \
 	grep -q "^anvil: the steel layer yields: .*bending stress at the far face .*, the larger: judged on it$" "$tmp/err"
 
+# ---- accuracy: a miss by the model's own error is said to be that ----
+# The physical contact on the paper's case: fine's numerics are within 1e-4
+# of reference, its own estimate 2.3e-4, of which the radiation lag's next
+# term 2.1e-4 (result.h, model_err).
+check_exit 1 'accuracy on the default scene: fine and reference miss' "$ANVIL" accuracy
+assert '...fine by the model'"'"'s own error, said so' \
+	awk '$1 == "fine" && $NF == "model" && $(NF-1) == "MISSED:" { f = 1 } END { exit !f }' "$tmp/out"
+assert '...and a footnote says no finer level lowers it' \
+	grep -q "no finer level lowers it" "$tmp/out"
+check_exit 1 'run at fine: the warning names the model'"'"'s share' "$ANVIL" run -q -m layer -s solver.accuracy=fine
+assert '...of which the model'"'"'s own' grep -q "of which the model's own [0-9.e-]* (no finer level lowers it)" "$tmp/err"
+
 done_testing

@@ -282,6 +282,7 @@ static int history_decimate(struct anvil_result *r, size_t nhist)
  * by m1 V_s^2 d when V_s moves by d V_s. */
 void solver_add_model_error(struct anvil_result *r, const struct anvil_params *p, double d)
 {
+	r->model_err += d;
 	r->ts.err += d * r->ts.val;
 	r->tmax.err += d * r->tmax.val;
 	r->Pmax.err += d * r->Pmax.val;
@@ -330,6 +331,11 @@ int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 		return anvil_err_set(err, ANVIL_ENUM,
 				     "%s: the solution is unphysical (t_s = %.3g us, P_max = %.3g N, R_f = %.3g): the time stepping is unstable for this scene",
 				     anvil_model_name(r->model), r->ts.val * 1e6, r->Pmax.val, r->Rf.val);
+	if ((e_p > tgt || e_t > tgt || e_r > tgt) && r->model_err > tgt)
+		return anvil_err_set(err, ANVIL_WTOL,
+				     "%s: accuracy '%s' (%.0e) not reached: estimated errors P_max %.1e, t_s %.1e, R_f %.1e, of which the model's own %.1e (no finer level lowers it)",
+				     anvil_model_name(r->model), anvil_accuracy_name(acc), tgt, e_p, e_t, e_r,
+				     r->model_err);
 	if (e_p > tgt || e_t > tgt || e_r > tgt)
 		return anvil_err_set(err, ANVIL_WTOL,
 				     "%s: accuracy '%s' (%.0e) not reached: estimated errors P_max %.1e, t_s %.1e, R_f %.1e",

@@ -496,6 +496,7 @@ static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 	 * fraction f of their values (plan.c's estimate; 0.4 % of P_max against
 	 * f = 1.3 % on the paper's half-space) and E_a by f m1 V0^2 / 2 */
 	double d = M_PI * a / (p->c2 * r->ts.val) * pl->fig[ANVIL_FIG_RADIATED];
+	r->model_err += d;
 	r->ts.err += d * r->ts.val;
 	r->tmax.err += d * r->tmax.val;
 	r->Pmax.err += d * r->Pmax.val;
