@@ -184,6 +184,15 @@ check_exit 1 '-o a directory exits 1' "$ANVIL" run "$M" -o "$K/dir"
 assert 'and says it is a directory' grep -q 'is a directory' "$tmp/err"
 assert 'the directory is untouched' empty_dir "$K/dir"
 assert 'no temporary file is left anywhere' [ -z "$(find "$K" -name '*.tmp*')" ]
+# A full disk on standard output is said, not only exit 1 (qa5: silent);
+# a closed pipe (| head) stays quiet.
+if [ -c /dev/full ]; then
+	check_exit 1 'standard output on a full disk: exit 1' sh -c "\"\$ANVIL\" run $M >/dev/full"
+	assert '...and says why' grep -q 'standard output: write failed: No space left' "$tmp/err"
+else
+	skip 'standard output on a full disk: exit 1' 'no /dev/full'
+	skip '...and says why' 'no /dev/full'
+fi
 # -o onto the scene file being read, or two outputs on one file: refused
 # before any work, the scene intact (qa5: the scene was replaced by the
 # table, and --history lost to -o, both with exit 0)

@@ -413,8 +413,10 @@ int cli_out_commit_err(struct cli_out *o, struct anvil_err *err)
 		o->f = NULL;
 		if (fflush(stdout) == 0 && !ferror(stdout))
 			return ANVIL_OK;
-		return anvil_err_set(err, ANVIL_EIO, "standard output: write failed: %s",
-				     strerror(errno));
+		int e = errno;
+		anvil_err_set(err, ANVIL_EIO, "standard output: write failed: %s", strerror(e));
+		errno = e; /* cli_out_commit tells a closed pipe from a full disk */
+		return ANVIL_EIO;
 	}
 	if (!o->f)
 		return anvil_err_set(err, ANVIL_EIO, "output not open");
@@ -440,8 +442,9 @@ int cli_out_commit(struct cli_out *o)
 	struct anvil_err err = {0};
 	int to_stdout = o->f == stdout;
 	int st = cli_out_commit_err(o, &err);
-	/* standard output's failure (a closed pipe) stays quiet, as before */
-	if (st && !to_stdout)
+	/* a closed pipe (head) stays quiet; a full disk or an I/O error on
+	 * standard output is said, or "> /dev/full" exits 1 without a word */
+	if (st && (!to_stdout || errno != EPIPE))
 		cli_error("%s", err.msg);
 	return st;
 }
