@@ -184,6 +184,29 @@ check_exit 1 '-o a directory exits 1' "$ANVIL" run "$M" -o "$K/dir"
 assert 'and says it is a directory' grep -q 'is a directory' "$tmp/err"
 assert 'the directory is untouched' empty_dir "$K/dir"
 assert 'no temporary file is left anywhere' [ -z "$(find "$K" -name '*.tmp*')" ]
+# A full disk on standard output is said, not only exit 1 (qa5: silent);
+# a closed pipe (| head) stays quiet.
+if [ -c /dev/full ]; then
+	check_exit 1 'standard output on a full disk: exit 1' sh -c "\"\$ANVIL\" run $M >/dev/full"
+	assert '...and says why' grep -q 'standard output: write failed: No space left' "$tmp/err"
+else
+	skip 'standard output on a full disk: exit 1' 'no /dev/full'
+	skip '...and says why' 'no /dev/full'
+fi
+# -o onto the scene file being read, or two outputs on one file: refused
+# before any work, the scene intact (qa5: the scene was replaced by the
+# table, and --history lost to -o, both with exit 0)
+printf '[layer]\nthickness = 2 r0\n' >"$K/my.scene"
+cp "$K/my.scene" "$K/my.bak"
+check_exit 1 '-o the scene file read is refused' "$ANVIL" run "$K/my.scene" "$M" -o "$K/my.scene"
+assert '...saying so' grep -q 'my.scene: is the scene file read: refused' "$tmp/err"
+assert '...the scene intact' cmp -s "$K/my.scene" "$K/my.bak"
+ln -s my.scene "$K/my-link.scene"
+check_exit 1 '...also through a link and another spelling' "$ANVIL" plan "$K/../kinds/my.scene" -o "$K/my-link.scene"
+assert '...the scene still intact' cmp -s "$K/my.scene" "$K/my.bak"
+check_exit 1 '-o and --history on one file are refused' "$ANVIL" run "$M" -o "$K/both.tsv" --history "$K/./both.tsv"
+assert '...saying which' grep -q 'both.tsv: is another output of this command' "$tmp/err"
+assert '...and nothing is written' [ ! -e "$K/both.tsv" ] && [ -z "$(find "$K" -name '*.tmp*')" ]
 
 # ---- signals ----
 # One SIGINT or SIGTERM ends a long run at once, 128 + signal, and takes

@@ -27,6 +27,16 @@ for c in run table materials accuracy plot tui sweep merge thickness fit dem; do
 done
 
 # ---- EXAMPLES ----
+# A sentence that starts a line starts a paragraph: "...on a terminal:
+# .B anvil tui" ran on into "A restitution table..." (qa5).
+assert 'EXAMPLES: each capitalised text line opens a paragraph (.PP)' awk '
+	/^\.SH /      { ex = ($0 == ".SH EXAMPLES"); prev = $0; next }
+	!ex            { next }
+	/^\.EX/        { in_ex = 1 }
+	/^\.EE/        { in_ex = 0 }
+	!in_ex && /^[A-Z]/ && prev !~ /^\.(PP|SH)/ { print "after " prev ": " $0; bad = 1 }
+	{ prev = $0 }
+	END { exit bad }' "$page"
 # The "$ command" lines of the .EX blocks of EXAMPLES, with the roff
 # escapes used there turned back into what a user types.
 awk '/^\.SH /      { ex = ($0 == ".SH EXAMPLES"); next }

@@ -143,6 +143,30 @@ head -n 4 long.tsv >cut.tsv
 printf '4\t32\t1.2' >>cut.tsv # a row cut short by a kill -9
 check "--resume after a kill mid-row" $ANVIL sweep $LONG -o cut.tsv --resume -q
 assert "...drops the cut row and completes the file" cmp -s cut.tsv long.tsv
+# A signal during a scene's layer row, with a model after it that still
+# finishes (the half-space): the scene is no result, not a row "failed:
+# cancelled" that --resume would then keep (qa5).
+SLOW="-m layer,halfspace -s impactor.mass=1kg layer.thickness=0.02r0 -j 1"
+$ANVIL sweep $SLOW -o slow.tsv -q 2>slow.err &
+pid=$!
+n=0
+while [ $n -lt 600 ] && [ -z "$(ls slow.tsv.tmp* 2>/dev/null)" ] && kill -0 $pid 2>/dev/null; do
+	sleep 0.05
+	n=$((n + 1))
+done
+sleep 0.5 # into the layer row (about 4 s)
+sent=0
+kill -TERM $pid 2>/dev/null && sent=1
+rc=0
+wait $pid || rc=$?
+if [ "$sent" -eq 1 ] && [ "$rc" -ne 0 ]; then
+	assert "SIGTERM in a scene's layer row, halfspace after it: exit 143" [ "$rc" -eq 143 ]
+	assert "...no row of that scene (none 'cancelled')" \
+		sh -c '[ "$(wc -l <slow.tsv)" -eq 1 ] && ! grep -q cancelled slow.tsv'
+	assert "...says interrupted, not failed" grep -q 'interrupted: 0 of 2 rows' slow.err
+else
+	skip "SIGTERM in a scene's layer row, halfspace after it: exit 143" "the sweep ended (exit $rc) before the signal"
+fi
 cp long.tsv long.bak
 check_exit 2 "--resume refuses another sweep's file" $ANVIL sweep $D -m hertz 'impact.velocity=1m/s' -o long.tsv --resume
 assert "...and leaves it alone" cmp -s long.tsv long.bak

@@ -146,6 +146,9 @@ assert "anvil run gives the t_s the TUI showed ($run_ts = $after)" [ "$run_ts" =
 T resize-window -t main -x 60 -y 20
 assert 'a 60x20 terminal gets the size message' \
 	wait_for main 'anvil needs at least 80x24; this terminal is 60x20'
+T resize-window -t main -x 20 -y 8
+assert 'a 20x8 terminal still learns the size it needs (the message wraps)' \
+	wait_for main '^ *80x24; this terminal *$'
 T resize-window -t main -x 100 -y 30
 assert 'back at 100x30 the screen returns' wait_for main 'Results'
 

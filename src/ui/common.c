@@ -70,9 +70,71 @@ static int scene_warnings(const struct anvil_scene *sc, const char *path)
 	return ANVIL_OK;
 }
 
+/* ---- files a command reads or writes, so that -o never replaces them ----
+ * By canonical name (the directory's real path and the base name, links
+ * resolved): "-o my.scene" beside "my.scene", or "-o r.tsv --history
+ * ./r.tsv", replace the scene read or lose one output silently.  The CLI's
+ * cli_out_open refuses them; cli_out_open_err (the TUI saving its scene to
+ * the file it read) does not look. */
+#define FILES_MAX 8
+static struct {
+	char *name;
+	const char *what;          /* "the scene file read", "another output..." */
+	const struct cli_out *out; /* the output, NULL for an input */
+} files[FILES_MAX];
+
+/* path's canonical name (malloc'd), or NULL when its directory is missing. */
+static char *canon_name(const char *path)
+{
+	const char *slash = strrchr(path, '/');
+	const char *base = slash ? slash + 1 : path;
+	char *dir = slash ? strndup(path, (size_t)(slash - path) + (slash == path)) : strdup(".");
+	char *real = dir ? realpath(dir, NULL) : NULL, *name = NULL;
+	free(dir);
+	if (real && (name = malloc(strlen(real) + strlen(base) + 2)))
+		sprintf(name, "%s/%s", real, base);
+	free(real);
+	return name;
+}
+
+static void files_add(const char *path, const char *what, const struct cli_out *out)
+{
+	for (int i = 0; i < FILES_MAX; i++)
+		if (!files[i].name) {
+			if ((files[i].name = canon_name(path))) {
+				files[i].what = what;
+				files[i].out = out;
+			}
+			return;
+		}
+}
+
+static void files_forget(const struct cli_out *out)
+{
+	for (int i = 0; i < FILES_MAX; i++)
+		if (files[i].name && files[i].out == out) {
+			free(files[i].name);
+			files[i].name = NULL;
+		}
+}
+
+/* What dest (an output, links resolved) already is, or NULL. */
+static const char *files_clash(const char *dest)
+{
+	char *name = canon_name(dest);
+	const char *what = NULL;
+	for (int i = 0; name && !what && i < FILES_MAX; i++)
+		if (files[i].name && strcmp(files[i].name, name) == 0)
+			what = files[i].what;
+	free(name);
+	return what;
+}
+
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets)
 {
+	if (path && strcmp(path, "-") != 0)
+		files_add(path, "the scene file read", NULL);
 	struct anvil_err err = {0};
 	anvil_scene_default(sc);
 	int st = path ? anvil_scene_load(sc, path, &err) : ANVIL_OK;
@@ -320,15 +382,24 @@ int cli_out_open_err(struct cli_out *o, const char *path, struct anvil_err *err)
 int cli_out_open(struct cli_out *o, const char *path)
 {
 	struct anvil_err err = {0};
+	const char *what = NULL;
 	int st = cli_out_open_err(o, path, &err);
+	if (!st && o->dest && !o->direct && (what = files_clash(o->dest))) {
+		cli_out_abort(o);
+		st = anvil_err_set(&err, ANVIL_EIO, "%s: is %s: refused (give another name)", path,
+				   what);
+	}
 	if (st)
 		cli_error("%s", err.msg);
+	else if (o->dest && !o->direct) /* devices and FIFOs may be shared */
+		files_add(o->dest, "another output of this command", o);
 	return st;
 }
 
 /* Free the names, forget the slot. */
 static void out_clear(struct cli_out *o)
 {
+	files_forget(o);
 	tmp_unregister(o->slot);
 	free(o->tmp);
 	free(o->dest);
@@ -342,8 +413,10 @@ int cli_out_commit_err(struct cli_out *o, struct anvil_err *err)
 		o->f = NULL;
 		if (fflush(stdout) == 0 && !ferror(stdout))
 			return ANVIL_OK;
-		return anvil_err_set(err, ANVIL_EIO, "standard output: write failed: %s",
-				     strerror(errno));
+		int e = errno;
+		anvil_err_set(err, ANVIL_EIO, "standard output: write failed: %s", strerror(e));
+		errno = e; /* cli_out_commit tells a closed pipe from a full disk */
+		return ANVIL_EIO;
 	}
 	if (!o->f)
 		return anvil_err_set(err, ANVIL_EIO, "output not open");
@@ -369,8 +442,9 @@ int cli_out_commit(struct cli_out *o)
 	struct anvil_err err = {0};
 	int to_stdout = o->f == stdout;
 	int st = cli_out_commit_err(o, &err);
-	/* standard output's failure (a closed pipe) stays quiet, as before */
-	if (st && !to_stdout)
+	/* a closed pipe (head) stays quiet; a full disk or an I/O error on
+	 * standard output is said, or "> /dev/full" exits 1 without a word */
+	if (st && (!to_stdout || errno != EPIPE))
 		cli_error("%s", err.msg);
 	return st;
 }

@@ -160,6 +160,19 @@ static int pool_take(struct pool *p, size_t *u, size_t *idx)
 	return 1;
 }
 
+/* A scene with any run cut short by a signal (the models after it may
+ * still finish: the half-space after a cancelled layer row) is no result:
+ * kept, --resume would take its cancelled row for a failed one. */
+static int cut_short(const struct sweep_done *d)
+{
+	if (d->st == ANVIL_ECANCEL)
+		return 1;
+	for (int i = 0; i < d->n; i++)
+		if (d->r[i].status == ANVIL_ECANCEL)
+			return 1;
+	return 0;
+}
+
 static void *worker(void *arg)
 {
 	struct pool *p = arg;
@@ -180,9 +193,11 @@ static void *worker(void *arg)
 		pthread_mutex_lock(&p->mu);
 		if (!d)
 			p->halt = 1;
-		/* a run cut short by a signal is not a result */
-		else if (halted(p) && d->n && d->r[d->n - 1].status == ANVIL_ECANCEL)
+		else if (halted(p) && cut_short(d)) {
+			for (int i = 0; i < d->n; i++)
+				anvil_result_free(&d->r[i]);
 			free(d), d = NULL;
+		}
 		p->slot[idx - p->s0] = d;
 		p->done += d != NULL;
 		pthread_cond_broadcast(&p->cv);

@@ -405,17 +405,37 @@ static void place_cursor(const struct tui_model *m)
 
 /* ---- the screens ---- */
 
+/* The size message, centred; on a terminal narrower than the message its
+ * words go on as many lines as they need (a 20x8 terminal must still learn
+ * the size it needs). */
 static void draw_small(void)
 {
-	char msg[96];
+	char msg[96], *w[16];
+	int nw = 0, len[16];
 	snprintf(msg, sizeof msg, "anvil needs at least %dx%d; this terminal is %dx%d",
 		 TUI_MIN_COLS, TUI_MIN_ROWS, COLS, LINES);
-	int n = (int)strlen(msg);
-	int x = n < COLS ? (COLS - n) / 2 : 0;
+	for (char *t = strtok(msg, " "); t && nw < 16; t = strtok(NULL, " "))
+		len[nw] = (int)strlen(t), w[nw++] = t;
+	int lines = 1, cur = 0;
+	for (int i = 0; i < nw; i++) {
+		if (cur && cur + 1 + len[i] > COLS)
+			lines++, cur = 0;
+		cur += (cur ? 1 : 0) + len[i];
+	}
+	int y = LINES / 2 - lines / 2;
 	curs_set(0);
-	tui_put(LINES / 2, x, COLS - x, tui_attr(R_ERROR), msg);
-	tui_put(LINES / 2 + 1, COLS > 14 ? (COLS - 14) / 2 : 0, COLS, tui_attr(R_DIM),
-	    "(q to quit)");
+	for (int i = 0; i < nw && y < LINES; y++) {
+		char line[96] = "";
+		int n = 0;
+		do {
+			n += snprintf(line + n, sizeof line - (size_t)n, "%s%s", n ? " " : "", w[i]);
+			i++;
+		} while (i < nw && n + 1 + len[i] <= COLS);
+		int x = n < COLS ? (COLS - n) / 2 : 0;
+		tui_put(y, x, COLS - x, tui_attr(R_ERROR), line);
+	}
+	if (y < LINES)
+		tui_put(y, COLS > 11 ? (COLS - 11) / 2 : 0, COLS, tui_attr(R_DIM), "(q to quit)");
 }
 
 static void draw_main(const struct tui_model *m, const struct tui_view *v)
