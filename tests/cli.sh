@@ -406,6 +406,11 @@ check 'a 1 kg rod on h = 0.05 r0 at 3 m/s, draft' "$ANVIL" run -m layer -s solve
 assert '...yields by the bending, and the line ends whole' \
 	grep -q "^anvil: the steel layer yields: .*bending stress at the far face .*, the larger: judged on it$" "$tmp/err"
 
+# ---- the table keeps a tiny restitution (it printed 0.0000 beside V_s) ----
+check 'zener on a 1 mm plate' "$ANVIL" run -m zener -s layer.thickness=1mm
+assert '...R_f in four significant digits, not 0.0000' \
+	awk '$1 == "zener" { f = ($10 ~ /^6\.316e-06$/) } END { exit !f }' "$tmp/out"
+
 # ---- accuracy: a miss by the model's own error is said to be that ----
 # The physical contact on the paper's case: fine's numerics are within 1e-4
 # of reference, its own estimate 2.3e-4, of which the radiation lag's next

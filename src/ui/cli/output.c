@@ -381,11 +381,11 @@ static const struct column columns[] = {
 	{"tmax_us", "tmax_err_us", "t_max/us", 1e6, RV(tmax.val), RV(tmax.err), "%.2f", 0},
 	{"Pmax_kN", "Pmax_err_kN", "P_max/kN", 1e-3, RV(Pmax.val), RV(Pmax.err), "%#.4g", 0},
 	{"Vs_m_s", NULL, "V_s/(m/s)", 1, RV(Vs.val), 0, "%#.4g", 0},
-	{"Rf", "Rf_err", "R_f", 1, RV(Rf.val), RV(Rf.err), "%.4f", 0},
+	{"Rf", "Rf_err", "R_f", 1, RV(Rf.val), RV(Rf.err), "%#.4g", 0},
 	{"Ea_J", "Ea_err_J", "E_a/J", 1, RV(Ea.val), RV(Ea.err), "%#.3g", 0},
 	/* Zener's parameters describe the plate model: only its row has them */
-	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%.4f", 1},
-	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%.4f", 1},
+	{"lambda_star", NULL, "lambda*", 1, RV(lambda_star), 0, "%#.4g", 1},
+	{"Rf_star", NULL, "R*_f", 1, RV(Rf_star), 0, "%#.4g", 1},
 };
 #define NCOLUMNS ((int)(sizeof columns / sizeof columns[0]))
 
