@@ -85,6 +85,8 @@ assert 'map: 20 x 10 rows' [ "$(rows "$tmp/map.tsv")" -eq 200 ]
 assert 'map: r from 0 to 3 r0, z from 0 to h' \
 	awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ { r = $1 > r ? $1 : r; z = $2 > z ? $2 : z } END { exit !(r == 12 && z == 4) }' "$tmp/map.tsv"
 assert 'map: at the peak force by default' grep -q '^# anvil map: von Mises stress at t = 17.2' "$tmp/map.tsv"
+assert 'map: it names its load, the paper'"'"'s patch, beside the verdict'"'"'s true contact' \
+	grep -q "^# anvil map: .* over the paper's patch, r0 = 4 mm; the yield verdict takes the true contact radius" "$tmp/map.tsv"
 assert 'map: the yield check' grep -q '^# yield check: peak von Mises' "$tmp/map.tsv"
 assert 'map: von Mises >= 0 everywhere' awk -F '\t' '!/^#/ && $1 ~ /^[0-9.eE+-]+$/ && $3 < 0 { bad = 1 } END { exit bad }' "$tmp/map.tsv"
 
@@ -115,6 +117,7 @@ assert 'script: symmetric colours for a signed stress' grep -q '^set cbrange \[-
 assert 'script: the S front and the P reflection are drawn' \
 	sh -c "grep -q \"title 'S wave\" '$tmp/map.gp' && grep -q \"title 'P reflected from the bottom'\" '$tmp/map.gp'"
 assert 'script: the Rayleigh front is drawn' grep -q "title 'Rayleigh wave" "$tmp/map.gp"
+assert 'script: the note under the map names the load' grep -q "load: patch r0 = 4 mm (the verdict: true contact)" "$tmp/map.gp"
 assert 'script: 20 rows of 30 points' [ "$(awk '/^\$map/ { on = 1; next } /^EOD/ { on = 0 } on && NF == 3' "$tmp/map.gp" | wc -l | tr -d ' ')" -eq 600 ]
 assert '--script only: no TSV on standard output' [ ! -s "$tmp/out" ]
 
