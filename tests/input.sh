@@ -70,6 +70,13 @@ check_exit 2 '  --strict after the command too' "$ANVIL" plan "$tmp/heavy.scene"
 check_exit 2 '-s impact.velocity=6km/s --strict' "$ANVIL" run $M -s impact.velocity=6km/s --strict
 assert '  "command line: impact.velocity"' grep -q "command line: impact.velocity: 6 km/s is above 5 km/s" "$tmp/err"
 assert '  nothing on stdout' test ! -s "$tmp/out"
+printf '[impactor]\nshape = ball\ndiameter = 10 mm\nmass = 1 kg\n' >"$tmp/dense.scene"
+check 'a 1 kg ball of 10 mm runs' "$ANVIL" plan "$tmp/dense.scene"
+assert '  warned: heavier than a solid ball (FILE:LINE of the mass)' \
+	grep -q "^anvil: warning: $tmp/dense.scene:4: impactor.mass: 1 kg is above 4.7[0-9] g (a solid ball of this diameter and material" "$tmp/err"
+check 'a 4 g ball of 10 mm, or its own mass, is silent' "$ANVIL" plan -s impactor.shape=ball \
+	-s impactor.diameter=10mm -s impactor.mass=4g
+assert '  no warning' test ! -s "$tmp/err"
 check '--strict on a plausible scene is silent' "$ANVIL" --strict plan
 assert '  no warning' test ! -s "$tmp/err"
 

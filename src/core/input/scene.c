@@ -686,6 +686,12 @@ int anvil_scene_warnings(const struct anvil_scene *sc, struct anvil_scene_warnin
 		 "no contact radius of 1 um .. 1 m");
 	warn_body(&l, ANVIL_SEC_IMPACTOR, &sc->impactor);
 	warn_body(&l, ANVIL_SEC_LAYER, &sc->layer);
+	/* a ball heavier than a solid one of its diameter (1 kg as a 10 mm
+	 * ball: 240 times solid copper) is no ball; lighter is a hollow one */
+	double solid = anvil_ball_mass(sc->impactor.mat.rho, 2.0 * sc->radius);
+	if (sc->shape == ANVIL_SHAPE_BALL && solid > 0)
+		warn_add(&l, ANVIL_SEC_IMPACTOR, "mass", sc->mass, ANVIL_DIM_MASS, 0.0, 1.01 * solid,
+			 "a solid ball of this diameter and material: a ball cannot be heavier");
 	if (!isinf(h))
 		warn_add(&l, ANVIL_SEC_LAYER, "thickness", h, ANVIL_DIM_LENGTH, PLAUS_THICKNESS,
 			 "no layer of 1 um .. 100 m");
