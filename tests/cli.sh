@@ -406,6 +406,12 @@ check 'a 1 kg rod on h = 0.05 r0 at 3 m/s, draft' "$ANVIL" run -m layer -s solve
 assert '...yields by the bending, and the line ends whole' \
 	grep -q "^anvil: the steel layer yields: .*bending stress at the far face .*, the larger: judged on it$" "$tmp/err"
 
+# ---- hertz: one contact, with or without the histories (nan without) ----
+check 'hertz, tsv' "$ANVIL" run -m hertz -f tsv
+assert '...contacts 1' awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { exit !($c["contacts"] == 1) }' "$tmp/out"
+check 'hertz, tsv, with its history' "$ANVIL" run -m hertz -f tsv -o "$tmp/h.tsv" --history "$tmp/hh.tsv"
+assert '...contacts 1 there too' awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { exit !($c["contacts"] == 1) }' "$tmp/h.tsv"
+
 # ---- the table keeps a tiny restitution (it printed 0.0000 beside V_s) ----
 check 'zener on a 1 mm plate' "$ANVIL" run -m zener -s layer.thickness=1mm
 assert '...R_f in four significant digits, not 0.0000' \

@@ -40,6 +40,11 @@ static void hertz_fill(const struct anvil_params *p, struct anvil_result *r)
 	r->Vs.err = r->Rf.err = r->Ea.err = 0.0;
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
+	/* one contact on a rigid layer, with or without the histories (the
+	 * column read nan without them, 1 with: qa5) */
+	r->ncontacts = 1;
+	r->contact_on[0] = 0.0;
+	r->contact_off[0] = r->t_free = r->ts.val;
 	snprintf(r->note, sizeof r->note, "layer taken as rigid (w = 0)");
 }
 
