@@ -80,6 +80,10 @@ assert '  no warning' test ! -s "$tmp/err"
 check '--strict on a plausible scene is silent' "$ANVIL" --strict plan
 assert '  no warning' test ! -s "$tmp/err"
 
+# A number beyond a double is out of range, not "not a velocity".
+check_exit 2 '-s impact.velocity=1e999m/s exits 2' "$ANVIL" plan -s impact.velocity=1e999m/s
+assert '  "out of range"' grep -q "impact.velocity: expected a velocity such as '10 m/s', got '1e999m/s' (out of range)" "$tmp/err"
+
 # "brass" is not a typo of "glass".
 check_exit 2 '-s layer.material=brass exits 2' "$ANVIL" plan -s layer.material=brass
 assert '  no glass suggested; how to define it' grep -q "'brass' is not a built-in material: define it with \[material brass\]" "$tmp/err"

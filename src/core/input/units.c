@@ -173,9 +173,18 @@ int anvil_units_parse(const char *text, enum anvil_dim dim, double *si,
 
 	double v = 0;
 	const char *end = read_number(text, n, &v), *u = end;
-	if (!end)
+	if (!end) {
+		/* a number beyond a double ('1e999 m/s') is out of range, not
+		 * something other than a number */
+		char *e;
+		errno = 0;
+		double t = strtod(text, &e);
+		if (e != text && (size_t)(e - text) <= n && isinf(t))
+			return anvil_err_set(err, ANVIL_EPARSE, "expected %s such as '%s', got '%.*s' (out of range)",
+					     d->noun, d->example, (int)n, text);
 		return anvil_err_set(err, ANVIL_EPARSE, "expected %s such as '%s', got '%.*s'",
 				     d->noun, d->example, (int)n, text);
+	}
 	while ((size_t)(u - text) < n && isspace((unsigned char)*u))
 		++u;
 	size_t un = n - (size_t)(u - text);
