@@ -464,8 +464,8 @@ static void test_plate_patch(void)
 	int kst = anvil_plate_k(hh, 0.3, 0.0, 3.7, &k0);
 	ok(!kst && fabs(k0 * 16.0 * beta * hh - 1.0) < 1e-12,
 	   "point load: K(t)/t^2 = alpha*/2 (%.15g against %.15g)", k0, 1.0 / (16.0 * beta * hh));
-	const double patch[] = { 0.0, 0.5 };
-	for (int i = 0; i < 2; i++) {
+	const double patch[] = { 0.0, 0.5, 1.0 };
+	for (int i = 0; i < 3; i++) {
 		struct anvil_green_settings gs;
 		struct anvil_err e;
 		double worst = 0, rel = 0;

@@ -1,7 +1,9 @@
 /* test_tail: the layer correction's plate tail (plate.h, green.h
  * anvil_green_t_plate): beyond T1 the response is the plate's closed form,
  * not samples to the window's end.
- *  - the K(t)/t^2 table's interpolant against its quadrature between nodes;
+ *  - the K(t)/t^2 and S(t)/t tables' interpolants against their quadratures
+ *    between nodes; S's quadrature against 30-digit values, its
+ *    coefficients against the layer's kernel;
  *  - the closed form against a cubic spline through its own samples at the
  *    inversion's step (the response before: the plate's model sampled to the
  *    window's end and interpolated), on h = 0.1, 0.5, 2 r0;
@@ -10,6 +12,7 @@
  *    below 8 T1, its error bound per time, and the plate's memo;
  *  - the cache's round trip to the bit, and a damaged tail refused;
  *  - anvil_green_t_plate's value, and the planner's arithmetic. */
+#include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +24,8 @@
 
 #include "cache.h"
 #include "green.h"
+#include "layer_bc.h"
+#include "material.h"
 #include "plan.h"
 #include "plate.h"
 #include "tap.h"
@@ -43,28 +48,117 @@ static struct anvil_green *make(double hh, double tau_end, double omega, int no_
 
 static double t1_of(double hh) { return 64.0 * fmax(1.0, hh); }
 
-/* The table (32 nodes an octave, cubic B-spline quasi-interpolant) against
- * K's quadrature at the midpoints between nodes, where its error is the
- * largest, from T1/8 to 1e6 T1. */
+/* The tables (32 nodes an octave, cubic B-spline quasi-interpolant)
+ * against their quadratures at the midpoints between nodes, where their
+ * error is the largest, from T1/8 to the window's end: K/t^2 relative, S/t
+ * (which crosses zero at its transition) against its largest value. */
 static void test_k_table(const struct anvil_green *g, double hh)
 {
 	struct anvil_green_samples s;
 	struct anvil_plate_tail tl;
 	anvil_green_export(g, &s);
-	int st = anvil_plate_tail_init(&tl, hh, 0.3, s.patch, s.t1, s.tail_c, s.tail_v, s.tau_end, s.nk, s.k);
-	double worst = 0, h = M_LN2 / ANVIL_PLATE_PER_OCTAVE;
+	int st = anvil_plate_tail_init(&tl, hh, 0.3, s.patch, s.t1, s.tail_c, s.tail_v, s.tau_end,
+				       s.nk, s.k, s.shear);
+	double worst = 0, sworst = 0, smax = 0, h = M_LN2 / ANVIL_PLATE_PER_OCTAVE;
 	for (double u = log(s.t1 / 8.0) + 0.5 * h; !st && u < log(s.tau_end); u += 7.0 * h) {
-		double q, t = exp(u);
-		if (anvil_plate_k(hh, 0.3, s.patch, t, &q)) {
+		double q, qs, t = exp(u);
+		if (anvil_plate_k(hh, 0.3, s.patch, t, &q) || anvil_plate_s(hh, 0.3, s.patch, t, &qs)) {
 			st = 1;
 			break;
 		}
 		worst = fmax(worst, fabs(anvil_plate_tail_k(&tl, t) - q) / q);
+		sworst = fmax(sworst, fabs(anvil_plate_tail_s(&tl, t) - qs));
+		smax = fmax(smax, fabs(qs));
 	}
 	ok(!st && worst < 1e-9,
 	   "h = %g r0: K(t)/t^2 from its table within %.1e of its quadrature between nodes", hh,
 	   worst);
+	ok(!st && smax > 0 && sworst < 1e-9 * smax,
+	   "h = %g r0: S(t)/t from its table within %.1e of its largest value, %.3g", hh,
+	   sworst / smax, smax);
 	anvil_plate_tail_free(&tl);
+}
+
+/* S(t)/t's quadrature (plate.c) against the same integrals in 30-digit
+ * arithmetic (mpmath: the interval to U = 64 pi by Gauss-Legendre between
+ * the multiples of pi, the oscillating tails by quadosc, the smooth one in
+ * closed form, checked there against quadosc in k), and S_0 = 0. */
+static void test_s_quadrature(void)
+{
+	const struct {
+		double hh, patch, t, want;
+	} c[] = { { 0.5, 0.125, 2.0, 0.488419318395233303582 },
+		  { 0.02, 1.0, 3.7, -0.0264228723408396551656 },
+		  { 0.02, 1.0, 300.0, 4.60176782813155808507 } };
+	double worst = 0, v0 = 1;
+	int st = anvil_plate_s(0.02, 0.3, 0.0, 100.0, &v0);
+	for (size_t i = 0; !st && i < sizeof c / sizeof c[0]; i++) {
+		double v;
+		st = anvil_plate_s(c[i].hh, 0.3, c[i].patch, c[i].t, &v);
+		worst = fmax(worst, fabs(v - c[i].want) * c[i].hh);
+	}
+	ok(!st && worst < 1e-12 && v0 == 0.0,
+	   "S(t)/t's quadrature within %.1e/hh of 30-digit values (on and off its zero); 0 for a "
+	   "point load", worst);
+}
+
+/* The coefficients of S (plate.c) are the layer's: its surface under a
+ * surface load, W = Q (1 + h^2 k^2/5)/(D k^4 + rho h s^2 (1 + gamma h^2
+ * k^2)) to first order in (kh)^2, gamma = (17 - 7 nu)/(60 (1 - nu)).  From
+ * the layer's own kernel at kh = 0.0025 (the next order: 4e-11 of W, 6e-6
+ * of the coefficients) for s^2 rho h = 1e-6 and 1 times D k^4: W P - 1 =
+ * (kh)^2 (1/5 - gamma r/(1 + r)).  Mindlin's plate would give 0.289 and
+ * 0.373 at nu = 0.3. */
+static void test_s_coefficients(void)
+{
+	const double nus[] = { 0.0, 0.3, 0.45 }, hh = 0.0025, k = 1.0;
+	double worst = 0;
+	for (int i = 0; i < 3; i++) {
+		double nu = nus[i], D = hh * hh * hh / (6.0 * (1.0 - nu)), beta = sqrt(D / hh), f[2];
+		const double r[2] = { 1e-6, 1.0 };
+		for (int j = 0; j < 2; j++) {
+			struct anvil_layer_bc bc;
+			double s = sqrt(r[j]) * beta * k * k;
+			anvil_layer_bc_solve(k, s, anvil_kappa2(nu), hh, &bc);
+			double w = creal(anvil_layer_bc_w_halfspace(&bc) +
+					 anvil_layer_bc_w_correction(&bc));
+			f[j] = (w * (D * k * k * k * k + hh * s * s) - 1.0) / (k * k * hh * hh);
+		}
+		double gamma = (17.0 - 7.0 * nu) / (60.0 * (1.0 - nu));
+		worst = fmax(worst, fmax(fabs(f[0] - 0.2), fabs(2.0 * (f[0] - f[1]) - gamma)));
+	}
+	ok(worst < 2e-4, "the layer to first order in (kh)^2: its load's 1/5 and its flexural "
+	   "branch's (17 - 7 nu)/(60 (1 - nu)), nu = 0 .. 0.45, to %.1e", worst);
+}
+
+/* S's table on the thinnest plate, the paper's patch, where S/t bends most
+ * (its transition at patch^2/beta = 102): the quasi-interpolant of the
+ * nodes' quadratures against the quadrature between them, from T1/8. */
+static void test_s_table_thin(void)
+{
+	double hh = 0.02, patch = 1.0, tau_end = 512.0, t1 = anvil_plate_t1(hh, tau_end);
+	size_t nk = anvil_plate_nodes(t1, tau_end);
+	double *k = malloc(2 * nk * sizeof *k), *sh = k + nk, c[3] = { 0, 0, 0 };
+	double u0 = log(t1 / 17.0), h = M_LN2 / ANVIL_PLATE_PER_OCTAVE, worst = 0, smax = 0;
+	int st = 0;
+	for (size_t i = 0; !st && i < nk; i++) {
+		double t = exp(u0 + (double)i * h);
+		st = anvil_plate_k(hh, 0.3, patch, t, &k[i]) || anvil_plate_s(hh, 0.3, patch, t, &sh[i]);
+	}
+	struct anvil_plate_tail tl;
+	st = st || anvil_plate_tail_init(&tl, hh, 0.3, patch, t1, c, 0.0, tau_end, nk, k, sh);
+	for (double u = log(t1 / 8.0) + 0.5 * h; !st && u < log(tau_end); u += 3.0 * h) {
+		double q, t = exp(u);
+		st = anvil_plate_s(hh, 0.3, patch, t, &q);
+		worst = fmax(worst, fabs(anvil_plate_tail_s(&tl, t) - q));
+		smax = fmax(smax, fabs(q));
+	}
+	ok(!st && smax > 0 && worst < 1e-9 * smax,
+	   "h = 0.02 r0, patch r0: S(t)/t from its table within %.1e of its largest value, %.3g",
+	   smax > 0 ? worst / smax : 0, smax);
+	if (!st)
+		anvil_plate_tail_free(&tl);
+	free(k);
 }
 
 /* The closed form beyond T1 against the response before this change: the
@@ -198,7 +292,7 @@ out:
 	anvil_plate_memo_free(m);
 }
 
-/* The cache's file (format 8): a tailed response written and read back
+/* The cache's file (format 10): a tailed response written and read back
  * gives the same bits, beyond T1 too; a damaged tail (a coefficient, a
  * node) is refused by the importer. */
 static void test_cache(void)
@@ -225,6 +319,7 @@ static void test_cache(void)
 	ok(!rc && h && x.n == y.n && x.nk == y.nk && x.t1 == y.t1 &&
 		   !memcmp(x.ramp, y.ramp, x.n * sizeof *x.ramp) &&
 		   !memcmp(x.k, y.k, x.nk * sizeof *x.k) &&
+		   !memcmp(x.shear, y.shear, x.nk * sizeof *x.shear) &&
 		   !memcmp(x.tail_c, y.tail_c, sizeof x.tail_c) && same_at(g, h, 1e-3, tend),
 	   "cache: a tailed response (window %g = %.3g T1, %zu samples, %zu nodes) read back to "
 	   "the bit, beyond T1 too", tend, tend / t1, x.n, x.nk);
@@ -242,6 +337,15 @@ static void test_cache(void)
 	h = anvil_green_import(&z, &e);
 	ok(!h, "  a K node negative: refused");
 	anvil_green_free(h);
+	double *sh = malloc(x.nk * sizeof *sh);
+	memcpy(sh, x.shear, x.nk * sizeof *sh);
+	sh[x.nk / 2] = NAN;
+	z = x;
+	z.shear = sh;
+	h = anvil_green_import(&z, &e);
+	ok(!h, "  an S node not finite: refused");
+	anvil_green_free(h);
+	free(sh);
 	z = x;
 	z.nk--;
 	h = anvil_green_import(&z, &e);
@@ -295,6 +399,9 @@ int main(void)
 		test_against_samples(hs[i]);
 		test_join(hs[i]);
 	}
+	test_s_quadrature();
+	test_s_coefficients();
+	test_s_table_thin();
 	test_long_window();
 	test_cache();
 	test_t_plate();

@@ -494,6 +494,7 @@ void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples 
 		s->tail_v = g->tail.v;
 		s->nk = g->tail.nk;
 		s->k = g->tail.k;
+		s->shear = g->tail.shear;
 	}
 }
 
@@ -519,7 +520,7 @@ static int sizes_ok(const struct anvil_green_samples *s)
 	    !(fabs(4.0 * r1 - N) <= 1e-9 * N))
 		return 0;
 	size_t n1 = (size_t)floor(r1) + 2;
-	if (t1 > 0 && !(s->t1 == (double)(n1 - 2) * s->dtau && s->k))
+	if (t1 > 0 && !(s->t1 == (double)(n1 - 2) * s->dtau && s->k && s->shear))
 		return 0;
 	if (t1 == 0 && (s->t1 != 0 || s->nk != 0))
 		return 0;
@@ -577,7 +578,7 @@ static int tail_import(struct anvil_green *g, const struct anvil_green_samples *
 		       struct anvil_err *err)
 {
 	int st = anvil_plate_tail_init(&g->tail, s->hh, s->nu, s->patch, s->t1, s->tail_c,
-				       s->tail_v, s->tau_end, s->nk, s->k);
+				       s->tail_v, s->tau_end, s->nk, s->k, s->shear);
 	g->tailed = 1;
 	for (size_t j = s->n - ANVIL_PLATE_PAD; !st && j < s->n; j++)
 		if (anvil_plate_tail_ramp(&g->tail, (double)j * s->dtau) != s->ramp[j])

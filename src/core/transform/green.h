@@ -183,9 +183,11 @@ struct anvil_green_samples {
 	double tail_v;    /* its validation misfit (anvil_green_abserr_at) */
 	size_t nk;        /* the K(t)/t^2 table, k[0..nk-1] */
 	const double *k;
+	const double *shear; /* the S(t)/t table (Mindlin's term), shear[0..nk-1] */
 };
 
-/* Fill s from g; s->ramp and s->k are borrowed from g (valid while g lives). */
+/* Fill s from g; s->ramp, s->k and s->shear are borrowed from g (valid
+ * while g lives). */
 void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s);
 /* A response from samples (copied; the spline is rebuilt from them, so it
  * evaluates to the bit as the exported one did).  Its evals count is 0.

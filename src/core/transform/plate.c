@@ -7,6 +7,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_multifit.h>
+#include <gsl/gsl_sf_expint.h>
 
 #include "kernel.h"
 #include "material.h"
@@ -67,7 +68,7 @@ static double tail_osc(double u, void *v)
 
 struct kwork {
 	gsl_integration_workspace *w, *wc;
-	gsl_integration_qawo_table *tab;
+	gsl_integration_qawo_table *tab, *tabc; /* sin u, cos u (S's) */
 };
 
 static int k_over_t2(double beta, double hh, double patch, double t, struct kwork *kw,
@@ -89,12 +90,14 @@ static int kwork_alloc(struct kwork *kw)
 {
 	*kw = (struct kwork){ gsl_integration_workspace_alloc(1000),
 			      gsl_integration_workspace_alloc(1000),
-			      gsl_integration_qawo_table_alloc(1.0, 1.0, GSL_INTEG_SINE, 25) };
-	return kw->w && kw->wc && kw->tab ? ANVIL_OK : ANVIL_ENOMEM;
+			      gsl_integration_qawo_table_alloc(1.0, 1.0, GSL_INTEG_SINE, 25),
+			      gsl_integration_qawo_table_alloc(1.0, 1.0, GSL_INTEG_COSINE, 25) };
+	return kw->w && kw->wc && kw->tab && kw->tabc ? ANVIL_OK : ANVIL_ENOMEM;
 }
 
 static void kwork_free(struct kwork *kw)
 {
+	gsl_integration_qawo_table_free(kw->tabc);
 	gsl_integration_qawo_table_free(kw->tab);
 	gsl_integration_workspace_free(kw->wc);
 	gsl_integration_workspace_free(kw->w);
@@ -108,6 +111,104 @@ int anvil_plate_k(double hh, double nu, double patch, double t, double *val)
 	int st = kwork_alloc(&kw);
 	if (!st)
 		st = k_over_t2(plate_beta(hh, nu), hh, patch, t, &kw, val);
+	kwork_free(&kw);
+	return st;
+}
+
+/* ---- S(t), the layer's first-order term (shear, rotary inertia) ----
+ *
+ * To first order in (kh)^2 the layer's surface under a surface load Q
+ * moves as
+ *   W = Q (1 + h^2 k^2/5) / (D k^4 + rho h s^2 (1 + gamma h^2 k^2)),
+ *   gamma = (17 - 7 nu)/(60 (1 - nu)),
+ * gamma the known first correction of the flexural (A0) branch of
+ * Rayleigh-Lamb, 1/5 the load's (shear and the thickness's compression
+ * under it): both measured against the layer's own kernel
+ * (anvil_layer_bc, hh = 0.0025, nu = 0 .. 0.45) to 4 digits.  Mindlin's
+ * plate has eps = 1/(6 kappa (1 - nu)) = 0.29 and r2 + eps = 0.37 in their
+ * places (nu = 0.3, kappa = pi^2/12): with them the fitted c x log x had
+ * to take back 31 % of the patch's t log t, and could not (worst error 4
+ * times this term's at T1 = 32, h = 0.02 r0, patch 1).  Where the plate
+ * holds, s ~ beta k^2 and the s^4 and s^2 terms of the next order are
+ * (kh)^4, with the rest of that order a near-constant the fit's a carries.
+ * To first order W - Q/P = Q k^2 h^2 [1/(5 P) - rho h s^2 gamma/P^2], P =
+ * D k^4 + rho h s^2; for the ramp Q = zhat/s^2, inverted with u = beta k^2
+ * t as K is (h^2/beta^2 = 6 (1 - nu)):
+ *   S(t)/t = (A I1 - B I2)/hh,  A = 3 (1 - nu)/5,  B = (17 - 7 nu)/40,
+ *   I1 = int_0^inf Z (u - sin u)/u^2 du,  I2 = int_0^inf Z (sin u - u cos u)/u^2 du,
+ * Z = zhat(patch sqrt(u/(beta t))).  I1 grows like log(beta t/patch^2)/(2 pi):
+ * S is the patch's own t log t, and its transition at t ~ patch^2/beta
+ * (100 at h = 0.02 r0, patch 1) is what the fitted a + b x + c x log x
+ * could not follow.  A point load's I1 diverges (the (kh)^2 expansion's log
+ * under a point, which the layer cuts off at k ~ 1/h): S_0 = 0, and the
+ * fit's c x log x carries its t log t. */
+struct sp {
+	struct kp p; /* first: k_load's */
+	double a, b; /* A and B */
+};
+
+static double s_integrand(double u, void *v)
+{
+	const struct sp *q = v;
+	double i1, i2; /* (u - sin u)/u^2, (sin u - u cos u)/u^2: series where they cancel */
+	if (u < 1e-2) {
+		double u2 = u * u;
+		i1 = u * (1.0 / 6.0 - u2 / 120.0 + u2 * u2 / 5040.0);
+		i2 = u * (1.0 / 3.0 - u2 / 30.0 + u2 * u2 / 840.0);
+	} else {
+		double sn = sin(u);
+		i1 = (u - sn) / (u * u);
+		i2 = (sn - u * cos(u)) / (u * u);
+	}
+	return k_load(&q->p, u) * (q->a * i1 - q->b * i2);
+}
+
+/* Beyond U: A Z/u, -(A + B) Z sin(u)/u^2 and B Z cos(u)/u (these two by
+ * qawf).  The first, in k = patch sqrt(u/(beta t)), is 2 A int_k0^inf
+ * zhat(k)/k dk = 2 A [zhat(k0)/3 + (sin k0/k0 - Ci(k0))/(2 pi)] (its
+ * derivative is -zhat/k; zhat's own series where sin - k cos cancels):
+ * qagiu missed 1e-12 on its oscillation. */
+static double s_smooth(double k0)
+{
+	return anvil_kernel_zhat(k0) / 3.0 + (sin(k0) / k0 - gsl_sf_Ci(k0)) / (2.0 * M_PI);
+}
+
+static double s_sin(double u, void *v)
+{
+	return k_load(v, u) / (u * u);
+}
+
+static double s_cos(double u, void *v)
+{
+	return k_load(v, u) / u;
+}
+
+/* S(t)/t to 1e-12 relative or 1e-13/hh absolute (where it crosses zero,
+ * near t = patch^2/(8 beta)) on [0, U] and 1e-12/hh absolute beyond (S/t
+ * is of order 1/hh); 0 for a point load (above). */
+static int s_over_t(double beta, double hh, double nu, double patch, double t, struct kwork *kw,
+		    double *val)
+{
+	*val = 0.0;
+	if (patch == 0.0)
+		return ANVIL_OK;
+	struct sp q = { { beta, t, patch }, 0.6 * (1.0 - nu), (17.0 - 7.0 * nu) / 40.0 };
+	gsl_function F = { s_integrand, &q }, S = { s_sin, &q.p }, C = { s_cos, &q.p };
+	double a, b = s_smooth(patch * sqrt(K_SPLIT / (beta * t))), c, d, ea, ec, ed;
+	int st = gsl_integration_qag(&F, 0.0, K_SPLIT, 1e-13, 1e-12, 1000, GSL_INTEG_GAUSS31,
+				     kw->w, &a, &ea);
+	st = st || gsl_integration_qawf(&S, K_SPLIT, 1e-12, 1000, kw->w, kw->wc, kw->tab, &c, &ec);
+	st = st || gsl_integration_qawf(&C, K_SPLIT, 1e-12, 1000, kw->w, kw->wc, kw->tabc, &d, &ed);
+	*val = (a + 2.0 * q.a * b - (q.a + q.b) * c + q.b * d) / hh;
+	return st || !isfinite(*val) ? ANVIL_ENUM : ANVIL_OK;
+}
+
+int anvil_plate_s(double hh, double nu, double patch, double t, double *val)
+{
+	struct kwork kw;
+	int st = kwork_alloc(&kw);
+	if (!st)
+		st = s_over_t(plate_beta(hh, nu), hh, nu, patch, t, &kw, val);
 	kwork_free(&kw);
 	return st;
 }
@@ -135,9 +236,10 @@ size_t anvil_plate_nodes(double t1, double tau_end)
 	return (size_t)ceil((log(tau_end) - node_u0(t1)) / K_H) + 5;
 }
 
-/* One table: its plate, load and grid (compared exactly) and its nodes. */
+/* One table: its plate, load and grid (compared exactly) and its nodes,
+ * K/t^2 in k[0..n-1] and S/t in k[cap..cap+n-1] (one block). */
 struct memo_table {
-	double beta, hh, patch, u0;
+	double beta, hh, nu, patch, u0;
 	size_t n, cap;
 	double *k;
 	unsigned long used; /* when last used: the oldest is replaced */
@@ -165,14 +267,17 @@ void anvil_plate_memo_free(struct anvil_plate_memo *m)
 	free(m);
 }
 
-/* k[i] for i in [from, n) at the grid u0 of tl's plate and load. */
-static int nodes_make(const struct anvil_plate_tail *tl, size_t from, size_t n, double *k)
+/* tl->k[i] and tl->shear[i] for i in [from, n) at the grid u0 of tl's
+ * plate and load. */
+static int nodes_make(const struct anvil_plate_tail *tl, size_t from, size_t n)
 {
 	struct kwork kw;
 	int st = kwork_alloc(&kw);
-	for (size_t i = from; !st && i < n; i++)
-		st = k_over_t2(tl->beta, tl->hh, tl->patch, exp(tl->u0 + (double)i * K_H), &kw,
-			       &k[i]);
+	for (size_t i = from; !st && i < n; i++) {
+		double t = exp(tl->u0 + (double)i * K_H);
+		st = k_over_t2(tl->beta, tl->hh, tl->patch, t, &kw, &tl->k[i]);
+		st = st || s_over_t(tl->beta, tl->hh, tl->nu, tl->patch, t, &kw, &tl->shear[i]);
+	}
 	kwork_free(&kw);
 	return st;
 }
@@ -185,8 +290,8 @@ static struct memo_table *memo_table(struct anvil_plate_memo *m, const struct an
 	struct memo_table *old = &m->t[0];
 	for (int i = 0; i < MEMO_TABLES; i++) {
 		struct memo_table *e = &m->t[i];
-		if (e->n && e->beta == tl->beta && e->hh == tl->hh && e->patch == tl->patch &&
-		    e->u0 == tl->u0) {
+		if (e->n && e->beta == tl->beta && e->hh == tl->hh && e->nu == tl->nu &&
+		    e->patch == tl->patch && e->u0 == tl->u0) {
 			*same = 1;
 			return e;
 		}
@@ -197,46 +302,56 @@ static struct memo_table *memo_table(struct anvil_plate_memo *m, const struct an
 	return old;
 }
 
-/* The first n nodes into tl->k: the memo's where it has them (the same
- * plate, load and grid), the rest computed (and then the memo's). */
+/* The first n nodes into tl->k and tl->shear: the memo's where it has
+ * them (the same plate, load and grid), the rest computed (and then the
+ * memo's). */
 static int nodes_get(struct anvil_plate_memo *m, const struct anvil_plate_tail *tl, size_t n)
 {
-	double *k = tl->k;
 	int same = 0;
 	struct memo_table *e = m ? memo_table(m, tl, &same) : NULL;
 	size_t have = same ? (e->n < n ? e->n : n) : 0;
-	if (have)
-		memcpy(k, e->k, have * sizeof *k);
-	int st = nodes_make(tl, have, n, k);
+	if (have) {
+		memcpy(tl->k, e->k, have * sizeof *tl->k);
+		memcpy(tl->shear, e->k + e->cap, have * sizeof *tl->shear);
+	}
+	int st = nodes_make(tl, have, n);
 	if (st || !e)
 		return st;
 	e->used = ++m->clock;
 	if (same && e->n >= n)
 		return ANVIL_OK;
-	if (e->cap < n) {
-		double *nk = realloc(e->k, n * sizeof *nk);
-		if (!nk)
-			return ANVIL_OK; /* the memo stays as it was: only a cost */
-		e->k = nk;
-		e->cap = n;
+	if (e->cap < n) { /* all n are copied below: nothing to keep */
+		free(e->k);
+		*e = (struct memo_table){ .k = malloc(2 * n * sizeof *e->k), .cap = n,
+					  .used = e->used };
+		if (!e->k) {
+			e->cap = 0;
+			return ANVIL_OK; /* the memo lost the table: only a cost */
+		}
 	}
-	memcpy(e->k, k, n * sizeof *k);
+	memcpy(e->k, tl->k, n * sizeof *e->k);
+	memcpy(e->k + e->cap, tl->shear, n * sizeof *e->k);
 	e->beta = tl->beta;
 	e->hh = tl->hh;
+	e->nu = tl->nu;
 	e->patch = tl->patch;
 	e->u0 = tl->u0;
 	e->n = n;
 	return ANVIL_OK;
 }
 
+/* The B-spline coefficients bc of the n node values k. */
+static void qi_coefs(const double *k, size_t n, double *bc)
+{
+	bc[0] = bc[1] = bc[n - 2] = bc[n - 1] = 0.0; /* not used */
+	for (size_t i = 2; i + 2 < n; i++)
+		bc[i] = (k[i - 2] - 10.0 * k[i - 1] + 54.0 * k[i] - 10.0 * k[i + 1] + k[i + 2]) / 36.0;
+}
+
 static void tail_coefs(struct anvil_plate_tail *tl)
 {
-	const double *k = tl->k;
-	size_t n = tl->nk;
-	tl->bc[0] = tl->bc[1] = tl->bc[n - 2] = tl->bc[n - 1] = 0.0; /* not used */
-	for (size_t i = 2; i + 2 < n; i++)
-		tl->bc[i] = (k[i - 2] - 10.0 * k[i - 1] + 54.0 * k[i] - 10.0 * k[i + 1] + k[i + 2]) /
-			    36.0;
+	qi_coefs(tl->k, tl->nk, tl->bc);
+	qi_coefs(tl->shear, tl->nk, tl->shear_bc);
 }
 
 /* The interval j (its coefficients j-1 .. j+2 exist: 3 <= j <= nk - 5) and
@@ -250,13 +365,14 @@ static size_t tail_at(const struct anvil_plate_tail *tl, double t, double *f)
 	return (size_t)j;
 }
 
-/* K(t)/t^2 and (d) its derivative in log t. */
-static double k_interp(const struct anvil_plate_tail *tl, double t, double *d)
+/* The table of coefficients bc (K/t^2's or S/t's) at t, and (d) its
+ * derivative in log t. */
+static double qi_interp(const struct anvil_plate_tail *tl, const double *bc, double t, double *d)
 {
 	double f;
 	size_t j = tail_at(tl, t, &f);
 	double g = 1.0 - f;
-	const double *b = tl->bc + j - 1;
+	const double *b = bc + j - 1;
 	double f2 = f * f, f3 = f2 * f;
 	if (d)
 		*d = (-0.5 * g * g * b[0] + (1.5 * f2 - 2.0 * f) * b[1] +
@@ -265,23 +381,24 @@ static double k_interp(const struct anvil_plate_tail *tl, double t, double *d)
 		(-3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0) * b[2] + f3 * b[3]) / 6.0;
 }
 
-/* The second derivative in log t of k_interp's (piecewise linear: the
+/* The second derivative in log t of qi_interp's (piecewise linear: the
  * cubic B-spline's). */
-static double k_interp2(const struct anvil_plate_tail *tl, double t)
+static double qi_interp2(const struct anvil_plate_tail *tl, const double *bc, double t)
 {
 	double f;
 	size_t j = tail_at(tl, t, &f);
-	const double *b = tl->bc + j - 1;
+	const double *b = bc + j - 1;
 	return ((1.0 - f) * b[0] + (3.0 * f - 2.0) * b[1] + (1.0 - 3.0 * f) * b[2] + f * b[3]) /
 	       (K_H * K_H);
 }
 
 /* ---- the model and its fit ---- */
 
-/* g - (K - s_hs t) at t, the part fitted */
+/* K + S - s_hs t at t: g less the part fitted */
 static double plate_part(const struct anvil_plate_tail *tl, double t)
 {
-	return t * t * k_interp(tl, t, NULL) - tl->shs * t;
+	return t * (t * qi_interp(tl, tl->bc, t, NULL) + qi_interp(tl, tl->shear_bc, t, NULL)) -
+	       tl->shs * t;
 }
 
 static void basis(const struct anvil_plate_tail *tl, double t, double *b)
@@ -306,21 +423,31 @@ double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t)
 
 double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t)
 {
-	double d, s = k_interp(tl, t, &d), x = t / tl->t1;
-	return t * (2.0 * s + d) - tl->shs + (tl->c[1] + tl->c[2] * (log(x) + 1.0)) / tl->t1;
+	/* K = t^2 k(log t): K' = t (2 k + k'); S = t s(log t): S' = s + s' */
+	double d, k = qi_interp(tl, tl->bc, t, &d), ds, s = qi_interp(tl, tl->shear_bc, t, &ds);
+	double x = t / tl->t1;
+	return t * (2.0 * k + d) + s + ds - tl->shs +
+	       (tl->c[1] + tl->c[2] * (log(x) + 1.0)) / tl->t1;
 }
 
 double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t)
 {
-	/* K = t^2 k(log t): K'' = 2 k + 3 k' + k''; the fit's a + b x + c x log x
-	 * (x = t/T1) and -s_hs t leave c/(T1 t) */
-	double d, s = k_interp(tl, t, &d);
-	return 2.0 * s + 3.0 * d + k_interp2(tl, t) + tl->c[2] / (tl->t1 * t);
+	/* K'' = 2 k + 3 k' + k'', S'' = (s' + s'')/t; the fit's a + b x + c x
+	 * log x (x = t/T1) and -s_hs t leave c/(T1 t) */
+	double d, k = qi_interp(tl, tl->bc, t, &d), ds;
+	qi_interp(tl, tl->shear_bc, t, &ds);
+	return 2.0 * k + 3.0 * d + qi_interp2(tl, tl->bc, t) +
+	       (ds + qi_interp2(tl, tl->shear_bc, t) + tl->c[2] / tl->t1) / t;
 }
 
 double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t)
 {
-	return k_interp(tl, t, NULL);
+	return qi_interp(tl, tl->bc, t, NULL);
+}
+
+double anvil_plate_tail_s(const struct anvil_plate_tail *tl, double t)
+{
+	return qi_interp(tl, tl->shear_bc, t, NULL);
 }
 
 double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t)
@@ -396,10 +523,12 @@ static int tail_alloc(struct anvil_plate_tail *tl, double hh, double nu, double 
 					 .u0 = node_u0(t1) };
 	if (nk < 10)
 		return ANVIL_EINVAL;
-	tl->k = malloc(2 * nk * sizeof *tl->k);
+	tl->k = malloc(4 * nk * sizeof *tl->k);
 	if (!tl->k)
 		return ANVIL_ENOMEM;
 	tl->bc = tl->k + nk;
+	tl->shear = tl->k + 2 * nk;
+	tl->shear_bc = tl->k + 3 * nk;
 	return ANVIL_OK;
 }
 
@@ -434,7 +563,7 @@ int anvil_plate_tail_make(double hh, double nu, double patch, double dtau, size_
 
 int anvil_plate_tail_init(struct anvil_plate_tail *tl, double hh, double nu, double patch,
 			  double t1, const double c[3], double v, double tau_end, size_t nk,
-			  const double *k)
+			  const double *k, const double *shear)
 {
 	if (!(t1 > 0) || !(patch >= 0 && isfinite(patch)) || nk != anvil_plate_nodes(t1, tau_end) ||
 	    !(v >= 0 && isfinite(v)) ||
@@ -444,12 +573,15 @@ int anvil_plate_tail_init(struct anvil_plate_tail *tl, double hh, double nu, dou
 	}
 	int st = tail_alloc(tl, hh, nu, patch, t1, nk);
 	double alpha = 1.0 / (8.0 * tl->beta * hh);
+	/* S/t: finite, and 0 for a point load (plate.c) */
 	for (size_t i = 0; !st && i < nk; i++)
-		if (!(k[i] > 0 && k[i] <= alpha))
+		if (!(k[i] > 0 && k[i] <= alpha) || !isfinite(shear[i]) ||
+		    (patch == 0 && shear[i] != 0))
 			st = ANVIL_EINVAL;
 	if (st)
 		return st;
 	memcpy(tl->k, k, nk * sizeof *k);
+	memcpy(tl->shear, shear, nk * sizeof *shear);
 	memcpy(tl->c, c, sizeof tl->c);
 	tl->v = v;
 	tail_coefs(tl);

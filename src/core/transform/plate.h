@@ -13,38 +13,48 @@
  * tends to pi/(8 pi) = 1/8 as zhat -> 1/(2 pi); for a point load it is
  * that from the start) and carries the patch's t log t correction
  * exactly: on a thin plate p^2/(beta t) is not small at T1 (6 at T1/4,
- * h = 0.02 r0, p = 1), so no fitted term could stand in for it.  The layer correction (layer less half-space,
- * whose late ramp is the static compliance times t) is then
- *   g(t) = K(t) - s_hs t + a + b t + c t log t + o(1/t) ...,
- * the last three terms the local (thickness-direction) compliance and the
- * shear and rotary inertia of a thick (Mindlin) plate, whose leading
- * effect on the impulse response decays like 1/t.  They are fitted to the
- * inversion over [T1/4, T1] and the sum, in closed form, is the response
- * beyond T1 (the "tail"): no samples there, whatever the window.
+ * h = 0.02 r0, p = 1), so no fitted term could stand in for it.  The
+ * next order in (kh)^2, shear and rotary inertia (plate.c: the layer's own
+ * coefficients, not Mindlin's), adds
+ *   S(t) = t/hh [A int Z (u - sin u)/u^2 du - B int Z (sin u - u cos u)/u^2 du],
+ * A = 3 (1 - nu)/5, B = (17 - 7 nu)/40, Z = zhat(p sqrt(u/(beta t))): the
+ * patch's t log(beta t/p^2), with its own transition at t ~ p^2/beta (102
+ * at h = 0.02 r0, p = 1), which no fitted term could follow either; for a
+ * point load (where it diverges: the layer cuts it off at k ~ 1/h) S = 0
+ * and the fitted c t log t carries it.  The layer correction (layer less
+ * half-space, whose late ramp is the static compliance times t) is then
+ *   g(t) = K(t) + S(t) - s_hs t + a + b t + c t log t + ...,
+ * the last three terms the local (thickness-direction) compliance and what
+ * the expansion leaves (for a point load, the t log t).  They are fitted
+ * to the inversion over [T1/4, T1] and the sum, in closed form, is the
+ * response beyond T1 (the "tail"): no samples there, whatever the window.
  *
- * K(t)/t^2 is smooth and slowly varying in log t: it is tabulated at
- * ANVIL_PLATE_PER_OCTAVE nodes per octave from T1/17 to the window's end
- * (O(log tau_end) quadratures) and interpolated by a cubic B-spline
- * quasi-interpolant (C2, local: a value depends on the eight nodes about
- * it only, so that a longer window's table gives the same bits where both
- * are defined).  Its interpolation error, measured against the quadrature
- * at the midpoints between nodes, is that of GSL's interpolating cubic
- * spline on the same nodes: 2.9e-9 of K at h = 0.02 r0 (near T1/8, where
- * a thin plate's K/t^2 bends most), 2.3e-10 at 0.1 r0, below 3e-10 on
- * thicker layers and at late times (tests/test_tail.c).
+ * K(t)/t^2 and S(t)/t are smooth and slowly varying in log t: each is
+ * tabulated at ANVIL_PLATE_PER_OCTAVE nodes per octave from T1/17 to the
+ * window's end (O(log tau_end) quadratures) and interpolated by a cubic
+ * B-spline quasi-interpolant (C2, local: a value depends on the eight
+ * nodes about it only, so that a longer window's table gives the same bits
+ * where both are defined).  Its interpolation error, measured against the
+ * quadrature at the midpoints between nodes, is that of GSL's
+ * interpolating cubic spline on the same nodes: 2.9e-9 of K at h = 0.02 r0
+ * (near T1/8, where a thin plate's K/t^2 bends most), 2.3e-10 at 0.1 r0,
+ * below 3e-10 on thicker layers and at late times; S/t's within 7e-10 of
+ * its largest value at h = 0.02 r0, p = 1, 2e-11 at 0.1 r0
+ * (tests/test_tail.c).
  *
  * Measured (normal settings, nu = 0.3, against one inversion over the
  * whole window, 8 T1): the relative error of g beyond T1 was 2e-6 at
  * hh = 0.5, 5e-6 at hh = 1, 1.5e-5 at hh = 2 (T1 = 100), 5e-5 at hh = 10
  * (T1 = 800), 3e-5 at hh = 0.1 (T1 = 20); a fit on a window 4 times
  * shorter was up to 30 times worse.  At hh = 0.02 (T1 = 64, window 8 T1,
- * normal, band 8): 4e-7 for a point load, 1.4e-6 for p = 0.71, 6e-6 for
- * p = 1, the last beyond its estimate (371 against 141 at 8 T1: the
- * shear term's own transition, p^2/beta = 100 here, is not over at
- * T1/4).  T1 shorter than 64 did not do for thin plates either: at
- * hh = 0.02, T1 = 16, a point load's impulse response beyond T1 was off
- * by 0.9 % of alpha*.  tests/test_green.c holds the method to its
- * estimate on a few thicknesses and patches. */
+ * normal, band 8) the error over [T1/2, 8 T1] against the estimates'
+ * sum ("cov"): 0.003 for a point load, 0.001 for p = 0.71, 0.002 for
+ * p = 1 (0.38 and 0.81 without S: 98 and 371 against 0.18 and 0.28 now);
+ * over hh = 0.02 .. 0.5, p = 0 .. 1 the largest cov was 0.04.  T1 shorter
+ * than 64 did not do for thin plates then: at hh = 0.02, T1 = 16, a point
+ * load's impulse response beyond T1 was off by 0.9 % of alpha*.
+ * tests/test_green.c holds the method to its estimate on a few
+ * thicknesses and patches. */
 #ifndef ANVIL_PLATE_H
 #define ANVIL_PLATE_H
 
@@ -78,6 +88,7 @@ struct anvil_plate_tail {
 	size_t nk;    /* K(t)/t^2 at the nodes, k[0..nk-1] */
 	double *k;
 	double *bc;   /* their B-spline coefficients (from k, the same bits) */
+	double *shear, *shear_bc; /* S(t)/t (Mindlin's term) at the nodes, and theirs */
 	double beta, shs, u0;
 };
 
@@ -98,14 +109,15 @@ struct anvil_plate_memo;
 int anvil_plate_tail_make(double hh, double nu, double patch, double dtau, size_t n1, size_t n,
 			  double *ramp, double tau_end, struct anvil_plate_memo *memo,
 			  struct anvil_plate_tail *tl);
-/* A tail from what tail_make stored (t1, c, v, nk nodes k copied): the
- * same bits.  ANVIL_EINVAL for a table that does not fit the window
- * (nk != anvil_plate_nodes(t1, tau_end)) or implausible values (not
+/* A tail from what tail_make stored (t1, c, v, nk nodes k and shear
+ * copied): the same bits.  ANVIL_EINVAL for a table that does not fit the
+ * window (nk != anvil_plate_nodes(t1, tau_end)) or implausible values (not
  * finite; K/t^2 outside (0, alpha*], where the plate's moves no faster
- * than its limit alpha* t^2/2 and always forward), ANVIL_ENOMEM. */
+ * than its limit alpha* t^2/2 and always forward; S not 0 for a point
+ * load), ANVIL_ENOMEM. */
 int anvil_plate_tail_init(struct anvil_plate_tail *tl, double hh, double nu, double patch,
 			  double t1, const double c[3], double v, double tau_end, size_t nk,
-			  const double *k);
+			  const double *k, const double *shear);
 void anvil_plate_tail_free(struct anvil_plate_tail *tl); /* frees the arrays; zeroed */
 
 /* The ramp and step (its analytic derivative: the quasi-interpolant's in
@@ -116,13 +128,17 @@ double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t);
  * quasi-interpolant's, continuous, its slope jumping at the nodes by
  * about its own error) at t >= T1/8, within the table. */
 double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t);
-/* K(t)/t^2 from the table (the quasi-interpolant), for tests. */
+/* K(t)/t^2 and S(t)/t from the tables (the quasi-interpolant), for tests. */
 double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t);
+double anvil_plate_tail_s(const struct anvil_plate_tail *tl, double t);
 /* The error bound at t >= T1: v t/T1. */
 double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t);
 
 /* K(t)/t^2 by its quadrature (to 1e-12), for tests of the table. */
 int anvil_plate_k(double hh, double nu, double patch, double t, double *val);
+/* S(t)/t, Mindlin's first-order term (plate.c), by its quadrature (to
+ * 1e-12 relative), for tests of the table; 0 for a point load. */
+int anvil_plate_s(double hh, double nu, double patch, double t, double *val);
 
 /* The K(t) tables that anvil_plate_tail_make made last (their
  * quadratures), one for each of the last four loads, for the next tail of
