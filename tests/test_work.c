@@ -68,6 +68,21 @@ static int sample_scene(unsigned long long *seed, struct anvil_scene *sc, char *
 	return 0;
 }
 
+/* The kernel evaluations the layer row of pl makes on a fresh solver with
+ * the cache in memory only; 0 (e says why) when it fails. */
+static size_t row_evals(const struct anvil_plan *pl, struct anvil_err *e)
+{
+	struct anvil_solver *s = anvil_solver_alloc();
+	struct anvil_result res;
+	struct anvil_solver_stats ss;
+	anvil_solver_set_cache_dir(s, NULL, NULL);
+	int st = anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, 0, &res, e);
+	anvil_solver_stats(s, &ss);
+	anvil_result_free(&res);
+	anvil_solver_free(s);
+	return st < 0 ? 0 : ss.layer_evals;
+}
+
 /* The physical contact's row: the planner's four corrections
  * (anvil_plan_phys_evals) against the evaluations the solver makes for the
  * row (its main run and error-estimate runs), each scene on a fresh
@@ -113,24 +128,17 @@ static void physical_sample(void)
 		    !anvil_wave_needs_corr(&pl.pb.p, &r->job, anvil_wave_window(&r->job, 0)) ||
 		    !(pred <= PHYS_EVALS_MAX))
 			continue;
-		struct anvil_solver *s = anvil_solver_alloc();
-		struct anvil_result res;
-		struct anvil_solver_stats ss;
-		anvil_solver_set_cache_dir(s, NULL, NULL);
-		int st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &res, &e);
-		anvil_solver_stats(s, &ss);
-		anvil_result_free(&res);
-		anvil_solver_free(s);
-		if (st < 0 || !ss.layer_evals) {
+		size_t evals = row_evals(&pl, &e);
+		if (!evals) {
 			diag("%s: %s", what, e.msg);
 			continue;
 		}
-		double q = pred / (double)ss.layer_evals;
+		double q = pred / (double)evals;
 		tried++;
 		within += q >= 0.5 && q <= 2.0;
 		if (q < lo || q > hi)
 			snprintf(worst, sizeof worst, "%s: predicted %.0f, did %zu", what, pred,
-				 ss.layer_evals);
+				 evals);
 		lo = fmin(lo, q);
 		hi = fmax(hi, q);
 	}
@@ -174,19 +182,12 @@ static void thick_sample(void)
 		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
 		enum anvil_cache_where where;
 		double pred = anvil_plan_phys_evals(&r->job, pl.pb.p.nu, pl.pb.accuracy, NULL, &where);
-		struct anvil_solver *s = anvil_solver_alloc();
-		struct anvil_result res;
-		struct anvil_solver_stats ss;
-		anvil_solver_set_cache_dir(s, NULL, NULL);
-		int st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &res, &e);
-		anvil_solver_stats(s, &ss);
-		anvil_result_free(&res);
-		anvil_solver_free(s);
-		if (st < 0 || !ss.layer_evals) {
+		size_t evals = row_evals(&pl, &e);
+		if (!evals) {
 			diag("h %s, %s, %s: %s", scenes[i][0], scenes[i][1], scenes[i][2], e.msg);
 			continue;
 		}
-		double q = pred / (double)ss.layer_evals;
+		double q = pred / (double)evals;
 		tried++;
 		low += r->job.omega < 2.0;
 		within += q >= 0.5 && q <= 2.0;
