@@ -88,7 +88,8 @@ struct anvil_plate_tail {
 	size_t nk;    /* K(t)/t^2 at the nodes, k[0..nk-1] */
 	double *k;
 	double *bc;   /* their B-spline coefficients (from k, the same bits) */
-	double *shear, *shear_bc; /* S(t)/t (Mindlin's term) at the nodes, and theirs */
+	double *shear, *shear_bc; /* S(t)/t (the (kh)^2 term) at the nodes, and theirs */
+	int shear_on;             /* 0: S is 0 here (plate.c, shear_on): not evaluated */
 	double beta, shs, u0;
 };
 
