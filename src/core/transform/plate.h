@@ -21,7 +21,9 @@
  * patch's t log(beta t/p^2), with its own transition at t ~ p^2/beta (102
  * at h = 0.02 r0, p = 1), which no fitted term could follow either; for a
  * point load (where it diverges: the layer cuts it off at k ~ 1/h) S = 0
- * and the fitted c t log t carries it.  The layer correction (layer less
+ * and the fitted c t log t carries it, and so it does where the
+ * transition is over before the fit's window (p^2/beta < T1/16: thick
+ * layers, small patches), where S is 0 too.  The layer correction (layer less
  * half-space, whose late ramp is the static compliance times t) is then
  *   g(t) = K(t) + S(t) - s_hs t + a + b t + c t log t + ...,
  * the last three terms the local (thickness-direction) compliance and what
@@ -137,7 +139,7 @@ double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t);
 
 /* K(t)/t^2 by its quadrature (to 1e-12), for tests of the table. */
 int anvil_plate_k(double hh, double nu, double patch, double t, double *val);
-/* S(t)/t, Mindlin's first-order term (plate.c), by its quadrature (to
+/* S(t)/t, the layer's first-order term (plate.c), by its quadrature (to
  * 1e-12 relative), for tests of the table; 0 for a point load. */
 int anvil_plate_s(double hh, double nu, double patch, double t, double *val);
 
