@@ -32,7 +32,7 @@
  * contact (C_loc < 0 stores less than E_H says).  The bound is that of
  * the plate's lumped model; the layer departs from it at frequencies
  * where its waves are short against h, which the co-moving phase (slow:
- * its time m1/Z is many T1 = 64 r0/c2, plate.h) does not excite.  Zener's
+ * its time m1/Z is many T1 >= 32 r0/c2, plate.h) does not excite.  Zener's
  * plate model is exactly this system with C_loc = 0, so his R_f* (~0 at
  * large lambda*) lies within it.  The scheme's own error on v enters by
  * the two passes' difference (impact_rest_fill).

@@ -134,7 +134,7 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
  * form's analytic one). */
 int anvil_green_step(const struct anvil_green *g, double tau, double *val);
 /* The tau from which the ramp is the plate's closed form (plate.h: the
- * inversion's window T1 = 64 max(1, h/r0)): smooth there, without the
+ * inversion's window T1: 32 below h = r0, 64 h/r0 from there): smooth there, without the
  * band limit's ringing (K's table is a C2 interpolant, within 3e-9 of
  * the plate at h = 0.02 r0 and closer on thicker plates); over [T1/2, T1]
  * the samples go from the inversion to it.  INFINITY when the response is

@@ -14,12 +14,14 @@
 #include "plate.h"
 #include "status.h"
 
-/* T1 = 64 max(1, hh), whatever the window (the tail is closed form). */
+/* T1 = 32 below hh = 1, 64 hh from there, whatever the window (the tail
+ * is closed form; plate.h says why). */
+#define T1_THIN 32.0
 #define T1_PER_H 64.0
 
 double anvil_plate_t1(double hh, double tau_end)
 {
-	double t1 = T1_PER_H * fmax(1.0, hh);
+	double t1 = hh < 1.0 ? T1_THIN : T1_PER_H * hh;
 	return tau_end >= 4.0 * t1 ? t1 : 0.0;
 }
 
@@ -517,17 +519,21 @@ static int fit(const struct anvil_plate_tail *tl, const double *ramp, double dta
  * 0.02 r0, draft.  Switched at one sample, that offset is a step in the
  * ramp, a dipole in the impulse response (its second difference, the
  * impact's weights) that echoes every T1 through the contact force: the
- * periodic kicks of issue 11.  So over [T1/2, T1] the samples go from the
- * inversion to the model with the C2 weight x^3 (10 - 15 x + 6 x^2): the
- * ramp stays C2, the offset d spreads over T1/2 (at most 5.8 d (2/T1)^2 in
- * the impulse response), and each blended sample, a convex combination
- * of two estimates of the same function, is within the larger of their
- * errors (both already in abserr).  Beyond T1 the samples (the spline's
- * pad) are the model's. */
+ * periodic kicks of issue 11.  So over [T1/4, T1], the fit's own window,
+ * the samples go from the inversion to the model with the C2 weight x^3
+ * (10 - 15 x + 6 x^2): the ramp stays C2, the offset d spreads over
+ * 3 T1/4 (at most 5.8 d (4/(3 T1))^2 in the impulse response), and each
+ * blended sample, a convex combination of two estimates of the same
+ * function, is within the larger of their errors (both already in
+ * abserr, which holds the tail's v over [0, T1]).  Beyond T1 the samples
+ * (the spline's pad) are the model's.  Over [T1/2, T1] at T1 = 32 the
+ * join's dipole at h = 0.02 r0 (draft, a point load) was 20.7 against the
+ * inversion's scatter of 14-20 (tests/test_green.c, plate_join); over
+ * [T1/4, T1], 8.5. */
 static void blend(const struct anvil_plate_tail *tl, double dtau, size_t n1, size_t n,
 		  double *ramp)
 {
-	double ta = 0.5 * tl->t1, w = tl->t1 - ta;
+	double ta = 0.25 * tl->t1, w = tl->t1 - ta;
 	for (size_t j = (size_t)ceil(ta / dtau); j < n1; j++) {
 		double t = (double)j * dtau, x = fmin(1.0, (t - ta) / w);
 		double s = x * x * x * (10.0 - 15.0 * x + 6.0 * x * x);

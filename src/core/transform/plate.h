@@ -40,8 +40,9 @@
  * quadrature at the midpoints between nodes, is that of GSL's
  * interpolating cubic spline on the same nodes: 2.9e-9 of K at h = 0.02 r0
  * (near T1/8, where a thin plate's K/t^2 bends most), 2.3e-10 at 0.1 r0,
- * below 3e-10 on thicker layers and at late times; S/t's within 7e-10 of
- * its largest value at h = 0.02 r0, p = 1, 2e-11 at 0.1 r0
+ * below 3e-10 on thicker layers and at late times; S's, in the ramp,
+ * within 2.4e-10 of K at h = 0.02 r0, p = 1 (2.5e-9 of S/t's largest
+ * value, near T1/8 where it turns), 2e-11 of S/t's at 0.1 r0
  * (tests/test_tail.c).
  *
  * Measured (normal settings, nu = 0.3, against one inversion over the
@@ -52,19 +53,26 @@
  * normal, band 8) the error over [T1/2, 8 T1] against the estimates'
  * sum ("cov"): 0.003 for a point load, 0.001 for p = 0.71, 0.002 for
  * p = 1 (0.38 and 0.81 without S: 98 and 371 against 0.18 and 0.28 now);
- * over hh = 0.02 .. 0.5, p = 0 .. 1 the largest cov was 0.04.  T1 shorter
- * than 64 did not do for thin plates then: at hh = 0.02, T1 = 16, a point
- * load's impulse response beyond T1 was off by 0.9 % of alpha*.
- * tests/test_green.c holds the method to its estimate on a few
- * thicknesses and patches. */
+ * over hh = 0.02 .. 0.5, p = 0 .. 1 the largest cov was 0.04.  At T1 =
+ * 32 (below hh = 1, with S and the blend over [T1/4, T1]) it is 0.25 at
+ * most over the same set (0.017, 0.035, 0.028 at hh = 0.02 for p = 0,
+ * 0.5, 1; 0.19 and 0.25 at hh = 0.2 and 0.5, p = 1), where without S it
+ * was 2.99 (hh = 0.02, p = 1); 60 thin scenes (h = 0.02-0.2 r0, 0.1 g-
+ * 1 kg, 0.1-10 m/s) agree with T1 = 64 within their estimates, at 52.3
+ * -> 33.3 s of CPU (h = 0.02 r0: 33.0 -> 17.5 s).  T1 = 16 did not do:
+ * at hh = 0.02 a point load's impulse response beyond T1 was off by
+ * 0.9 % of alpha* (before S).  tests/test_green.c holds the method to its
+ * estimate on a few thicknesses and patches. */
 #ifndef ANVIL_PLATE_H
 #define ANVIL_PLATE_H
 
 #include <stddef.h>
 
-/* The inversion window T1 before the plate takes over: 64 max(1, hh) (the
- * waves that matter are then 8 times longer than h and the reverberations
- * between the faces have died down); 0 when the window tau_end is shorter
+/* The inversion window T1 before the plate takes over: 32 below hh = 1,
+ * 64 hh from there (the waves that matter are then long against h and the
+ * reverberations between the faces have died down; below hh = 1, with S,
+ * 32 is as good as 64 was: cov <= 0.25 over hh = 0.02 .. 0.5, p = 0 .. 1,
+ * above, and half the inversion); 0 when the window tau_end is shorter
  * than 4 T1 (a plain inversion is cheap enough there).  T1 does not grow
  * with the window: the closed form covers any length. */
 double anvil_plate_t1(double hh, double tau_end);
