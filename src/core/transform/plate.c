@@ -387,12 +387,12 @@ static size_t tail_at(const struct anvil_plate_tail *tl, double t, double *f)
 	return (size_t)j;
 }
 
-/* The table of coefficients bc (K/t^2's or S/t's) at t, and (d) its
- * derivative in log t. */
-static double qi_interp(const struct anvil_plate_tail *tl, const double *bc, double t, double *d)
+/* The table of coefficients bc (K/t^2's or S/t's) in interval j at
+ * fraction f (tail_at), and (d) its derivative in log t.  K's and S's
+ * share j and f: one logarithm for both (a long contact's far field
+ * evaluates the tail at every step). */
+static double qi_val(const double *bc, size_t j, double f, double *d)
 {
-	double f;
-	size_t j = tail_at(tl, t, &f);
 	double g = 1.0 - f;
 	const double *b = bc + j - 1;
 	double f2 = f * f, f3 = f2 * f;
@@ -403,15 +403,20 @@ static double qi_interp(const struct anvil_plate_tail *tl, const double *bc, dou
 		(-3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0) * b[2] + f3 * b[3]) / 6.0;
 }
 
-/* The second derivative in log t of qi_interp's (piecewise linear: the
+/* The second derivative in log t of qi_val's (piecewise linear: the
  * cubic B-spline's). */
-static double qi_interp2(const struct anvil_plate_tail *tl, const double *bc, double t)
+static double qi_d2(const double *bc, size_t j, double f)
 {
-	double f;
-	size_t j = tail_at(tl, t, &f);
 	const double *b = bc + j - 1;
 	return ((1.0 - f) * b[0] + (3.0 * f - 2.0) * b[1] + (1.0 - 3.0 * f) * b[2] + f * b[3]) /
 	       (K_H * K_H);
+}
+
+static double qi_interp(const struct anvil_plate_tail *tl, const double *bc, double t, double *d)
+{
+	double f;
+	size_t j = tail_at(tl, t, &f);
+	return qi_val(bc, j, f, d);
 }
 
 /* ---- the model and its fit ---- */
@@ -419,8 +424,10 @@ static double qi_interp2(const struct anvil_plate_tail *tl, const double *bc, do
 /* K + S - s_hs t at t: g less the part fitted */
 static double plate_part(const struct anvil_plate_tail *tl, double t)
 {
-	double s = tl->shear_on ? qi_interp(tl, tl->shear_bc, t, NULL) : 0.0;
-	return t * t * qi_interp(tl, tl->bc, t, NULL) + t * s - tl->shs * t;
+	double f;
+	size_t j = tail_at(tl, t, &f);
+	double s = tl->shear_on ? qi_val(tl->shear_bc, j, f, NULL) : 0.0;
+	return t * t * qi_val(tl->bc, j, f, NULL) + t * s - tl->shs * t;
 }
 
 static void basis(const struct anvil_plate_tail *tl, double t, double *b)
@@ -446,8 +453,10 @@ double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t)
 double anvil_plate_tail_step(const struct anvil_plate_tail *tl, double t)
 {
 	/* K = t^2 k(log t): K' = t (2 k + k'); S = t s(log t): S' = s + s' */
-	double d, k = qi_interp(tl, tl->bc, t, &d), ds = 0.0;
-	double s = tl->shear_on ? qi_interp(tl, tl->shear_bc, t, &ds) : 0.0, x = t / tl->t1;
+	double f, d, ds = 0.0;
+	size_t j = tail_at(tl, t, &f);
+	double k = qi_val(tl->bc, j, f, &d);
+	double s = tl->shear_on ? qi_val(tl->shear_bc, j, f, &ds) : 0.0, x = t / tl->t1;
 	return t * (2.0 * k + d) + s + ds - tl->shs +
 	       (tl->c[1] + tl->c[2] * (log(x) + 1.0)) / tl->t1;
 }
@@ -456,13 +465,14 @@ double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t)
 {
 	/* K'' = 2 k + 3 k' + k'', S'' = (s' + s'')/t; the fit's a + b x + c x
 	 * log x (x = t/T1) and -s_hs t leave c/(T1 t) */
-	double d, k = qi_interp(tl, tl->bc, t, &d), ds = 0.0, ds2 = 0.0;
+	double f, d, ds = 0.0, ds2 = 0.0;
+	size_t j = tail_at(tl, t, &f);
+	double k = qi_val(tl->bc, j, f, &d);
 	if (tl->shear_on) {
-		qi_interp(tl, tl->shear_bc, t, &ds);
-		ds2 = qi_interp2(tl, tl->shear_bc, t);
+		qi_val(tl->shear_bc, j, f, &ds);
+		ds2 = qi_d2(tl->shear_bc, j, f);
 	}
-	return 2.0 * k + 3.0 * d + qi_interp2(tl, tl->bc, t) + tl->c[2] / (tl->t1 * t) +
-	       (ds + ds2) / t;
+	return 2.0 * k + 3.0 * d + qi_d2(tl->bc, j, f) + tl->c[2] / (tl->t1 * t) + (ds + ds2) / t;
 }
 
 double anvil_plate_tail_k(const struct anvil_plate_tail *tl, double t)
