@@ -418,15 +418,16 @@ assert '...R_f in four significant digits, not 0.0000' \
 	awk '$1 == "zener" { f = ($10 ~ /^6\.316e-06$/) } END { exit !f }' "$tmp/out"
 
 # ---- accuracy: a miss by the model's own error is said to be that ----
-# The physical contact on the paper's case: fine's numerics are within 1e-4
-# of reference, its own estimate 2.3e-4, of which the radiation lag's next
-# term 2.1e-4 (result.h, model_err).
-check_exit 1 'accuracy on the default scene: fine and reference miss' "$ANVIL" accuracy
+# The physical contact on the paper's case at 100 m/s: fine's numerics are
+# within 1e-4 of reference, its own estimate of t_s 7.9e-4, of which the
+# model's 3.4e-4: the contact's supersonic start (result.h, model_err;
+# solver_phys.c).  At 10 m/s fine now passes (the remainder's second order).
+check_exit 1 'accuracy at 100 m/s: fine and reference miss' "$ANVIL" accuracy -s impact.velocity='100 m/s'
 assert '...fine by the model'"'"'s own error, said so' \
 	awk '$1 == "fine" && $NF == "model" && $(NF-1) == "MISSED:" { f = 1 } END { exit !f }' "$tmp/out"
 assert '...and a footnote says no finer level lowers it' \
 	grep -q "no finer level lowers it" "$tmp/out"
-check_exit 1 'run at fine: the warning names the model'"'"'s share' "$ANVIL" run -q -m layer -s solver.accuracy=fine
+check_exit 1 'run at fine: the warning names the model'"'"'s share' "$ANVIL" run -q -m layer -s solver.accuracy=fine -s impact.velocity='100 m/s'
 assert '...of which the model'"'"'s own' grep -q "of which the model's own [0-9.e-]* (no finer level lowers it)" "$tmp/err"
 
 done_testing

@@ -4,10 +4,17 @@
  *    Rayleigh wave from the rim has passed, ramp(tau) - C tau = -xi;
  *  - the Rayleigh wave's share of the power against Miller and Pursey
  *    (1955): 67.4 % for nu = 0.25 (from the pole's residue alone);
- *  - beta's units and bad input. */
+ *  - beta's units and bad input;
+ *  - the next term gamma (issue 11): the centre's area from the exact
+ *    half-space at nu = 0 and 1/4, where it is rational (21/256, 27/512,
+ *    times 8/5), and the factor 8/5 itself, the flat punch's mean of
+ *    |x - x'| over the Hertz pressure against the centre's, by quadrature
+ *    over the disc. */
 #include <math.h>
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_ellint.h>
 
 #include "halfspace.h"
 #include "material.h"
@@ -68,12 +75,73 @@ static void test_beta(void)
 	ok(isnan(anvil_radiation_rayleigh_share(0.5)), "Rayleigh share: NaN outside (-1, 0.5)");
 }
 
+/* The mean of |x - x'| over the angle between x and x' at radii r, s:
+ * (2/pi) (r + s) E(k), k = 2 sqrt(r s) / (r + s). */
+static double mean_dist(double r, double s)
+{
+	if (r + s == 0)
+		return 0;
+	double k = fmin(2.0 * sqrt(r * s) / (r + s), 1.0 - 1e-16);
+	return 2.0 / M_PI * (r + s) * gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE);
+}
+
+/* Over the unit disc with r = sin u (Hertz: r sqrt(1-r^2) dr = sin u cos^2 u
+ * du, weight 1/3) and s = sin v (punch: s ds/sqrt(1-s^2) = sin v dv,
+ * weight 1): both smooth in u, v. */
+static double punch_inner(double v, void *vu)
+{
+	return mean_dist(sin(*(double *)vu), sin(v)) * sin(v);
+}
+
+static double punch_outer(double u, void *vw)
+{
+	double r, e;
+	gsl_function f = { punch_inner, &u };
+	gsl_integration_qags(&f, 0, M_PI / 2, 1e-14, 1e-12, 200, vw, &r, &e);
+	return r * sin(u) * cos(u) * cos(u);
+}
+
+static double hertz_centre(double u, void *v)
+{
+	(void)v;
+	return sin(u) * sin(u) * cos(u) * cos(u); /* r times the Hertz weight */
+}
+
+static void test_gamma(void)
+{
+	gsl_integration_workspace *w1 = gsl_integration_workspace_alloc(200);
+	gsl_integration_workspace *w2 = gsl_integration_workspace_alloc(200);
+	double eh, ehf, e;
+	gsl_function fc = { hertz_centre, NULL }, fp = { punch_outer, w2 };
+	gsl_integration_qags(&fc, 0, M_PI / 2, 1e-14, 1e-12, 200, w1, &eh, &e);
+	gsl_integration_qags(&fp, 0, M_PI / 2, 1e-14, 1e-11, 200, w1, &ehf, &e);
+	eh *= 3.0, ehf *= 3.0;
+	gsl_integration_workspace_free(w1);
+	gsl_integration_workspace_free(w2);
+	is_rel(eh, 3.0 * M_PI / 16.0, 1e-10, "E_H|x| = 3 pi a / 16 (%.12f)", eh);
+	is_rel(ehf / eh, ANVIL_RADIATION_PUNCH_MEAN, 1e-9,
+	       "the flat punch's mean of |x - x'| over the Hertz pressure is %.10f times the "
+	       "centre's (radiation.h: 8/5)", ehf / eh);
+	is_rel(anvil_radiation_gamma(0.0), 1.6 * 21.0 / 256.0, 1e-9,
+	       "gamma(0) = (8/5) 21/256 from the exact half-space (%.10f)", anvil_radiation_gamma(0.0));
+	is_rel(anvil_radiation_gamma(0.25), 1.6 * 27.0 / 512.0, 1e-9,
+	       "gamma(1/4) = (8/5) 27/512 (%.10f)", anvil_radiation_gamma(0.25));
+	diag("gamma(0.3) = %.8f, gamma/xi = %.5f", anvil_radiation_gamma(0.3),
+	     anvil_radiation_gamma(0.3) / anvil_radiation_xi(0.3));
+	struct anvil_material st = *anvil_material_find("steel");
+	double c2 = anvil_material_c2(&st);
+	ok(isnan(anvil_radiation_gamma(0.5)) && isnan(anvil_radiation_g2(0.3, 0, c2)) &&
+	   isnan(anvil_radiation_g2(0.3, st.rho, INFINITY)) &&
+	   anvil_radiation_g2(st.nu, st.rho, c2) > 0, "gamma, g2: NaN for bad input, else > 0");
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(6 * 3 + 2 + 4);
+	plan(6 * 3 + 2 + 4 + 5);
 	test_ramp_limit();
 	test_partition();
 	test_beta();
+	test_gamma();
 	return done_testing();
 }

@@ -59,6 +59,12 @@ struct phys_load {
 	double rest_at; /* s: a row at rest (impact.h, rest_at): its runs stop there; 0: none */
 };
 
+/* The half-space's remainder beyond Hertz: -beta dP/dt + g2 d^2(a P)/dt^2
+ * (transform/radiation.h; impact.h). */
+struct phys_rem {
+	double beta, g2;
+};
+
 /* One physical impact of job j in progress: its load, the responses it
  * holds for the window being tried (a ramp and, with the true radius, a
  * second), and its result.  Split in two (phys_window, phys_execute) so
@@ -76,7 +82,7 @@ struct phys_run {
 };
 
 static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
-		      const struct anvil_wave_job *j, double beta, struct phys_load ld,
+		      const struct anvil_wave_job *j, struct phys_rem rem, struct phys_load ld,
 		      size_t nhist, struct anvil_result *r)
 {
 	memset(u, 0, sizeof *u);
@@ -84,7 +90,7 @@ static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
 	u->r = r;
 	u->io = (struct anvil_impact_opts){ .scheme = ANVIL_SCHEME_IMPLICIT, .dt = pb->dt,
 					    .dt_auto = j->dt, .max_steps = ANVIL_MAX_STEPS,
-					    .nhist = nhist, .physical = 1, .beta = beta,
+					    .nhist = nhist, .physical = 1, .beta = rem.beta, .g2 = rem.g2,
 					    .tau_lag = ld.tau_lag };
 	solver_merge_opts(&u->io, pb, j);
 	u->io.rest_at = ld.rest_at;
@@ -179,7 +185,7 @@ struct phys_set {
 /* The loads: the row's, the patch below (the a^4 remainder), the lag's
  * time halved, and point loads at the row's bandwidth and half of it. */
 static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
-			  const struct anvil_wave_job *j, double beta, struct phys_load ld,
+			  const struct anvil_wave_job *j, struct phys_rem rem, struct phys_load ld,
 			  size_t nhist, struct anvil_result *r)
 {
 	struct phys_load lds[PHYS_RUNS] = {
@@ -193,7 +199,7 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
 		struct anvil_result *rk = k == PHYS_MAIN ? r : &set->q[k];
 		if (k != PHYS_MAIN)
 			anvil_result_init(rk, r->model);
-		phys_init(&set->u[k], pb, j, beta, lds[k], k == PHYS_MAIN ? nhist : 0, rk);
+		phys_init(&set->u[k], pb, j, rem, lds[k], k == PHYS_MAIN ? nhist : 0, rk);
 		set->e[k] = (struct anvil_err){ 0 };
 		set->st[k] = ANVIL_ETOL;
 		set->done[k] = 0;
@@ -207,7 +213,7 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
  * comes to rest). */
 static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
 			  const struct anvil_problem *pb, const struct anvil_wave_job *j,
-			  double beta, double rest_at)
+			  struct phys_rem rem, double rest_at)
 {
 	for (int k = PHYS_MAIN + 1; k < PHYS_RUNS; k++) {
 		struct phys_load ld = set->u[k].ld;
@@ -216,7 +222,7 @@ static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
 		anvil_result_free(&set->q[k]);
 		anvil_result_init(&set->q[k], m);
 		ld.rest_at = rest_at;
-		phys_init(&set->u[k], pb, j, beta, ld, 0, &set->q[k]);
+		phys_init(&set->u[k], pb, j, rem, ld, 0, &set->q[k]);
 		set->e[k] = (struct anvil_err){ 0 };
 		set->st[k] = ANVIL_ETOL;
 		set->done[k] = 0;
@@ -447,13 +453,42 @@ static int thin_check(const struct anvil_plan *pl, const struct anvil_result *r,
 			     anvil_model_name(r->model), a * 1e3, r->Pmax.val, p->h * 1e3, a / p->h);
 }
 
+/* What the physical contact leaves out of the half-space's remainder
+ * (impact.h, g2; radiation.h), added to r's estimates and model_err:
+ *  - the terms beyond the second order: relative q^2 of the wave effect,
+ *    q = pi a / (c2 t_s) (the ratio of the second-order term to the first,
+ *    (omega a / c2) at the contact's frequency pi / t_s), or f^2 where the
+ *    reduction's own next term is larger; each value moves by at most that
+ *    times the radiated fraction f of it (E_a: of m1 V0^2 / 2).  The
+ *    first-order model carried f q here, and its measured change to the
+ *    second order was 0.15-0.45 of that (doc/contact-model.md);
+ *  - the inner region (impact.c): the outer solution starts where
+ *    W - w_c = c_u V0^2 and ends where it is c_u V_s^2, a shift the
+ *    spreading contact's true start could change by as much again, so t_s
+ *    takes (|c_u| + (3/2 beta K)^2) (V0 + |V_s|) (the first order's own
+ *    start, a(0) = (3/2 beta K V0)^2, is of that size too) and t_max the
+ *    start's part.  P_max, V_s, R_f and E_a do not move with a shift. */
+static void physical_model_error(const struct anvil_params *p, struct phys_rem rem, double f,
+				 double a, struct anvil_result *r)
+{
+	double q = M_PI * a / (p->c2 * r->ts.val), d = f * fmax(q, f) * fmax(q, f);
+	double gk = 2.0 * rem.g2 * p->K * sqrt(p->r0), bk = rem.beta * p->K;
+	double cin = fabs(gk - 1.125 * bk * bk) + 2.25 * bk * bk;
+	double t0 = cin * p->V0, t1 = cin * fabs(r->Vs.val);
+	r->model_err += fmax(d, (t0 + t1) / r->ts.val);
+	r->ts.err += d * r->ts.val + t0 + t1;
+	r->tmax.err += d * r->tmax.val + t0;
+	r->Pmax.err += d * r->Pmax.val;
+	r->Vs.err += d * fabs(r->Vs.val);
+	r->Rf.err += d * fabs(r->Rf.val);
+	r->Ea.err += d * 0.5 * p->m1 * p->V0 * p->V0;
+}
+
 /* The physical row: Hertz's approach plus the layer's remainder, the
  * correction with the true contact radius a(t) (impact.h: point load plus
  * the a^2 term from the Hertz patch of the largest radius a_max).  Its
- * error estimates add to the time stepping's: physical_errors', and the
- * half-space remainder's next term, relative O(omega a / c2) of the wave
- * effect (radiation.h), taken as pi a_max / (c2 t_s) times the radiated
- * fraction of each value.
+ * error estimates add to the time stepping's: physical_errors', and what
+ * the remainder's two terms leave (physical_model_error).
  * Where the patch size still matters: thin layers, where a_max is not
  * small against h and the correction is large: there the a^4 remainder
  * is what the error estimate shows (doc/contact-model.md). */
@@ -463,11 +498,12 @@ static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 			 struct anvil_err *err)
 {
 	const struct anvil_params *p = &pl->pb.p;
-	double beta = anvil_radiation_beta(p->nu, p->rho, p->c2);
+	struct phys_rem rem = { anvil_radiation_beta(p->nu, p->rho, p->c2),
+				anvil_radiation_g2(p->nu, p->rho, p->c2) };
 	double a = pl->fig[ANVIL_FIG_A_HERTZ];
 	struct phys_load ld = { omega_idx, row->job.patch, a / p->c2, 0.0 };
 	struct phys_set set;
-	phys_set_init(&set, &pl->pb, &row->job, beta, ld, nhist, r);
+	phys_set_init(&set, &pl->pb, &row->job, rem, ld, nhist, r);
 	/* warm, the five impacts at once on the cores; cold, the row's first
 	 * (thin_check may refuse it before the others' responses are made) */
 	int at_hand = phys_at_hand(s, &pl->pb, &row->job, &set);
@@ -480,7 +516,7 @@ static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 		st = thin_check(pl, r, err);
 	int rest = !st && r->rest_bound > 0;
 	if (rest)
-		phys_set_rest(s, &set, &pl->pb, &row->job, beta, r->ts.val);
+		phys_set_rest(s, &set, &pl->pb, &row->job, rem, r->ts.val);
 	if (!st && corr && (!at_hand || rest))
 		phys_rounds(s, &pl->pb, &row->job, &set, PHYS_MAIN + 1, PHYS_RUNS);
 	if (!st && corr)
@@ -491,18 +527,7 @@ static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 	phys_set_free(s, &set);
 	if (st)
 		return st;
-	/* the radiation lag's next term: relative pi a / (c2 t_s) of the wave
-	 * effect, which moves P_max, t_s and R_f by at most the radiated
-	 * fraction f of their values (plan.c's estimate; 0.4 % of P_max against
-	 * f = 1.3 % on the paper's half-space) and E_a by f m1 V0^2 / 2 */
-	double d = M_PI * a / (p->c2 * r->ts.val) * pl->fig[ANVIL_FIG_RADIATED];
-	r->model_err += d;
-	r->ts.err += d * r->ts.val;
-	r->tmax.err += d * r->tmax.val;
-	r->Pmax.err += d * r->Pmax.val;
-	r->Vs.err += d * fabs(r->Vs.val);
-	r->Rf.err += d * fabs(r->Rf.val);
-	r->Ea.err += d * 0.5 * p->m1 * p->V0 * p->V0;
+	physical_model_error(p, rem, pl->fig[ANVIL_FIG_RADIATED], a, r);
 	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h)) {
 		r->lambda_star = 0.0;
 		r->Rf_star = 1.0;

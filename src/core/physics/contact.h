@@ -45,6 +45,18 @@
 struct anvil_contact_opts {
 	double tol;   /* relative and absolute tolerance of the ODE, in (0, 1e-3] */
 	size_t nhist; /* history samples wanted (0: none) */
+	/* The second order (issue 11; 0: first order, the model above): the
+	 * remainder's next term + g2 d^2(a P)/dt^2 (g2 = gamma / (mu c2^2),
+	 * transform/radiation.h) with the reduction's own next term, as
+	 * impact.c's pass_physical has them:
+	 *   x = a - (3/2) eps u a^(1/2) + sigma,  sigma = c_u u^2 - c_x a p,
+	 *   c_u = eta - (9/8) eps^2,  c_x = eta - (9/4) eps^2,
+	 *   eta = 2 g2 K sqrt(R) V0 / T.
+	 * The contact then starts and ends at X = x - c_u u^2 = 0 (a = 0 at
+	 * the end); before the start the impactor flies free.  The loss
+	 * stays equal to Hunter's beta int (dP/dt)^2 to O(f^2) relative (the
+	 * first order: O(f)). */
+	double g2;
 };
 
 /* Energy figures of one run (SI). */

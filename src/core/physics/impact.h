@@ -69,6 +69,14 @@ struct anvil_impact_opts {
 	 * the remainder w_c - beta Q. */
 	int physical;
 	double beta;
+	/* The remainder's next term (physical only; 0: first order), g2 =
+	 * gamma / (mu c2^2) in s^4/(kg m) (transform/radiation.h): + g2
+	 * d^2(a P)/dt^2, with the first-order reduction's own next term,
+	 * reduced in order as the lag (impact.c, pass_physical).  Its effect
+	 * is O(f^2) of the wave effect's f; what it leaves, O(f^3), and the
+	 * start and end it cannot place (the contact spreading faster than the
+	 * waves) are the caller's estimate (solver_phys.c). */
+	double g2;
 	/* The true contact radius (physical only; alpha_ref = 0: a point load).
 	 * ramp2 is the correction for a Hertz patch of radius a_ref, alpha_ref
 	 * = a_ref^2 / R its approach.  The correction is even in the patch

@@ -156,7 +156,10 @@ static double alpha_end(double d, void *vp)
 	mom += P[k] * ((tau - t1 + dt) * dt / 2.0 - dt * dt / 3.0 + d * d / 3.0);
 	/* a grown step: the segment's times from T0, the frozen past's moment */
 	mom += (c->T0 + tau) * c->Ih - c->M1h;
-	return p->V0 * (c->T0 + tau) - mom / p->m1 - w;
+	/* the physical contact's second order: its alpha = 0 is at W - w_c =
+	 * c_u u^2 (impact.c, sg; 0 otherwise), linear between the nodes */
+	double sg = e->s->sg[k] + (e->s->sg[k + 1] - e->s->sg[k]) * d / dt;
+	return p->V0 * (c->T0 + tau) - mom / p->m1 - w - sg;
 }
 
 static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pass *s, size_t k)

@@ -63,7 +63,7 @@ struct pass impact_view(const struct ctx *c, const struct pass *s)
 {
 	struct pass v = *s;
 	size_t o = c->seg0;
-	v.t += o, v.P += o, v.W += o, v.w += o, v.v += o, v.wc += o, v.Q += o;
+	v.t += o, v.P += o, v.W += o, v.w += o, v.v += o, v.wc += o, v.Q += o, v.sg += o;
 	v.n = s->n - o;
 	v.cap = c->segcap;
 	return v;

@@ -45,6 +45,8 @@ struct pass {
 	double *P, *W, *w, *v; /* one block, owned */
 	double *wc;            /* physical contact: the layer correction's deflection */
 	double *Q;             /* physical contact: P alpha_H / alpha_ref (true radius) */
+	double *sg;            /* physical contact: the second order's offset at
+				* alpha = 0, c_u u^2 (impact.c, lag2), m */
 	double ts, tmax, Pmax, Vs;
 	double tmax_ie;  /* the peak interpolation's own error (peak) */
 	double curv;     /* |P''| at the peak (N/s^2, peak), 0 when unknown */
@@ -99,6 +101,7 @@ struct ctx {
 	size_t ng;
 	int physical;   /* the physical contact (opts), with beta */
 	double beta;
+	double g2;      /* the lag's next term (opts); 0: first order */
 	anvil_ramp_fn ramp2; /* the correction of the patch of radius a_ref (opts) */
 	void *rctx2;
 	double alpha_ref;

@@ -34,9 +34,9 @@ struct anvil_result {
 	struct anvil_val Pmax;     /* peak force, N */
 	struct anvil_val Vs, Rf, Ea; /* rebound speed m/s, restitution, absorbed energy J */
 	double lambda_star, Rf_star; /* Zener's parameter for this scene */
-	/* The model's own error in the estimates, relative (the physical
-	 * contact's radiation lag's next term, the reflections a row leaves
-	 * out; 0: none): no finer accuracy level lowers it (solver.c) */
+	/* The model's own error in the estimates, relative (what the physical
+	 * contact's remainder leaves out, solver_phys.c; the reflections a row
+	 * leaves out; 0: none): no finer accuracy level lowers it (solver.c) */
 	double model_err;
 	/* |P''| at the peak, N/s^2 (a wave run's, from the finer pass's
 	 * parabola through the largest sample; 0 when not known): how far an

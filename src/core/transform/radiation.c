@@ -6,6 +6,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
+#include "halfspace.h"
 #include "material.h"
 #include "radiation.h"
 
@@ -82,4 +83,52 @@ double anvil_radiation_rayleigh_share(double nu)
 		    4.0 * q2 * (q * a2 / a1 + q * a1 / a2);
 	double xi_r = -0.5 * a1 * q / dD; /* (1/2) a1 q s^2 / D', s^2 = -1 */
 	return xi_r / anvil_radiation_xi(nu);
+}
+
+/* The centre's next term: the exact ramp response of the Hertz patch
+ * (halfspace.c) less its asymptote C tau - xi, integrated over [0, tau_R]
+ * (beyond tau_R the two are equal, radiation.h): that area is the
+ * coefficient of (i omega)^2 a / (mu c2^2) in w / P at the centre. */
+struct gamma_ctx {
+	const struct anvil_halfspace *hs;
+	double C, xi;
+	int st;
+};
+
+static double gamma_integrand(double tau, void *vc)
+{
+	struct gamma_ctx *c = vc;
+	double r;
+	c->st |= anvil_halfspace_ramp(c->hs, tau, &r, NULL);
+	return r - c->C * tau + c->xi;
+}
+
+double anvil_radiation_gamma(double nu)
+{
+	if (!(nu > -1 && nu < 0.5))
+		return NAN;
+	struct anvil_halfspace *hs = anvil_halfspace_alloc(nu, 1e-12, NULL);
+	gsl_integration_workspace *w = gsl_integration_workspace_alloc(XI_LIMIT);
+	struct gamma_ctx c = { hs, anvil_halfspace_static(nu), anvil_radiation_xi(nu), 0 };
+	double g = NAN, abserr = 0;
+	if (hs && w && isfinite(c.xi)) {
+		/* the integrand's kinks: the P and S arrivals from the rim at the
+		 * centre (kappa, 1) and the Rayleigh wave's (tau_R) */
+		double pts[] = { 0.0, sqrt(anvil_kappa2(nu)), 1.0, anvil_halfspace_tau_r(hs) };
+		gsl_function f = { gamma_integrand, &c };
+		int st = gsl_integration_qagp(&f, pts, 4, 1e-14, 0.1 * ANVIL_RADIATION_XI_TOL,
+					      XI_LIMIT, w, &g, &abserr);
+		if (st || c.st || !(abserr <= ANVIL_RADIATION_XI_TOL * fabs(g)))
+			g = NAN;
+	}
+	gsl_integration_workspace_free(w);
+	anvil_halfspace_free(hs);
+	return ANVIL_RADIATION_PUNCH_MEAN * g;
+}
+
+double anvil_radiation_g2(double nu, double rho, double c2)
+{
+	if (!(rho > 0 && c2 > 0 && isfinite(rho) && isfinite(c2)))
+		return NAN;
+	return anvil_radiation_gamma(nu) / (rho * c2 * c2 * c2 * c2);
 }

@@ -61,4 +61,32 @@ double anvil_radiation_beta(double nu, double rho, double c2);
  * outside (-1, 0.5). */
 double anvil_radiation_rayleigh_share(double nu);
 
+/* The next term, (i omega)^2 gamma a / (mu c2^2), for a Hertz contact of
+ * radius a (issue 11).  It is reactive (real for real omega: no power),
+ * and analytic in omega: the exact ramp response differs from C tau - xi
+ * only over [0, tau_R], so the difference has a transform that is entire.
+ *
+ * At the centre of a Hertz patch gamma_c is the area of that difference
+ * (the ramp response in the units above).  A point load at distance s has,
+ * by the same dimensional argument, kappa s / (mu c2^2) with one kappa(nu);
+ * so gamma_c a = kappa E_H|x| (E_H: the mean over the Hertz pressure,
+ * E_H|x| = 3 pi a / 16).  The contact's approach is not the centre's
+ * displacement: an extra displacement d(x) under a Hertz contact moves the
+ * approach by d's mean weighted by the flat punch's pressure
+ * 1/sqrt(a^2 - r^2) (Betti's reciprocity with the punch; the contact radius
+ * is stationary there, dP/da = 0 at Hertz's a^2 = R alpha).  With
+ * d(x') = kappa E_H|x - x'| that mean is kappa a 3 pi / 10 (the Hertz and
+ * punch weights over the disc, tests/test_radiation.c), so
+ *   gamma = gamma_c (3 pi / 10) / (3 pi / 16) = (8/5) gamma_c.
+ * gamma(0) = 21/160, gamma(0.25) = 27/320, gamma(0.3) = 0.0772500.
+ * For a contact whose radius grows with the load (a P = K sqrt(R) alpha^2)
+ * the term in time is gamma / (mu c2^2) d^2(a P)/dt^2: linear in the
+ * pressure, whose moment of |x - x'| is a P times the constant above. */
+#define ANVIL_RADIATION_PUNCH_MEAN 1.6
+double anvil_radiation_gamma(double nu);
+
+/* g2 = gamma(nu) / (mu c2^2) = gamma / (rho c2^4), s^4/(kg m): the approach's
+ * remainder beyond -beta dP/dt is + g2 d^2(a P)/dt^2.  NaN for bad input. */
+double anvil_radiation_g2(double nu, double rho, double c2);
+
 #endif

@@ -199,8 +199,9 @@ static int acc_print(struct acc_level *lv, enum anvil_model m, enum out_format f
 			anvil_model_name(m), OUT_ERR_NOISE);
 	if (!st && t && model > 0)
 		fprintf(f, "MISSED: model: the numerics meet the target, but the model's own error\n"
-			"(%.1e relative: the physical contact's radiation lag's next term, or the\n"
-			"reflections the row leaves out) is above it: no finer level lowers it\n",
+			"(%.1e relative: what the physical contact's remainder leaves out, its\n"
+			"third order and the contact's supersonic start, or the reflections the\n"
+			"row leaves out) is above it: no finer level lowers it\n",
 			model);
 	if (st) {
 		cli_error("accuracy: %s", anvil_strerror(st));
