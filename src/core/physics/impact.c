@@ -248,17 +248,31 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * w_c''; a P = K sqrt(R) alpha^2 and P' P'' = (9/8) K^2 are finite as
  * alpha -> 0):
  *   c_u = 2 g2 K sqrt(R) - (9/8) beta^2 K^2,  c_x = 2 g2 K sqrt(R) - (9/4) beta^2 K^2.
- * The beta^2 part is the first-order reduction's own next term: without it
- * the model's loss differs from Hunter's beta int (dP/dt)^2 at relative
- * O(f) (tests/test_contact.c measures the change of order).  Sigma is
- * O(f^2) of alpha, and tends to c_u u^2 as alpha -> 0: the outer solution
- * starts and ends where W - w_c = c_u u^2, not 0 (the inner region, while
- * the contact spreads faster than the waves, a few R V0^2 / c2^2, is not
- * modelled: solver_phys.c puts that shift into t_s's error).  So the
- * state and the ends see A - c_u u^2 (sg, per node), and P solves the
- * root with A - Sigma(P) by three fixed-point rounds (dSigma/dP is
- * O(f^2) of the Hertz stiffness); w_c'' is the BDF2 of dw_c/dt's nodes
- * (restarted on a grown step). */
+ * The beta^2 part is the first-order reduction's own next term, of the
+ * same order as g2's (doc/contact-model.md).  Sigma is O(f^2) of alpha
+ * and smooth in time, so it enters each step explicitly: in contact, the
+ * last two nodes' values extrapolated (second order; a grown step's first
+ * node from the steps dt/2 then dt), each node's own value computed after
+ * its step.  w_c'' passes the lag's low-pass twice (impact.h, tau_lag: a
+ * second stage on dw_c/dt's filtered value, gain at most 1/tau_lag^2 up
+ * to Nyquist, where the expansion no longer holds anyway): the BDF2 of
+ * the filtered dw_c/dt instead has gain 1/(tau_lag dt), and the explicit
+ * loop through the layer's first arrival ran away as dt fell (the paper's
+ * case lost its end in the run at half tau_lag).  Without the low-pass
+ * (tau_lag = 0, tests) the BDF2 of dw_c/dt's nodes, restarted on a grown
+ * step.  Taken implicitly, Sigma's u would be the
+ * velocity had P_n been 0, which on a layer (dw_c/dt's gain e0 on P_n)
+ * is far from the contact's: a contact at 1 km/s on h = r0 then "ended"
+ * at its peak.  Out of contact Sigma is c_u u^2 (P_n = 0 exactly).  It
+ * tends to that as alpha -> 0: the outer solution starts and ends where
+ * W - w_c = c_u u^2, not 0 (the inner region, while the contact spreads
+ * faster than the waves, a few R V0^2 / c2^2, is not modelled:
+ * solver_phys.c puts that shift into t_s's error).  So the state and the
+ * ends see A - Sigma, sg holding each node's Sigma as its step used it
+ * (the exact end search interpolates it: W - w_c - sg is then alpha -
+ * beta Q at a node in contact, > 0, and the state's A - sg at the next);
+ * before the outer solution's start the bodies touch without force
+ * (on[0] = 0 stays the touch). */
 struct lag2 {
 	double cu, cx;
 };
@@ -272,21 +286,37 @@ static struct lag2 lag2_of(const struct ctx *c)
 	return (struct lag2){ gk - 1.125 * bk * bk, gk - 2.25 * bk * bk };
 }
 
-/* P_n with the second order: Sigma(P) from u = u0 - D P and w_c'' from
- * dw_c/dt = wd0 + e0 P against the last two nodes' ud1, ud2 (NaN: none). */
-static double lag2_root(const struct lag2 *l, const struct anvil_params *p, double bD, double B,
-			double b, double u0, double D, double A, double P, double wd0, double e0,
-			double ud1, double ud2, double dt, double *sig)
+/* Sigma at node n before its step, what decides the state: in contact
+ * (after a force) the last two nodes' sa1, sa2 extrapolated, else c_u
+ * u0^2 (P_n = 0). */
+static double lag2_before(const struct lag2 *l, const struct ctx *c, size_t n, int in,
+			  double impulse, double u0, double sa1, double sa2)
 {
-	for (int j = 0; j <= 3; j++) {
-		double x = cbrt(P), u = u0 - D * P, ud = wd0 + e0 * P;
-		double wdd = isnan(ud1) ? 0.0 : isnan(ud2) ? (ud - ud1) / dt
-					: (3.0 * ud - 4.0 * ud1 + ud2) / (2.0 * dt);
-		*sig = l->cu * u * u - l->cx * p->k0 * x * x * (P / p->m1 + wdd);
-		if (j < 3) /* the last round: Sigma at the P returned */
-			P = A - *sig > 0 ? physical_root(bD, B, p->k0, b * u0, A - *sig) : 0.0;
+	if (!in || !(impulse > 0) || n < 2)
+		return l->cu * u0 * u0;
+	double r = n - c->seg0 >= 2 || !c->seg0 ? 1.0 : 2.0; /* the steps' ratio */
+	return sa1 + r * (sa1 - sa2);
+}
+
+/* d^2w_c/dt^2 at node n (see above) from dw_c/dt there, ud: low-passed
+ * (tl > 0; the second stage's state *z2 and ud's last value udp,
+ * trapezoidal as the first), else the BDF2 of ud, ud1, ud2 (NaN: none). */
+static double lag2_wdd(double ud, double ud1, double ud2, double udp, double tl, double rl,
+		       double dt, double *z2)
+{
+	if (tl > 0) {
+		*z2 = ((1.0 - rl) * *z2 + rl * (ud + udp)) / (1.0 + rl);
+		return (ud - *z2) / tl;
 	}
-	return P;
+	return isnan(ud1) ? 0.0 : isnan(ud2) ? (ud - ud1) / dt : (3.0 * ud - 4.0 * ud1 + ud2) / (2.0 * dt);
+}
+
+/* Sigma at node n for load P, relative velocity u, w_c'' wdd. */
+static double lag2_after(const struct lag2 *l, const struct anvil_params *p, double P, double u,
+			 double wdd)
+{
+	double x = cbrt(P);
+	return l->cu * u * u - l->cx * p->k0 * x * x * (P / p->m1 + wdd);
 }
 
 static int pass_physical(struct ctx *c, struct pass *s, double beta)
@@ -295,7 +325,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	const struct lag2 l2 = lag2_of(c);
 	double dt = s->dt, b = 1.5 * beta / p->k0;
 	double tl = c->tau_lag, rl = 0.5 * dt / tl, zl = 0; /* the lag's filter */
-	double ud1 = NAN, ud2 = NAN; /* dw_c/dt at the last two nodes */
+	double ud1 = NAN, ud2 = NAN, udp = 0, z2 = 0; /* dw_c/dt's last nodes; the second stage */
+	double sa1 = 0, sa2 = 0; /* Sigma's own values at the last two nodes */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
 	int in = 1;
@@ -349,9 +380,13 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			e0 = g0 / dt;
 		}
 		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1, u0 = v0 - wd0;
-		s->sg[n] = l2.cu * u0 * u0; /* the outer solution's alpha = 0 (above) */
-		double Ae = A - s->sg[n];
-		st = impact_contact_state(c, s, n, Ae, a_prev, amax, impulse, &in, &ioff);
+		double sgd = lag2_before(&l2, c, n, in, impulse, u0, sa1, sa2);
+		double Ae = A - sgd;
+		s->sg[n] = sgd; /* before the state: it may end a contact here */
+		/* touching before the outer solution's start (above): no force */
+		int pre = in && !(impulse > 0) && !(Ae > 0);
+		if (!pre)
+			st = impact_contact_state(c, s, n, Ae, a_prev, amax, impulse, &in, &ioff);
 		/* at rest on the plate before the chatter, or before a contact's
 		 * end was lost (impact_rest.c) */
 		if ((st == IMPACT_BUDGET || st == IMPACT_END_LOST) && impact_rest_fallback(s))
@@ -359,11 +394,15 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (st)
 			return st;
 		double D = 0.5 * dt / p->m1 + e0;
-		if (in)
+		if (in && !pre)
 			P = physical_root(b * D, B, p->k0, b * u0, Ae);
-		if (in && (l2.cu != 0 || l2.cx != 0)) {
-			P = lag2_root(&l2, p, b * D, B, b, u0, D, A, P, wd0, e0, ud1, ud2, dt, &sig);
-			s->sg[n] = l2.cu * (u0 - D * P) * (u0 - D * P);
+		if (in && P > 0 && (l2.cu != 0 || l2.cx != 0)) {
+			/* one round: Sigma at that P (the filter's trial state),
+			 * then the step's root with it */
+			double zt = z2, ud = wd0 + e0 * P, u = u0 - D * P;
+			double s1 = lag2_after(&l2, p, P, u, lag2_wdd(ud, ud1, ud2, udp, tl, rl, dt, &zt));
+			P = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1) : 0.0;
+			s->sg[n] = sgd = s1;
 		}
 		double x = cbrt(P);
 		a_prev = in ? p->k0 * x * x : Ae; /* alpha_H in contact; the gap's A out of it */
@@ -373,11 +412,17 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		s->wc[n] = conv + P * g0;
 		if (tl > 0) /* the filter's state, trapezoidal (Tustin) */
 			zl = ((1.0 - rl) * zl + rl * (s->wc[n] + s->wc[n - 1])) / (1.0 + rl);
-		ud2 = ud1, ud1 = wd0 + e0 * P;
 		impulse += 0.5 * dt * (s->P[n - 1] + P);
 		s->v[n] = p->V0 - impulse / p->m1;
 		if (in)
 			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
+		/* Sigma: the node's own in contact, else the value its state saw
+		 * (what the exact end search interpolates, impact_end.c) */
+		double ud = wd0 + e0 * P;
+		lag2_wdd(ud, ud1, ud2, udp, tl, rl, dt, &z2); /* the filter's state */
+		sig = P > 0 ? sgd : 0.0;
+		sa2 = sa1, sa1 = sgd;
+		ud2 = ud1, ud1 = ud, udp = ud;
 		s->W[n] = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1) -
 			  mh / p->m1;
 		s->w[n] = s->wc[n] - beta * Q + sig;
