@@ -250,29 +250,27 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  *   c_u = 2 g2 K sqrt(R) - (9/8) beta^2 K^2,  c_x = 2 g2 K sqrt(R) - (9/4) beta^2 K^2.
  * The beta^2 part is the first-order reduction's own next term, of the
  * same order as g2's (doc/contact-model.md).  Sigma is O(f^2) of alpha
- * and smooth in time, so it enters each step explicitly: in contact, the
- * last two nodes' values extrapolated (second order; a grown step's first
- * node from the steps dt/2 then dt), each node's own value computed after
- * its step.  w_c'' passes the lag's low-pass twice (impact.h, tau_lag: a
- * second stage on dw_c/dt's filtered value, gain at most 1/tau_lag^2 up
- * to Nyquist, where the expansion no longer holds anyway): the BDF2 of
- * the filtered dw_c/dt instead has gain 1/(tau_lag dt), and the explicit
- * loop through the layer's first arrival ran away as dt fell (the paper's
- * case lost its end in the run at half tau_lag).  Without the low-pass
- * (tau_lag = 0, tests) the BDF2 of dw_c/dt's nodes, restarted on a grown
- * step.  Taken implicitly, Sigma's u would be the
- * velocity had P_n been 0, which on a layer (dw_c/dt's gain e0 on P_n)
- * is far from the contact's: a contact at 1 km/s on h = r0 then "ended"
- * at its peak.  Out of contact Sigma is c_u u^2 (P_n = 0 exactly).  It
- * tends to that as alpha -> 0: the outer solution starts and ends where
- * W - w_c = c_u u^2, not 0 (the inner region, while the contact spreads
- * faster than the waves, a few R V0^2 / c2^2, is not modelled:
- * solver_phys.c puts that shift into t_s's error).  So the state and the
- * ends see A - Sigma, sg holding each node's Sigma as its step used it
- * (the exact end search interpolates it: W - w_c - sg is then alpha -
- * beta Q at a node in contact, > 0, and the state's A - sg at the next);
- * before the outer solution's start the bodies touch without force
- * (on[0] = 0 stays the touch). */
+ * and tends to c_u u^2 as alpha -> 0: the outer solution starts and ends
+ * where W - w_c = c_u u^2, not 0 (the inner region, while the contact
+ * spreads faster than the waves, a few R V0^2 / c2^2, is not modelled:
+ * solver_phys.c puts that shift into t_s's error).  So the state sees
+ * A - Sigma, with Sigma before the step (lag2_before): in contact the
+ * last two nodes' extrapolated, out of contact c_u u0^2 (P_n = 0 there).
+ * Not Sigma at P_n = 0 in contact: on a layer dw_c/dt has a gain e0 on
+ * P_n, and the velocity had P_n been 0 is far from the contact's (1 km/s
+ * on h = r0 then "ended" at the peak).  P_n solves the root with A less
+ * that Sigma, then once more with Sigma at that P_n (one fixed-point
+ * round; dSigma/dP is O(f^2) of the Hertz stiffness).  sg keeps the
+ * Sigma each node's step used, so W - w_c - sg is alpha - beta Q > 0 at a
+ * node in contact and the state's A - sg at the next: the exact end
+ * search interpolates it (impact_end.c).  w_c'' passes the lag's low-pass
+ * twice (impact.h, tau_lag: gain at most 1/tau_lag^2 up to Nyquist,
+ * where the expansion no longer holds anyway); the BDF2 of the filtered
+ * dw_c/dt has gain 1/(tau_lag dt), and the paper's case lost its end in
+ * the run at half tau_lag.  Without the low-pass (tau_lag = 0, tests) the
+ * BDF2 of dw_c/dt's nodes, restarted on a grown step.  Before the outer
+ * solution's start the bodies touch without force (on[0] = 0 stays the
+ * touch). */
 struct lag2 {
 	double cu, cx;
 };
@@ -416,8 +414,6 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		s->v[n] = p->V0 - impulse / p->m1;
 		if (in)
 			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
-		/* Sigma: the node's own in contact, else the value its state saw
-		 * (what the exact end search interpolates, impact_end.c) */
 		double ud = wd0 + e0 * P;
 		lag2_wdd(ud, ud1, ud2, udp, tl, rl, dt, &z2); /* the filter's state */
 		sig = P > 0 ? sgd : 0.0;
