@@ -35,6 +35,26 @@ check_exit 2 'option without its value exits 2' "$ANVIL" run -o
 check_exit 2 'unknown format exits 2' "$ANVIL" run "$M" --format xml
 check_exit 2 'two scene files exit 2' "$ANVIL" run a.scene b.scene
 
+# ---- a thickness in r0 follows a radius changed on the command line ----
+check 'a new diameter runs' "$ANVIL" run "$M" -s impactor.diameter=10mm
+assert 'the note says the 1 r0 layer followed it: 5 mm, was 4 mm' \
+	grep -qx 'anvil: note: layer.thickness = 1 r0 follows the radius: now 5 mm, was 4 mm (give it in mm to keep it: -s layer.thickness=4mm)' "$tmp/err"
+assert 'the summary has the moved layer' grep -q 'h = 1 r0 = 5 mm' "$tmp/out"
+check 'the same with -q' "$ANVIL" run "$M" -q -s impactor.diameter=10mm
+assert '  no note with -q' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check 'the thickness given in r0 too' "$ANVIL" run "$M" -s impactor.diameter=10mm -s Layer.Thickness=1r0
+assert '  no note: the user chose it' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check 'the radius set to its own value' "$ANVIL" run "$M" -s impactor.radius=4mm
+assert '  no note: nothing moved' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+printf '[impactor]\nradius = 3 mm\n[layer]\nthickness = 2 r0\n' >"$tmp/r3.scene"
+check "a file's own radius" "$ANVIL" run "$M" "$tmp/r3.scene"
+assert '  no note: the file says 2 r0 with its 3 mm' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check "the file's radius changed on the command line" "$ANVIL" run "$M" "$tmp/r3.scene" -s impactor.radius=5mm
+assert '  the note, from the file'"'"'s 6 mm' grep -q 'thickness = 2 r0 follows the radius: now 10 mm, was 6 mm' "$tmp/err"
+printf '[layer]\nthickness = 4 mm\n' >"$tmp/mm.scene"
+check 'a thickness in mm' "$ANVIL" run "$M" "$tmp/mm.scene" -s impactor.diameter=10mm
+assert '  no note: it stays' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+
 # ---- scene errors ----
 printf '[impactor]\nmass = 12.2 g\nmas = 3 g\n' >"$tmp/bad.scene"
 check_exit 2 'bad scene key exits 2' "$ANVIL" run "$M" "$tmp/bad.scene"

@@ -387,7 +387,7 @@ static int fargs_parse(struct fargs *a, int argc, char **argv, const char *mine)
 static int fctx_scene(struct fctx *c, const struct fargs *a)
 {
 	struct anvil_err err = {0};
-	int st = cli_scene(&c->sc, a->scene, a->sets.v, a->sets.n);
+	int st = cli_scene_q(&c->sc, a->scene, a->sets.v, a->sets.n, a->quiet);
 	if (st)
 		return cli_exit_code(st);
 	anvil_result_init(&c->r, ANVIL_MODEL_LAYER);
