@@ -19,6 +19,9 @@ check '--help exits 0' "$ANVIL" --help
 for c in run table materials accuracy plot tui; do
 	assert "--help lists $c" grep -q "^  $c " "$tmp/out"
 done
+assert '--help: plot draws PNG, SVG or PDF' grep -q '^  plot .*(PNG, SVG or PDF)' "$tmp/out"
+check 'field --help exits 0' "$ANVIL" field --help
+assert "field --help: the usage line has -f" grep -q '^  *\[--quantity LIST\] \[-o FILE\] \[-f FMT\]' "$tmp/out"
 check '-h exits 0' "$ANVIL" -h
 check '--version exits 0' "$ANVIL" --version
 assert '--version prints the version' grep -Eq '^anvil [0-9]+\.[0-9]+' "$tmp/out"
@@ -449,5 +452,16 @@ assert '...and a footnote says no finer level lowers it' \
 	grep -q "no finer level lowers it" "$tmp/out"
 check_exit 1 'run at fine: the warning names the model'"'"'s share' "$ANVIL" run -q -m layer -s solver.accuracy=fine -s impact.velocity='100 m/s'
 assert '...of which the model'"'"'s own' grep -q "of which the model's own [0-9.e-]* (no finer level lowers it)" "$tmp/err"
+
+# ---- the table's times in significant digits beyond a second ----
+check 'a 1000 t impactor (warned) on the default layer' "$ANVIL" run "$M" -s impactor.mass=1000000kg
+assert "...zener's t_s of 3.3e10 us in four significant digits" \
+	awk '$1 == "zener" { z = $3 } END { exit !(z ~ /^3\.3[0-9]*e\+10$/) }' "$tmp/out"
+assert '...hertz'"'"'s 57830.19 us with its two decimals' \
+	awk '$1 == "hertz" { h = $3 } END { exit !(h ~ /^5[0-9][0-9][0-9][0-9]\.[0-9][0-9]$/) }' "$tmp/out"
+check 'a 1 nm plate: the dashpot limit' "$ANVIL" run -m zener -s layer.thickness=1e-9m
+assert '...its row: t_s 1.861e+16 us, t_max 8.917e-07 us' \
+	awk '$1 == "zener" { t = $3; m = $5 } END { exit !(t ~ /^1\.86[0-9]e\+16$/ && m ~ /e-07$/) }' "$tmp/out"
+assert '...its note says it is the limit' grep -q '^zener: dashpot limit (lambda\* = 1.01e+13)' "$tmp/out"
 
 done_testing

@@ -148,6 +148,8 @@ T resize-window -t main -x 80 -y 24
 assert 'at 80x24 the verdict still says quasi-static Hertz, and its stress' \
 	wait_for main 'layer yields \(quasi-static Hertz\): [0-9.]+ [GM]Pa'
 assert '  and the impactor line its stress' wait_for main 'impactor yields too: [0-9.]+ [GM]Pa von Mises'
+assert '  the header'"'"'s title, cut, ends in an ellipsis' \
+	wait_for main '^ anvil tui  anvil-scene\.scene  .*(…|\.\.\.) +(last run|from cache)'
 T resize-window -t main -x 60 -y 20
 assert 'a 60x20 terminal gets the size message' \
 	wait_for main 'anvil needs at least 80x24; this terminal is 60x20'

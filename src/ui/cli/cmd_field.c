@@ -265,7 +265,7 @@ static const struct option field_longopts[] = {
 static void field_usage(FILE *f)
 {
 	fputs("usage: anvil field [SCENE] [-s KEY=VALUE]... --at R,Z [--at R,Z]...\n"
-	      "                   [--quantity LIST] [-o FILE] [--no-yield] [-q]\n"
+	      "                   [--quantity LIST] [-o FILE] [-f FMT] [--no-yield] [-q]\n"
 	      "Time histories of the displacements and stresses at points inside the layer\n"
 	      "during the impact of the scene (TSV, 201 samples over the contact).\n"
 	      "  --at R,Z          a point: radius and depth below the loaded face, with\n"
