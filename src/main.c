@@ -20,7 +20,7 @@ static const struct command commands[] = {
 	{"table", anvil_cmd_table, "the paper's Tables 2 and 3, ours beside the printed values"},
 	{"materials", anvil_cmd_materials, "list the built-in materials"},
 	{"accuracy", anvil_cmd_accuracy, "run a model at every accuracy level and check the targets"},
-	{"plot", anvil_cmd_plot, "draw a chart as PNG with gnuplot"},
+	{"plot", anvil_cmd_plot, "draw a chart (PNG, SVG or PDF) with gnuplot"},
 	{"tui", anvil_cmd_tui, "the interactive terminal interface"},
 	{"plan", anvil_cmd_plan, "how 'run' will compute a scene, and why (nothing is run)"},
 	{"field", anvil_cmd_field, "displacements and stresses inside the layer over time"},

@@ -19,6 +19,9 @@ check '--help exits 0' "$ANVIL" --help
 for c in run table materials accuracy plot tui; do
 	assert "--help lists $c" grep -q "^  $c " "$tmp/out"
 done
+assert '--help: plot draws PNG, SVG or PDF' grep -q '^  plot .*(PNG, SVG or PDF)' "$tmp/out"
+check 'field --help exits 0' "$ANVIL" field --help
+assert "field --help: the usage line has -f" grep -q '^  *\[--quantity LIST\] \[-o FILE\] \[-f FMT\]' "$tmp/out"
 check '-h exits 0' "$ANVIL" -h
 check '--version exits 0' "$ANVIL" --version
 assert '--version prints the version' grep -Eq '^anvil [0-9]+\.[0-9]+' "$tmp/out"
@@ -34,6 +37,26 @@ check_exit 2 'unknown top-level option exits 2' "$ANVIL" --no-such-option
 check_exit 2 'option without its value exits 2' "$ANVIL" run -o
 check_exit 2 'unknown format exits 2' "$ANVIL" run "$M" --format xml
 check_exit 2 'two scene files exit 2' "$ANVIL" run a.scene b.scene
+
+# ---- a thickness in r0 follows a radius changed on the command line ----
+check 'a new diameter runs' "$ANVIL" run "$M" -s impactor.diameter=10mm
+assert 'the note says the 1 r0 layer followed it: 5 mm, was 4 mm' \
+	grep -qx 'anvil: note: layer.thickness = 1 r0 follows the radius: now 5 mm, was 4 mm (give it in mm to keep it: -s layer.thickness=4mm)' "$tmp/err"
+assert 'the summary has the moved layer' grep -q 'h = 1 r0 = 5 mm' "$tmp/out"
+check 'the same with -q' "$ANVIL" run "$M" -q -s impactor.diameter=10mm
+assert '  no note with -q' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check 'the thickness given in r0 too' "$ANVIL" run "$M" -s impactor.diameter=10mm -s Layer.Thickness=1r0
+assert '  no note: the user chose it' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check 'the radius set to its own value' "$ANVIL" run "$M" -s impactor.radius=4mm
+assert '  no note: nothing moved' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+printf '[impactor]\nradius = 3 mm\n[layer]\nthickness = 2 r0\n' >"$tmp/r3.scene"
+check "a file's own radius" "$ANVIL" run "$M" "$tmp/r3.scene"
+assert '  no note: the file says 2 r0 with its 3 mm' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
+check "the file's radius changed on the command line" "$ANVIL" run "$M" "$tmp/r3.scene" -s impactor.radius=5mm
+assert '  the note, from the file'"'"'s 6 mm' grep -q 'thickness = 2 r0 follows the radius: now 10 mm, was 6 mm' "$tmp/err"
+printf '[layer]\nthickness = 4 mm\n' >"$tmp/mm.scene"
+check 'a thickness in mm' "$ANVIL" run "$M" "$tmp/mm.scene" -s impactor.diameter=10mm
+assert '  no note: it stays' sh -c '! grep -q "note:" "$1"' sh "$tmp/err"
 
 # ---- scene errors ----
 printf '[impactor]\nmass = 12.2 g\nmas = 3 g\n' >"$tmp/bad.scene"
@@ -429,5 +452,16 @@ assert '...and a footnote says no finer level lowers it' \
 	grep -q "no finer level lowers it" "$tmp/out"
 check_exit 1 'run at fine: the warning names the model'"'"'s share' "$ANVIL" run -q -m layer -s solver.accuracy=fine -s impact.velocity='100 m/s'
 assert '...of which the model'"'"'s own' grep -q "of which the model's own [0-9.e-]* (no finer level lowers it)" "$tmp/err"
+
+# ---- the table's times in significant digits beyond a second ----
+check 'a 1000 t impactor (warned) on the default layer' "$ANVIL" run "$M" -s impactor.mass=1000000kg
+assert "...zener's t_s of 3.3e10 us in four significant digits" \
+	awk '$1 == "zener" { z = $3 } END { exit !(z ~ /^3\.3[0-9]*e\+10$/) }' "$tmp/out"
+assert '...hertz'"'"'s 57830.19 us with its two decimals' \
+	awk '$1 == "hertz" { h = $3 } END { exit !(h ~ /^5[0-9][0-9][0-9][0-9]\.[0-9][0-9]$/) }' "$tmp/out"
+check 'a 1 nm plate: the dashpot limit' "$ANVIL" run -m zener -s layer.thickness=1e-9m
+assert '...its row: t_s 1.861e+16 us, t_max 8.917e-07 us' \
+	awk '$1 == "zener" { t = $3; m = $5 } END { exit !(t ~ /^1\.86[0-9]e\+16$/ && m ~ /e-07$/) }' "$tmp/out"
+assert '...its note says it is the limit' grep -q '^zener: dashpot limit (lambda\* = 1.01e+13)' "$tmp/out"
 
 done_testing

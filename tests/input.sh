@@ -76,7 +76,8 @@ assert '  warned: heavier than a solid ball (FILE:LINE of the mass)' \
 	grep -q "^anvil: warning: $tmp/dense.scene:4: impactor.mass: 1 kg is above 4.7[0-9] g (a solid ball of this diameter and material" "$tmp/err"
 check 'a 4 g ball of 10 mm, or its own mass, is silent' "$ANVIL" plan -s impactor.shape=ball \
 	-s impactor.diameter=10mm -s impactor.mass=4g
-assert '  no warning' test ! -s "$tmp/err"
+assert '  no warning: only the note that the 1 r0 layer followed the diameter' \
+	sh -c '[ "$(wc -l <"$1")" -eq 1 ] && grep -q "^anvil: note: layer.thickness = 1 r0 follows the radius" "$1"' sh "$tmp/err"
 check '--strict on a plausible scene is silent' "$ANVIL" --strict plan
 assert '  no warning' test ! -s "$tmp/err"
 

@@ -169,6 +169,10 @@ assert "...whose peak force ($pmax kN) the chart reaches" awk -v p="$pmax" \
 check "the examples' title names both materials: not said twice" \
 	"$ANVIL" plot force -s solver.models=hertz --script -
 assert "subtitle: title, then the numbers" grep -q "(Pyr'*yev et al. 2024): m = 12.2 g, r₀ = 4 mm" "$tmp/out"
+check "a drop's history chart" "$ANVIL" plot history -s impact.drop_height=0.5m -s solver.models=hertz,zener --script -
+assert "...its title gives V0 in three digits" grep -q "^set label 1001 'Contact force, impactor velocity and deflection, V_0 = 3.13 m/s'" "$tmp/out"
+assert "...its subtitle names r0 once and leaves V0 to the title" \
+	awk '/^set label 1002 / { n = gsub(/r₀ = /, ""); v = /V₀/ } END { exit !(n == 1 && !v) }' "$tmp/out"
 check_exit 2 "an unknown image type is a usage error" "$ANVIL" plot force -o "$tmp/x.jpg"
 assert "the image types are named" grep -q "png, .svg or .pdf" "$tmp/err"
 check "restitution-thickness respects -s layer.thickness" \

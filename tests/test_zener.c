@@ -324,6 +324,125 @@ static void test_history_long(void)
 	anvil_result_free(&r);
 }
 
+/* The dashpot limit (zener_dashpot.c) against the ODE where both run,
+ * lambda* = 1e2 .. 1e6 at tol 1e-12: every value within the sum of the
+ * two estimates; the first-order terms the limit keeps are the ODE's own
+ * deviation from the bare limit (the derivation's check, not the fit's);
+ * the universal constants of the end against the ODE; the switch at
+ * ANVIL_ZENER_DASHPOT continuous; a 1 nm plate's row (lambda* = 1e13,
+ * where the ODE's step collapses) with its note and a history that keeps
+ * eq (8) and peaks at t_max; that history against the ODE's at 1e5. */
+static void test_dashpot(void)
+{
+	struct anvil_zener_sol o, d;
+	int bad = 0, n = 0;
+	double worst = 0, lworst = 0;
+	for (double l = 100; l < ANVIL_ZENER_DASHPOT * 0.99; l *= pow(10.0, 0.25), n++) {
+		int st = anvil_zener_solve(l, 1e-12, &o, NULL);
+		st = st ? st : anvil_zener_dashpot(l, &d, NULL);
+		double q = st ? INFINITY
+			      : fmax(fmax(fabs(o.tau_s - d.tau_s) / (o.err_ts + d.err_ts),
+					  fabs(o.tau_max - d.tau_max) / (o.err_tmax + d.err_tmax)),
+				     fabs(o.alpha_max - d.alpha_max) / (o.err_amax + d.err_amax));
+		if (!(q <= 1))
+			bad++;
+		if (q > worst)
+			worst = q, lworst = l;
+	}
+	ok(!bad, "dashpot limit = ODE within both estimates at lambda* 1e2 .. 1e6 (%d values, %d out; worst %.2f of the sum at %g)",
+	   n, bad, worst, lworst);
+	const double ls[] = { 100, 1e3, 1e4 };
+	for (int i = 0; i < 3; i++) {
+		double l = ls[i], eps = pow(l, -5.0 / 3.0), l23 = pow(l, -2.0 / 3.0);
+		anvil_zener_solve(l, 1e-12, &o, NULL);
+		anvil_zener_dashpot(l, &d, NULL);
+		double s_max = d.tau_max / l23;
+		is_rel(1 - o.alpha_max / l23, 2.0 / 3.0 * eps * (s_max - 1), 0.01,
+		       "lambda* = %g: the ODE's alpha_max below lambda*^(-2/3) by (2/3) eps (s_max - 1) (P_max's impulse lost in the rise)", l);
+		/* (C_END's own uncertainty, 3e-8, is in the tolerance) */
+		is_abs(o.tau_s / l - 5 * log(l) - d.tau_s / l + 5 * log(l) + 3 * eps, 3 * eps,
+		       1e-3 * 3 * eps + 3e-8 + o.err_ts / l,
+		       "lambda* = %g: the ODE's t_s / (lambda* T) - 5 ln lambda* falls to its limit by 3 eps", l);
+		is_rel(s_max, 10.0 / 9.0 * log(l) + 0.764323, 1e-6,
+		       "lambda* = %g: s_max = (10/9) ln lambda* + (2/3) ln(9k/4)", l);
+	}
+	/* the end's constants: C_END from 1e6 (just below the switch), R_INF
+	 * from lambda* = 4 and 6, where rf lambda*^5 has converged and is
+	 * resolved */
+	anvil_zener_solve(0.999 * ANVIL_ZENER_DASHPOT, 1e-13, &o, NULL);
+	anvil_zener_dashpot(0.999 * ANVIL_ZENER_DASHPOT, &d, NULL);
+	ok(fabs(o.tau_s - d.tau_s) <= o.err_ts + d.err_ts,
+	   "C_END: tau_s %.12g (ODE, tol 1e-13) vs %.12g (limit), within %.2g", o.tau_s, d.tau_s,
+	   o.err_ts + d.err_ts);
+	anvil_zener_dashpot(100, &d, NULL);
+	double r_inf = d.rf * 1e10;
+	for (double l = 4; l <= 6; l += 2) {
+		anvil_zener_solve(l, 1e-13, &o, NULL);
+		ok(fabs(o.rf * pow(l, 5) - r_inf) <= (o.err_rf * pow(l, 5) + d.err_rf * 1e10),
+		   "R_INF: rf lambda*^5 = %.10f at lambda* = %g (ODE) vs %.10f", o.rf * pow(l, 5), l, r_inf);
+	}
+	struct anvil_zener_sol a, b;
+	int st = anvil_zener_solve(ANVIL_ZENER_DASHPOT * (1 - 1e-12), 1e-10, &a, NULL);
+	st = st ? st : anvil_zener_solve(ANVIL_ZENER_DASHPOT, 1e-10, &b, NULL);
+	ok(!st && fabs(a.tau_s - b.tau_s) <= a.err_ts + b.err_ts &&
+		   fabs(a.tau_max - b.tau_max) <= a.err_tmax + b.err_tmax &&
+		   fabs(a.alpha_max - b.alpha_max) <= a.err_amax + b.err_amax &&
+		   fabs(a.rf - b.rf) <= a.err_rf + b.err_rf,
+	   "continuous at the switch to the limit (t_s %.10g ODE vs %.10g limit)", a.tau_s, b.tau_s);
+	ok(anvil_zener_dashpot(99, &d, NULL) == ANVIL_EINVAL && anvil_zener_dashpot(NAN, &d, NULL) ==
+		   ANVIL_EINVAL, "the limit refuses lambda* < 100 and NaN");
+
+	struct anvil_params p;
+	struct anvil_result r, ro, rd;
+	struct anvil_err e;
+	const size_t nh = 201;
+	paper_params(&p, 1.0, 10.0);
+	p.lambda_star = 1e13;
+	p.alpha_star = p.lambda_star * p.T / p.m1; /* lambda* = alpha* m1 / T */
+	anvil_result_init(&r, ANVIL_MODEL_ZENER);
+	st = anvil_zener_run(&p, nh, &r, &e);
+	if (ok(st == ANVIL_OK, "lambda* = 1e13 runs (%s)", st ? e.msg : "ok")) {
+		is_rel(r.Pmax.val, p.V0 / p.alpha_star, 1e-12,
+		       "  P_max = V0 / alpha* (%.4g kN +- %.1g)", r.Pmax.val * 1e-3, r.Pmax.err * 1e-3);
+		ok(strstr(r.note, "dashpot limit") && r.Rf.val >= 0 && r.Rf.val < 1e-60,
+		   "  its note says so (%.60s...), R_f %.2g", r.note, r.Rf.val);
+		double dw = 0, pk = 0;
+		size_t imax = 0;
+		for (size_t i = 0; i < nh; i++) {
+			double w8 = p.alpha_star * p.m1 * (p.V0 - r.hist.v[i]);
+			dw = fmax(dw, fabs(r.hist.w[i] - w8) / (p.alpha_star * p.m1 * p.V0));
+			if (r.hist.P[i] > pk)
+				pk = r.hist.P[i], imax = i;
+		}
+		ok(dw < 1e-12 && pk <= r.Pmax.val * (1 + 1e-9) && r.hist.t[imax] < 30 * r.tmax.val,
+		   "  history: w = alpha* m1 (V0 - v), peak %.6g of P_max at %.3g t_max", pk / r.Pmax.val,
+		   r.hist.t[imax] / r.tmax.val);
+	}
+	anvil_result_free(&r);
+	/* the limit's history against the ODE's at lambda* = 1e5, at the ODE's
+	 * sample times (the same warp: the same tau_max and tau_s to 1e-8) */
+	p.lambda_star = 1e5;
+	p.alpha_star = p.lambda_star * p.T / p.m1;
+	anvil_result_init(&ro, ANVIL_MODEL_ZENER);
+	st = anvil_zener_run(&p, nh, &ro, &e);
+	anvil_zener_dashpot(p.lambda_star, &d, NULL);
+	anvil_result_init(&rd, ANVIL_MODEL_ZENER);
+	struct anvil_history *hd = &rd.hist;
+	st = st ? st : anvil_history_alloc(hd, nh);
+	st = st ? st : anvil_zener_dashpot_history(&p, &d, hd);
+	if (ok(!st, "lambda* = 1e5: ODE and limit histories")) {
+		double dp = 0, eps = pow(p.lambda_star, -5.0 / 3.0);
+		double s_max = d.tau_max * pow(p.lambda_star, 2.0 / 3.0);
+		for (size_t i = 0; i + 1 < nh; i++)
+			if (ro.hist.P[i] > 1e-6 * ro.Pmax.val)
+				dp = fmax(dp, fabs(hd->P[i] - ro.hist.P[i]) / ro.Pmax.val);
+		ok(dp < eps * s_max, "  P(t) within eps s_max = %.2g of P_max where above 1e-6 of it (%.2g)",
+		   eps * s_max, dp);
+	}
+	anvil_result_free(&rd);
+	anvil_result_free(&ro);
+}
+
 static void test_errors(void)
 {
 	struct anvil_zener_sol s;
@@ -358,6 +477,7 @@ int main(void)
 	test_convergence();
 	test_history();
 	test_history_long();
+	test_dashpot();
 	test_errors();
 	plan(tap_n);
 	return done_testing();

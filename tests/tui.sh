@@ -99,7 +99,8 @@ ENVS="ANVIL_GNUPLOT=/nonexistent/gnuplot"
 start main -s solver.models=hertz,zener
 assert 'the results appear' wait_for main 'last run'
 assert 'the alternate screen is in use' [ "$(flag main alternate_on)" = 1 ]
-assert 'the verdict mark: the steel layer yields' wait_for main 'the steel layer yields: peak von Mises'
+assert 'the verdict mark: the layer yields, quasi-static Hertz' \
+	wait_for main 'layer yields \(quasi-static Hertz\): [0-9.]+ [GM]Pa von Mises, Y = '
 assert 'the shape row' wait_for main 'shape +rod'
 before=$(ts_zener main)
 assert "Zener's t_s is a number ($before us)" awk -v v="$before" 'BEGIN { exit !(v + 0 > 0) }'
@@ -143,6 +144,12 @@ check 'anvil run reads the saved scene' "$ANVIL" run "$tmp/anvil-scene.scene" -f
 run_ts=$(awk -F '\t' '$1 == "zener" { printf "%.4g", $4 }' "$tmp/out")
 assert "anvil run gives the t_s the TUI showed ($run_ts = $after)" [ "$run_ts" = "$after" ]
 
+T resize-window -t main -x 80 -y 24
+assert 'at 80x24 the verdict still says quasi-static Hertz, and its stress' \
+	wait_for main 'layer yields \(quasi-static Hertz\): [0-9.]+ [GM]Pa'
+assert '  and the impactor line its stress' wait_for main 'impactor yields too: [0-9.]+ [GM]Pa von Mises'
+assert '  the header'"'"'s title, cut, ends in an ellipsis' \
+	wait_for main '^ anvil tui  anvil-scene\.scene  .*(…|\.\.\.) +(last run|from cache)'
 T resize-window -t main -x 60 -y 20
 assert 'a 60x20 terminal gets the size message' \
 	wait_for main 'anvil needs at least 80x24; this terminal is 60x20'

@@ -2,9 +2,11 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <locale.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <time.h>
 #include <unistd.h>
 #include <sys/stat.h>
@@ -12,6 +14,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "common.h"
+#include "units.h"
 
 void cli_init(void)
 {
@@ -130,14 +133,57 @@ static const char *files_clash(const char *dest)
 	return what;
 }
 
+/* Whether one of sets names layer.thickness (keys are case-insensitive,
+ * as anvil_scene_set reads them). */
+static int sets_thickness(char *const *sets, int nsets)
+{
+	static const char key[] = "layer.thickness";
+	for (int i = 0; i < nsets; i++) {
+		const char *k = sets[i] + strspn(sets[i], " \t");
+		size_t n = strcspn(k, "= \t");
+		if (n == sizeof key - 1 && strncasecmp(k, key, n) == 0)
+			return 1;
+	}
+	return 0;
+}
+
+/* A thickness in r0 moved by a radius given on the command line: the user
+ * changed the impactor and may not expect the anvil to change with it. */
+static void radius_note(const struct anvil_scene *sc, double r_own, char *const *sets, int nsets)
+{
+	if (!sc->thickness_per_r0 || !isfinite(sc->thickness) || sc->radius == r_own ||
+	    sets_thickness(sets, nsets))
+		return;
+	char now[32], was[32];
+	anvil_units_format(sc->thickness * sc->radius, ANVIL_DIM_LENGTH, now, sizeof now);
+	anvil_units_format(sc->thickness * r_own, ANVIL_DIM_LENGTH, was, sizeof was);
+	char keep[32];
+	size_t k = 0;
+	for (const char *c = was; *c && k + 1 < sizeof keep; c++)
+		if (*c != ' ')
+			keep[k++] = *c; /* "4 mm" -> "4mm": one shell word */
+	keep[k] = '\0';
+	fprintf(stderr,
+		"anvil: note: layer.thickness = %g r0 follows the radius: now %s, was %s "
+		"(give it in mm to keep it: -s layer.thickness=%s)\n",
+		sc->thickness, now, was, keep);
+}
+
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets)
+{
+	return cli_scene_q(sc, path, sets, nsets, 0);
+}
+
+int cli_scene_q(struct anvil_scene *sc, const char *path, char *const *sets,
+		int nsets, int quiet)
 {
 	if (path && strcmp(path, "-") != 0)
 		files_add(path, "the scene file read", NULL);
 	struct anvil_err err = {0};
 	anvil_scene_default(sc);
 	int st = path ? anvil_scene_load(sc, path, &err) : ANVIL_OK;
+	double r_own = sc->radius;
 	for (int i = 0; !st && i < nsets; i++) {
 		char key[128];
 		const char *eq = strchr(sets[i], '=');
@@ -158,6 +204,8 @@ int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 		cli_error("%s", err.msg[0] ? err.msg : anvil_strerror(st));
 		return st;
 	}
+	if (!quiet)
+		radius_note(sc, r_own, sets, nsets);
 	return scene_warnings(sc, path);
 }
 

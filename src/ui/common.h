@@ -41,6 +41,11 @@ extern int cli_strict;
  * (ANVIL_EINVAL, exit 2). */
 int cli_scene(struct anvil_scene *sc, const char *path, char *const *sets,
 	      int nsets);
+/* cli_scene (which is this with quiet 0); unless quiet, a note on stderr
+ * when a thickness in r0 (the default scene's 1 r0) follows a radius that
+ * sets changed and sets do not give the thickness themselves. */
+int cli_scene_q(struct anvil_scene *sc, const char *path, char *const *sets,
+		int nsets, int quiet);
 
 /* The scene read once, at the edge: problem (problem.h), then plan (cache
  * may be NULL; it only prices the plan).  Statuses as anvil_problem_init

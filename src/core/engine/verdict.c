@@ -208,46 +208,81 @@ static void bending_text(const struct anvil_verdict *v, char *buf, size_t n)
 		 v->known && v->bend > v->stress ? ", the larger: judged on it" : "");
 }
 
-void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
+static const char *fate_word(enum anvil_hertz_fate fate, int known)
 {
-	char s[32], l[32], where[96];
-	const char *what = v->fate == ANVIL_HERTZ_YIELDS   ? "yields"
-			   : v->fate == ANVIL_HERTZ_CRACKS ? "cracks"
-			   : !v->known                     ? "is not judged"
-							   : "stays elastic";
-	stress_text(v->stress, s, sizeof s);
-	stress_text(v->limit, l, sizeof l);
+	return fate == ANVIL_HERTZ_YIELDS   ? "yields"
+	       : fate == ANVIL_HERTZ_CRACKS ? "cracks"
+	       : !known                     ? "is not judged"
+					    : "stays elastic";
+}
+
+/* Where the layer's stress peaks. */
+static void layer_where(const struct anvil_verdict *v, char *buf, size_t n)
+{
 	if (v->brittle)
-		snprintf(where, sizeof where, "at the contact edge r = a = %.3g mm", v->a * 1e3);
+		snprintf(buf, n, "at the contact edge r = a = %.3g mm", v->a * 1e3);
 	else if (v->r <= 0.5 * v->a)
-		snprintf(where, sizeof where, "at %.2g a = %.3g mm below the contact",
+		snprintf(buf, n, "at %.2g a = %.3g mm below the contact",
 			 v->a > 0 ? v->z / v->a : 0, v->z * 1e3);
 	else
-		snprintf(where, sizeof where, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
-	char qs[160] = " (quasi-static Hertz)";
-	if (v->at_row)
-		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max)");
+		snprintf(buf, n, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
+}
+
+/* Which force the quasi-static Hertz field is at ("" when the row's
+ * own): after "quasi-static Hertz". */
+static void qs_force(const struct anvil_verdict *v, char *buf, size_t n)
+{
 	if (v->qs_ratio > 0)
-		snprintf(qs, sizeof qs, " (quasi-static Hertz at the layer's computed P_max: the contact "
-			 "lasts %.2g times 2h/c1)", v->qs_ratio);
+		snprintf(buf, n, " at the layer's computed P_max: the contact lasts %.2g times 2h/c1",
+			 v->qs_ratio);
+	else
+		snprintf(buf, n, "%s", v->at_row ? " at the layer's computed P_max" : "");
+}
+
+void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	char s[32], l[32], where[96], f[96], qs[160] = "";
+	stress_text(v->stress, s, sizeof s);
+	stress_text(v->limit, l, sizeof l);
+	layer_where(v, where, sizeof where);
+	qs_force(v, f, sizeof f);
+	if (!v->dynamic)
+		snprintf(qs, sizeof qs, " (quasi-static Hertz%s)", f);
 	char bend[224] = "";
 	if (v->bend_state != 0) /* tried: a long contact's (yield.c) or the TUI's */
 		bending_text(v, bend, sizeof bend);
-	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s%s", v->material, what,
+	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s%s", v->material,
+		 fate_word(v->fate, v->known),
 		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
-		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
-		 v->dynamic ? "" : qs,
+		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown", qs,
 		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "", bend);
+}
+
+void anvil_verdict_text_screen(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	char s[32], l[32], where[96], f[96] = "";
+	stress_text(v->stress, s, sizeof s);
+	stress_text(v->limit, l, sizeof l);
+	layer_where(v, where, sizeof where);
+	if (!v->dynamic)
+		qs_force(v, f, sizeof f);
+	char bend[224] = "";
+	if (v->bend_state != 0)
+		bending_text(v, bend, sizeof bend);
+	snprintf(buf, n, "layer %s (%s): %s %s, %s%s%s, %s, t = %.3g us%s%s%s",
+		 fate_word(v->fate, v->known),
+		 v->dynamic ? "the dynamic field" : "quasi-static Hertz", s,
+		 v->brittle ? "edge tension (1-2nu) p0/3" : "von Mises",
+		 v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
+		 !v->known ? (v->brittle ? " (set layer.tensile)" : " (set layer.yield)") : "",
+		 where, v->t * 1e6, f[0] ? ";" : "", f, bend);
 }
 
 void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n)
 {
 	const struct anvil_verdict_impactor *im = &v->imp;
 	char s[32], l[32], where[96];
-	const char *what = im->fate == ANVIL_HERTZ_YIELDS   ? "yields"
-			   : im->fate == ANVIL_HERTZ_CRACKS ? "cracks"
-			   : !im->known                     ? "is not judged"
-							    : "stays elastic";
+	const char *what = fate_word(im->fate, im->known);
 	stress_text(im->stress, s, sizeof s);
 	stress_text(im->limit, l, sizeof l);
 	if (im->brittle)
@@ -259,4 +294,20 @@ void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_
 		 what, im->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
 		 im->brittle ? "tensile strength " : "Y = ", im->known ? l : "unknown",
 		 !im->known ? (im->brittle ? ": set impactor.tensile" : ": set impactor.yield") : "");
+}
+
+void anvil_verdict_impactor_text_screen(const struct anvil_verdict *v, char *buf, size_t n)
+{
+	const struct anvil_verdict_impactor *im = &v->imp;
+	char s[32], l[32];
+	stress_text(im->stress, s, sizeof s);
+	stress_text(im->limit, l, sizeof l);
+	if (im->brittle)
+		snprintf(buf, n, "impactor %s too: %s edge tension (1-2nu) p0/3, tensile strength %s%s, at the contact edge",
+			 fate_word(im->fate, im->known), s, im->known ? l : "unknown",
+			 im->known ? "" : " (set impactor.tensile)");
+	else
+		snprintf(buf, n, "impactor %s too: %s von Mises, Y = %s%s, at %.2g a = %.3g mm inside its tip",
+			 fate_word(im->fate, im->known), s, im->known ? l : "unknown",
+			 im->known ? "" : " (set impactor.yield)", v->a > 0 ? im->z / v->a : 0, im->z * 1e3);
 }

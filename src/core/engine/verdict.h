@@ -136,6 +136,16 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n);
  * inside its tip, Y = 57 MPa". */
 void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n);
 
+/* The two lines for a screen's notes, most telling first (the TUI cuts
+ * them at its width, 53 columns on 80): "layer yields (quasi-static
+ * Hertz): 5.27 GPa von Mises, Y = 1 GPa, at 0.48 a = 0.297 mm below the
+ * contact, t = 16.3 us; at the layer's computed P_max" with the bending
+ * clause after, and "impactor yields too: 5.06 GPa von Mises, Y = 57 MPa,
+ * at 0.49 a = ...".  What the field is ("quasi-static Hertz", "the
+ * dynamic field") always within the first 40 columns. */
+void anvil_verdict_text_screen(const struct anvil_verdict *v, char *buf, size_t n);
+void anvil_verdict_impactor_text_screen(const struct anvil_verdict *v, char *buf, size_t n);
+
 /* 1 when the layer or the impactor yields or cracks. */
 int anvil_verdict_fails(const struct anvil_verdict *v);
 

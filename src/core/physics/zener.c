@@ -222,6 +222,8 @@ static int zener_march(struct zener_ws *w, struct anvil_zener_sol *sol)
 		w->t0 = t;
 		memcpy(w->y0, y, sizeof y);
 		st = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &w->sys, &t, tend, &h, y);
+		if (st == GSL_FAILURE)
+			w->why = "the stepper's step fell below tau's rounding";
 		if (!st && !have_max && y[Y_DA] <= 0) {
 			st = zener_locate(w, Y_DA, t, &sol->tau_max);
 			sol->alpha_max = w->y[Y_A];
@@ -300,6 +302,8 @@ int anvil_zener_solve(double lambda_star, double tol, struct anvil_zener_sol *so
 		return st;
 	if (!sol)
 		return anvil_err_set(err, ANVIL_EINVAL, "zener: no solution given");
+	if (lambda_star >= ANVIL_ZENER_DASHPOT)
+		return anvil_zener_dashpot(lambda_star, sol, err);
 	st = zener_ws_init(&w, lambda_star);
 	if (st)
 		return anvil_err_set(err, st, "zener: out of memory");
@@ -363,7 +367,11 @@ static void zener_fill(const struct anvil_params *p, const struct anvil_zener_so
 
 static void zener_note(const struct anvil_params *p, struct anvil_result *r)
 {
-	if (isinf(p->h) || p->alpha_star == 0)
+	if (p->lambda_star >= ANVIL_ZENER_DASHPOT)
+		snprintf(r->note, sizeof r->note,
+			 "dashpot limit (lambda* = %.3g): the plate is a dashpot 1/alpha* to the impactor, P_max -> 1/alpha* V0, the impactor stops like exp(-t/(lambda* T)); the limit's remainder (below 1e-9 relative from lambda* = 1e6) is in the +-",
+			 p->lambda_star);
+	else if (isinf(p->h) || p->alpha_star == 0)
 		snprintf(r->note, sizeof r->note,
 			 "half-space: no plate term, the Hertz solution");
 	else if (p->h > p->r0)
@@ -371,6 +379,28 @@ static void zener_note(const struct anvil_params *p, struct anvil_result *r)
 			 "thin-plate theory; h/r0 = %g is thick for it", p->h / p->r0);
 	else
 		r->note[0] = '\0';
+}
+
+/* anvil_zener_run past ANVIL_ZENER_DASHPOT: the limit, no ODE. */
+static int zener_run_dashpot(const struct anvil_params *p, size_t nhist,
+			     struct anvil_result *r, struct anvil_err *err)
+{
+	struct anvil_zener_sol sol;
+	int st = anvil_zener_dashpot(p->lambda_star, &sol, err);
+	if (st)
+		return st;
+	zener_fill(p, &sol, r);
+	zener_note(p, r);
+	if (!nhist)
+		return ANVIL_OK;
+	st = anvil_history_alloc(&r->hist, nhist);
+	if (st)
+		return anvil_err_set(err, st, "zener: out of memory for %zu samples", nhist);
+	st = anvil_zener_dashpot_history(p, &sol, &r->hist);
+	if (st)
+		return anvil_err_set(err, st, "zener: the dashpot limit's history failed: %s",
+				     anvil_strerror(st));
+	return ANVIL_OK;
 }
 
 int anvil_zener_run(const struct anvil_params *p, size_t nhist,
@@ -385,6 +415,8 @@ int anvil_zener_run(const struct anvil_params *p, size_t nhist,
 		return st;
 	if (!(p->T > 0 && isfinite(p->T) && p->K > 0 && p->V0 > 0 && p->m1 > 0))
 		return anvil_err_set(err, ANVIL_EINVAL, "zener: no finite Hertz time scale");
+	if (p->lambda_star >= ANVIL_ZENER_DASHPOT)
+		return zener_run_dashpot(p, nhist, r, err);
 	st = zener_ws_init(&w, p->lambda_star);
 	if (st)
 		return anvil_err_set(err, st, "zener: out of memory");

@@ -265,7 +265,7 @@ static const struct option field_longopts[] = {
 static void field_usage(FILE *f)
 {
 	fputs("usage: anvil field [SCENE] [-s KEY=VALUE]... --at R,Z [--at R,Z]...\n"
-	      "                   [--quantity LIST] [-o FILE] [--no-yield] [-q]\n"
+	      "                   [--quantity LIST] [-o FILE] [-f FMT] [--no-yield] [-q]\n"
 	      "Time histories of the displacements and stresses at points inside the layer\n"
 	      "during the impact of the scene (TSV, 201 samples over the contact).\n"
 	      "  --at R,Z          a point: radius and depth below the loaded face, with\n"
@@ -387,7 +387,7 @@ static int fargs_parse(struct fargs *a, int argc, char **argv, const char *mine)
 static int fctx_scene(struct fctx *c, const struct fargs *a)
 {
 	struct anvil_err err = {0};
-	int st = cli_scene(&c->sc, a->scene, a->sets.v, a->sets.n);
+	int st = cli_scene_q(&c->sc, a->scene, a->sets.v, a->sets.n, a->quiet);
 	if (st)
 		return cli_exit_code(st);
 	anvil_result_init(&c->r, ANVIL_MODEL_LAYER);

@@ -824,7 +824,8 @@ static int plot_scene(struct plot_args *a)
 	if (!st) {
 		int vary_h = a->kind == PLOT_RESTITUTION_THICKNESS || a->kind == PLOT_MODELS ||
 			     (!a->fixed_h && a->kind != PLOT_ACCURACY);
-		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY ||
+		/* (a history chart's title gives V0: not said again below it) */
+		int vary_v = a->kind == PLOT_RESTITUTION_VELOCITY || history ||
 			     (!a->fixed_v && (a->kind == PLOT_RESTITUTION_THICKNESS ||
 					      a->kind == PLOT_RESTITUTION_LAMBDA));
 		if (!a->materials) /* with them, plot_sweep.c wrote it */

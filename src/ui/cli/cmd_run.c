@@ -374,7 +374,7 @@ static int run_scene(struct run_opts *o)
 	struct anvil_result res[2 * ANVIL_MODEL_COUNT]; /* a paper twin per model at most */
 	struct cli_out out = {0}, hist = {0};
 	int n = 0, tol = 0, failed = 0, code;
-	int st = cli_scene(&sc, o->scene, o->sets.v, o->sets.n);
+	int st = cli_scene_q(&sc, o->scene, o->sets.v, o->sets.n, o->quiet);
 	if (st)
 		return cli_exit_code(st);
 	if (!anvil_scene_models(&sc)) {

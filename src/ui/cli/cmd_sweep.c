@@ -330,7 +330,7 @@ static int resume_read(struct writer *w, size_t s0, size_t s1, unsigned char *sk
 static int sweep_build(struct sweep *sw, const struct sweep_opts *o)
 {
 	struct anvil_err err = {0};
-	int st = cli_scene(&sw->base, o->scene, o->sets.v, o->sets.n);
+	int st = cli_scene_q(&sw->base, o->scene, o->sets.v, o->sets.n, o->quiet);
 	if (st)
 		return cli_exit_code(st);
 	sw->zip = o->zip;

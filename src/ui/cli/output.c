@@ -475,6 +475,19 @@ static void table_header(struct out_grid *g)
 	out_grid_cell(g, "time/s");
 }
 
+/* A fixed-point column (the times, in us) keeps its two decimals from
+ * 0.01 to 1e6 (a second); beyond, the table's significant digits: 1e6 kg
+ * on a plate lasts 3.3e10 us, not "33204123778.45", and a dashpot-limit
+ * t_max of 8.9e-7 us is not "0.00". */
+#define TABLE_FIXED_MIN 0.01
+#define TABLE_FIXED_MAX 1e6
+static const char *table_fmt(const struct column *c, double x)
+{
+	if (strcmp(c->fmt, "%.2f") || x == 0 || !isfinite(x))
+		return c->fmt;
+	return fabs(x) >= TABLE_FIXED_MIN && fabs(x) < TABLE_FIXED_MAX ? c->fmt : "%#.4g";
+}
+
 static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 		      const struct anvil_result *r)
 {
@@ -482,7 +495,8 @@ static void table_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", row_name(r, b, sizeof b));
 	out_grid_cell(g, "%s", out_num(b, out_h_r0(sc, r), "%.4g"));
 	for (int i = 0; i < NCOLUMNS; i++) {
-		out_grid_cell(g, "%s", out_num(b, value(r, &columns[i]), columns[i].fmt));
+		double x = value(r, &columns[i]);
+		out_grid_cell(g, "%s", out_num(b, x, table_fmt(&columns[i], x)));
 		if (columns[i].err_name)
 			out_grid_cell(g, "%s", out_err(b, error(r, &columns[i]), "%.2g"));
 	}

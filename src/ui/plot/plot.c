@@ -345,21 +345,32 @@ void plot_chart_subtitle(struct plot_chart *c, const struct anvil_scene *sc,
 	if (vary_v)
 		v[0] = '\0';
 	else
-		snprintf(v, sizeof v, ", V₀ = %.4g m/s", sc->velocity);
+		snprintf(v, sizeof v, ", V₀ = %.3g m/s", sc->velocity);
 	char m[32];
 	if (sc->mass >= 1.0)
-		snprintf(m, sizeof m, "m = %.4g kg", sc->mass);
+		snprintf(m, sizeof m, "m = %.3g kg", sc->mass);
 	else
-		snprintf(m, sizeof m, "m = %.4g g", sc->mass * 1e3);
+		snprintf(m, sizeof m, "m = %.3g g", sc->mass * 1e3);
+	/* The title anvil made for a changed scene (anvil_scene_title) already
+	 * gives m, r0, V0 and h in the same 3 digits: said once.  It names
+	 * one h and V0, so a chart that varies either builds its own. */
+	const char *title = sc->title;
+	if (!sc->title_set && !anvil_scene_is_paper_case(sc)) {
+		if (!vary_h && !vary_v) {
+			snprintf(c->subtitle, sizeof c->subtitle, "%.*s", 200, title);
+			return;
+		}
+		title = "";
+	}
 	/* A title that names both materials (the examples' do) is not said
 	 * twice; a long one is cut: the subtitle is one line. */
 	int k;
-	if (names(sc->title, sc->impactor.mat.name) && names(sc->title, sc->layer.mat.name))
+	if (names(title, sc->impactor.mat.name) && names(title, sc->layer.mat.name))
 		k = snprintf(c->subtitle, sizeof c->subtitle, "%.*s: %s, r₀ = %s%s%s", 100,
-			     sc->title, m, r0, h, v);
+			     title, m, r0, h, v);
 	else
 		k = snprintf(c->subtitle, sizeof c->subtitle, "%.*s%s%s impactor (%s, "
-			     "r₀ = %s) on %s%s%s%s", 100, sc->title, sc->title[0] ? ": " : "",
+			     "r₀ = %s) on %s%s%s%s", 100, title, title[0] ? ": " : "",
 			     sc->impactor.mat.name, m, r0, sc->layer.mat.name,
 			     isfinite(hm) || vary_h ? " layer" : "", h, v);
 	if (k >= (int)sizeof c->subtitle)
@@ -627,7 +638,7 @@ int plot_chart_history(struct plot_chart *c, enum plot_kind kind,
 	}
 	static const char *const what[] = {"Contact force P(t)", "Impactor velocity v(t)",
 		"Deflection w(t) of the layer under the impactor"};
-	snprintf(c->title, sizeof c->title, "%s, V_0 = %g m/s",
+	snprintf(c->title, sizeof c->title, "%s, V_0 = %.3g m/s",
 		 kind == PLOT_HISTORY ? "Contact force, impactor velocity and deflection"
 		 : what[p0], n > 0 ? runs[0].V0 : 0.0);
 	double ts = history_time_unit(c, runs, n);

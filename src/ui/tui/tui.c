@@ -647,7 +647,7 @@ int anvil_cmd_tui(int argc, char **argv)
 	cli_init();
 	int rc = parse_args(argc, argv, &path, &sets);
 	if (!rc)
-		rc = cli_exit_code(cli_scene(&sc, path, sets.v, sets.n));
+		rc = cli_exit_code(cli_scene_q(&sc, path, sets.v, sets.n, 1));
 	cli_sets_free(&sets);
 	if (rc)
 		return rc < 0 ? EXIT_OK : rc;

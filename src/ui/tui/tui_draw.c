@@ -124,6 +124,8 @@ static const char *ellipsis(const struct tui_view *v)
 
 
 
+static void put_cut(int y, int x, int w, attr_t a, const char *s, const struct tui_view *v);
+
 static void draw_header(const struct tui_model *m, const struct tui_view *v)
 {
 	char right[160];
@@ -141,10 +143,12 @@ static void draw_header(const struct tui_model *m, const struct tui_view *v)
 	if (n > COLS / 2)
 		n = COLS / 2;
 	tui_put(0, COLS - n - 1, n, tui_attr(R_TITLE), right);
-	/* the file name matters more than the title: it goes first */
-	tui_putf(0, 1, COLS - n - 3, tui_attr(R_TITLE), "anvil tui  %s%s  %s",
-	     m->path[0] ? m->path : "(no file)", m->modified ? " [modified]" : "",
-	     m->sc.title);
+	/* the file name matters more than the title: it goes first; a title
+	 * cut short ends in an ellipsis, as the notes do */
+	char left[sizeof m->path + sizeof m->sc.title + 32];
+	snprintf(left, sizeof left, "anvil tui  %s%s  %s", m->path[0] ? m->path : "(no file)",
+		 m->modified ? " [modified]" : "", m->sc.title);
+	put_cut(0, 1, COLS - n - 3, tui_attr(R_TITLE), left, v);
 }
 
 static void draw_panel(const struct tui_model *m)

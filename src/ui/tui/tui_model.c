@@ -255,9 +255,9 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
 		return -1;
 	const struct anvil_verdict *v = m->have_verdict && m->verdict_gen == m->gen
 						? &m->verdict : &m->plan.verdict;
-	anvil_verdict_text(v, layer, n);
+	anvil_verdict_text_screen(v, layer, n);
 	if (v->imp.fate != ANVIL_HERTZ_ELASTIC)
-		anvil_verdict_impactor_text(v, imp, n);
+		anvil_verdict_impactor_text_screen(v, imp, n);
 	return anvil_verdict_fails(v);
 }
 
