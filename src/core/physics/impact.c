@@ -267,8 +267,9 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * twice (impact.h, tau_lag: gain at most 1/tau_lag^2 up to Nyquist,
  * where the expansion no longer holds anyway); the BDF2 of the filtered
  * dw_c/dt has gain 1/(tau_lag dt), and the paper's case lost its end in
- * the run at half tau_lag.  Without the low-pass (tau_lag = 0, tests) the
- * BDF2 of dw_c/dt's nodes, restarted on a grown step.  Before the outer
+ * the run at half tau_lag (so the second order needs tau_lag > 0:
+ * anvil_impact_run; with the BDF2 of an unfiltered dw_c/dt, gain 1/dt^2,
+ * a test's layer at h = r0 took 34 times the energy lost).  Before the outer
  * solution's start the bodies touch without force (on[0] = 0 stays the
  * touch). */
 struct lag2 {
@@ -296,17 +297,13 @@ static double lag2_before(const struct lag2 *l, const struct ctx *c, size_t n, i
 	return sa1 + r * (sa1 - sa2);
 }
 
-/* d^2w_c/dt^2 at node n (see above) from dw_c/dt there, ud: low-passed
- * (tl > 0; the second stage's state *z2 and ud's last value udp,
- * trapezoidal as the first), else the BDF2 of ud, ud1, ud2 (NaN: none). */
-static double lag2_wdd(double ud, double ud1, double ud2, double udp, double tl, double rl,
-		       double dt, double *z2)
+/* d^2w_c/dt^2 at node n (see above) from dw_c/dt there, ud, low-passed:
+ * the second stage's state *z2 and ud's last value udp, trapezoidal as
+ * the first (r = dt / (2 tl)). */
+static double lag2_wdd(double ud, double udp, double tl, double rl, double *z2)
 {
-	if (tl > 0) {
-		*z2 = ((1.0 - rl) * *z2 + rl * (ud + udp)) / (1.0 + rl);
-		return (ud - *z2) / tl;
-	}
-	return isnan(ud1) ? 0.0 : isnan(ud2) ? (ud - ud1) / dt : (3.0 * ud - 4.0 * ud1 + ud2) / (2.0 * dt);
+	*z2 = ((1.0 - rl) * *z2 + rl * (ud + udp)) / (1.0 + rl);
+	return (ud - *z2) / tl;
 }
 
 /* Sigma at node n for load P, relative velocity u, w_c'' wdd. */
@@ -323,7 +320,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	const struct lag2 l2 = lag2_of(c);
 	double dt = s->dt, b = 1.5 * beta / p->k0;
 	double tl = c->tau_lag, rl = 0.5 * dt / tl, zl = 0; /* the lag's filter */
-	double ud1 = NAN, ud2 = NAN, udp = 0, z2 = 0; /* dw_c/dt's last nodes; the second stage */
+	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
 	double sa1 = 0, sa2 = 0; /* Sigma's own values at the last two nodes */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
@@ -339,7 +336,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (L && (st = impact_grow_switch(c, s, L)))
 			return st;
 		if (L)
-			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0, ud1 = ud2 = NAN;
+			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0;
 		size_t i = n - c->seg0; /* the segment's node; n on the first */
 		if (i >= c->segcap)
 			break;
@@ -398,7 +395,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			/* one round: Sigma at that P (the filter's trial state),
 			 * then the step's root with it */
 			double zt = z2, ud = wd0 + e0 * P, u = u0 - D * P;
-			double s1 = lag2_after(&l2, p, P, u, lag2_wdd(ud, ud1, ud2, udp, tl, rl, dt, &zt));
+			double s1 = lag2_after(&l2, p, P, u, lag2_wdd(ud, udp, tl, rl, &zt));
 			P = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1) : 0.0;
 			s->sg[n] = sgd = s1;
 		}
@@ -415,10 +412,11 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (in)
 			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
 		double ud = wd0 + e0 * P;
-		lag2_wdd(ud, ud1, ud2, udp, tl, rl, dt, &z2); /* the filter's state */
+		if (tl > 0) /* the second stage's state */
+			lag2_wdd(ud, udp, tl, rl, &z2);
 		sig = P > 0 ? sgd : 0.0;
 		sa2 = sa1, sa1 = sgd;
-		ud2 = ud1, ud1 = ud, udp = ud;
+		udp = ud;
 		s->W[n] = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1) -
 			  mh / p->m1;
 		s->w[n] = s->wc[n] - beta * Q + sig;
@@ -703,9 +701,10 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	c.rest_long = impact_rest_long(p);
 	c.rest_last = o->rest_last;
 	if (o->physical && (!(o->beta >= 0) || !isfinite(o->beta) || !(o->g2 >= 0) ||
-			    !isfinite(o->g2) || o->scheme == ANVIL_SCHEME_PAPER))
+			    !isfinite(o->g2) || (o->g2 > 0 && !(o->tau_lag > 0)) ||
+			    o->scheme == ANVIL_SCHEME_PAPER))
 		return anvil_err_set(err, ANVIL_EINVAL,
-				     "impact: the physical contact needs beta >= 0, g2 >= 0 and the implicit scheme");
+				     "impact: the physical contact needs beta >= 0, g2 >= 0 (with g2 > 0, tau_lag > 0) and the implicit scheme");
 	struct pass a = {0}, b = {0};
 	struct end_tab tab = {0};
 	c.tab = &tab;

@@ -75,7 +75,9 @@ struct anvil_impact_opts {
 	 * reduced in order as the lag (impact.c, pass_physical).  Its effect
 	 * is O(f^2) of the wave effect's f; what it leaves, O(f^3), and the
 	 * start and end it cannot place (the contact spreading faster than the
-	 * waves) are the caller's estimate (solver_phys.c). */
+	 * waves) are the caller's estimate (solver_phys.c).  It takes d^2w_c/dt^2
+	 * through tau_lag's low-pass twice, so g2 > 0 needs tau_lag > 0 (any
+	 * value on a half-space, where w_c = 0). */
 	double g2;
 	/* The true contact radius (physical only; alpha_ref = 0: a point load).
 	 * ramp2 is the correction for a Hertz patch of radius a_ref, alpha_ref
