@@ -475,7 +475,7 @@ static void physical_model_error(const struct anvil_params *p, struct phys_rem r
 	double gk = 2.0 * rem.g2 * p->K * sqrt(p->r0), bk = rem.beta * p->K;
 	double cin = fabs(gk - 1.125 * bk * bk) + 2.25 * bk * bk;
 	double t0 = cin * p->V0, t1 = cin * fabs(r->Vs.val);
-	r->model_err += fmax(d, (t0 + t1) / r->ts.val);
+	r->model_err += d + (t0 + t1) / r->ts.val; /* t_s's share, the largest */
 	r->ts.err += d * r->ts.val + t0 + t1;
 	r->tmax.err += d * r->tmax.val + t0;
 	r->Pmax.err += d * r->Pmax.val;

@@ -252,7 +252,7 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * same order as g2's (doc/contact-model.md).  Sigma is O(f^2) of alpha
  * and tends to c_u u^2 as alpha -> 0: the outer solution starts and ends
  * where W - w_c = c_u u^2, not 0 (the inner region, while the contact
- * spreads faster than the waves, a few R V0^2 / c2^2, is not modelled:
+ * spreads faster than the waves, alpha up to about R V0^2/c2^2, is not modelled:
  * solver_phys.c puts that shift into t_s's error).  So the state sees
  * A - Sigma, with Sigma before the step (lag2_before): in contact the
  * last two nodes' extrapolated, out of contact c_u u0^2 (P_n = 0 there).
