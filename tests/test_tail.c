@@ -308,7 +308,7 @@ out:
 	anvil_plate_memo_free(m);
 }
 
-/* The cache's file (format 10): a tailed response written and read back
+/* The cache's file (format 11): a tailed response written and read back
  * gives the same bits, beyond T1 too; a damaged tail (a coefficient, a
  * node) is refused by the importer. */
 static void test_cache(void)

@@ -16,9 +16,10 @@
  * contact, whose r0-patch response (and twin) is what the planner prices.
  * A second sample does the same for the physical contact's row (its four
  * corrections, anvil_plan_phys_evals) against the solver's own count, and
- * a third for thick layers at low bands, and a fourth for bench section
+ * a third for thick layers at low bands, a fourth for bench section
  * 13's long contacts, with each correction's time samples
- * (anvil_plan_corr_samples) too. */
+ * (anvil_plan_corr_samples) too, and a fifth for thin plates, whose bands
+ * are lifted off the real axis. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -200,15 +201,74 @@ static void thick_sample(void)
 	   "thick layers' corrections at low bands priced within 2x on %d of %d", within, tried);
 }
 
+/* The four corrections of a scene's physical row (physical, normal; kv
+ * the settings, NULL-terminated) made as the solver makes them (one set:
+ * solver_phys.c phys_prefetch): *q their predicted evaluations
+ * (anvil_plan_phys_evals) over the count, and of the *ncorr corrections
+ * *samples_ok those whose time samples equal anvil_plan_corr_samples.
+ * 0, or -1 (said why) when there is no correction. */
+static int corr_set(const char *const *kv, const char *what, double *q, int *samples_ok,
+		    int *ncorr)
+{
+	struct anvil_scene sc;
+	struct anvil_plan pl;
+	struct anvil_err e;
+	int bad = 0;
+	anvil_scene_default(&sc);
+	bad |= anvil_scene_set(&sc, "effects.contact", "physical", "test", 0, &e);
+	for (int k = 0; kv[k]; k += 2)
+		bad |= anvil_scene_set(&sc, kv[k], kv[k + 1], "test", 0, &e);
+	if (bad || scene_plan(&sc, &pl, &e)) {
+		diag("%s: %s", what, e.msg);
+		return -1;
+	}
+	const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+	const struct anvil_wave_job *j = &r->job;
+	if (r->status || !anvil_wave_needs_corr(&pl.pb.p, j, anvil_wave_window(j, 0))) {
+		diag("%s: no correction (%s)", what, r->refusal);
+		return -1;
+	}
+	enum anvil_cache_where where;
+	double pred = anvil_plan_phys_evals(j, pl.pb.p.nu, pl.pb.accuracy, NULL, &where), got = 0;
+	int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
+	struct { int oi; double patch; } load[4] = {
+		{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
+		{ j->omega_idx, anvil_plan_patch_below(j->patch) },
+		{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
+	struct anvil_green_settings gs;
+	struct anvil_green_load set[4];
+	struct anvil_green *g[4];
+	anvil_green_settings(pl.pb.accuracy, &gs);
+	gs.filter = 1;
+	for (int k = 0; k < 4; k++)
+		set[k] = (struct anvil_green_load){ load[k].patch, anvil_cache_grid(load[k].oi) };
+	if (anvil_green_alloc_set(j->hh, pl.pb.p.nu, anvil_cache_grid(tau_idx), &gs, set, 4, NULL,
+				  NULL, g, &e)) {
+		diag("%s: %s", what, e.msg);
+		return -1;
+	}
+	for (int k = 0; k < 4; k++) {
+		struct anvil_green_samples smp;
+		anvil_green_export(g[k], &smp);
+		++*ncorr;
+		*samples_ok += (double)smp.n == anvil_plan_corr_samples(j->hh, set[k].omega_max,
+								       anvil_cache_grid(tau_idx));
+		got += (double)anvil_green_evals(g[k]);
+		anvil_green_free(g[k]);
+	}
+	*q = pred / got;
+	return got > 0 ? 0 : -1;
+}
+
 /* Bench section 13's long contacts (physical, normal; the 100 kg scene is
  * refused when planned and left out): the four corrections made as the
- * solver makes them (one set: solver_phys.c phys_prefetch), their evaluations against
- * anvil_plan_phys_evals within 2x, and each one's time samples (what a long
- * window costs beyond its evaluations) equal to anvil_plan_corr_samples:
- * the pieces the planner's seconds are made of (plan_work.c). */
+ * solver makes them, their evaluations against anvil_plan_phys_evals
+ * within 2x, and each one's time samples (what a long window costs beyond
+ * its evaluations) equal to anvil_plan_corr_samples: the pieces the
+ * planner's seconds are made of (plan_work.c). */
 static void long_sample(void)
 {
-	static const char *const scenes[][8] = {
+	static const char *const scenes[][9] = {
 		{ "layer.thickness", "0.25r0", "impactor.mass", "100g", "impact.velocity", "10m/s" },
 		{ "layer.thickness", "0.5r0", "impactor.mass", "1kg", "impact.velocity", "10m/s" },
 		{ "layer.thickness", "1r0", "impactor.mass", "1kg", "impact.velocity", "10m/s" },
@@ -223,55 +283,11 @@ static void long_sample(void)
 	int tried = 0, within = 0, samples_ok = 0, ncorr = 0;
 	double lo = 1, hi = 1;
 	for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++) {
-		struct anvil_scene sc;
-		struct anvil_plan pl;
-		struct anvil_err e;
-		int bad = 0;
-		anvil_scene_default(&sc);
-		bad |= anvil_scene_set(&sc, "effects.contact", "physical", "test", 0, &e);
-		for (int k = 0; k < 8 && scenes[i][k]; k += 2)
-			bad |= anvil_scene_set(&sc, scenes[i][k], scenes[i][k + 1], "test", 0, &e);
-		if (bad || scene_plan(&sc, &pl, &e)) {
-			diag("scene %zu: %s", i, e.msg);
+		char what[32];
+		double q;
+		snprintf(what, sizeof what, "scene %zu", i);
+		if (corr_set(scenes[i], what, &q, &samples_ok, &ncorr))
 			continue;
-		}
-		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
-		const struct anvil_wave_job *j = &r->job;
-		if (r->status || !anvil_wave_needs_corr(&pl.pb.p, j, anvil_wave_window(j, 0))) {
-			diag("scene %zu: no correction (%s)", i, r->refusal);
-			continue;
-		}
-		enum anvil_cache_where where;
-		double pred = anvil_plan_phys_evals(j, pl.pb.p.nu, pl.pb.accuracy, NULL, &where), got = 0;
-		int tau_idx = anvil_wave_tau_idx(j, anvil_wave_window(j, 0));
-		struct { int oi; double patch; } load[4] = {
-			{ j->omega_idx, 0.0 }, { j->omega_idx, j->patch },
-			{ j->omega_idx, anvil_plan_patch_below(j->patch) },
-			{ j->omega_idx - ANVIL_CACHE_STEPS, 0.0 } };
-		struct anvil_green_settings gs;
-		struct anvil_green_load set[4];
-		struct anvil_green *g[4];
-		anvil_green_settings(pl.pb.accuracy, &gs);
-		gs.filter = 1;
-		for (int k = 0; k < 4; k++)
-			set[k] = (struct anvil_green_load){ load[k].patch, anvil_cache_grid(load[k].oi) };
-		if (anvil_green_alloc_set(j->hh, pl.pb.p.nu, anvil_cache_grid(tau_idx), &gs, set, 4,
-					  NULL, NULL, g, &e)) {
-			diag("scene %zu: %s", i, e.msg);
-			continue;
-		}
-		for (int k = 0; k < 4; k++) {
-			struct anvil_green_samples smp;
-			anvil_green_export(g[k], &smp);
-			ncorr++;
-			samples_ok += (double)smp.n == anvil_plan_corr_samples(j->hh, set[k].omega_max,
-									       anvil_cache_grid(tau_idx));
-			got += (double)anvil_green_evals(g[k]);
-			anvil_green_free(g[k]);
-		}
-		if (!(got > 0))
-			continue;
-		double q = pred / got;
 		tried++;
 		within += q >= 0.5 && q <= 2.0;
 		lo = fmin(lo, q);
@@ -285,9 +301,37 @@ static void long_sample(void)
 	   "their time samples as predicted on %d of %d corrections", samples_ok, ncorr);
 }
 
+/* Thin plates (h = 0.02-0.05 r0), whose bands are integrated on the lifted
+ * contour (kernel.h anvil_kband_lift) and priced without the splitting
+ * towards the poles (plan_work.c LIFT_SPLIT): the four corrections within
+ * 2x of their evaluations (1.1 M at h = 0.02 r0, 1 g at 1 m/s). */
+static void thin_sample(void)
+{
+	static const char *const scenes[][7] = {
+		{ "layer.thickness", "0.02r0", "impactor.mass", "1g", "impact.velocity", "1m/s" },
+		{ "layer.thickness", "0.05r0", "impactor.mass", "1kg", "impact.velocity", "1m/s" },
+		{ "layer.thickness", "0.05r0", "impactor.mass", "10g", "impact.velocity", "0.1m/s" },
+	};
+	int tried = 0, within = 0, samples_ok = 0, ncorr = 0;
+	double lo = 1, hi = 1;
+	for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++) {
+		double q;
+		if (corr_set(scenes[i], scenes[i][1], &q, &samples_ok, &ncorr))
+			continue;
+		tried++;
+		within += q >= 0.5 && q <= 2.0;
+		lo = fmin(lo, q);
+		hi = fmax(hi, q);
+	}
+	diag("thin plates: %d rows; predicted/actual evaluations %.2f-%.2f", tried, lo, hi);
+	ok(tried == 3 && within == tried,
+	   "thin plates' lifted corrections priced within 2x of their evaluations on %d of %d",
+	   within, tried);
+}
+
 int main(void)
 {
-	plan(6);
+	plan(7);
 	unsigned long long seed = 7; /* not the fit's (plan.c: refine) */
 	int tried = 0, within = 0, skipped = 0;
 	double worst_lo = 1, worst_hi = 1, hmin = INFINITY, hmax = 0;
@@ -349,5 +393,6 @@ int main(void)
 	physical_sample();
 	thick_sample();
 	long_sample();
+	thin_sample();
 	return done_testing();
 }

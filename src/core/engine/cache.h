@@ -54,7 +54,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 10 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 11 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -64,7 +64,10 @@ struct anvil_halfspace; /* halfspace.h */
 				 closed-form tail beyond T1 instead of samples to the
 				 window's end, plate.h; 9: the tail's Kirchhoff plate
 				 under the response's own patch, not r0's; 10: the
-				 tail's Mindlin term, its S table after K's) */
+				 tail's Mindlin term, its S table after K's; 11: the
+				 band's k-integral on a lifted contour, kernel.h
+				 anvil_kband_lift, and the rounding stop,
+				 green_spectrum.c: other bits) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -1,5 +1,6 @@
 /* gk21.c: the 21-point Gauss-Kronrod rule.  See gk21.h. */
 #include <float.h>
+#include <stddef.h>
 #include <math.h>
 
 #include "gk21.h"
@@ -56,7 +57,8 @@ static double dev(cplx f, cplx mean, int im)
 	return im ? fabs(cimag(f) - cimag(mean)) : fabs(creal(f) - creal(mean));
 }
 
-void anvil_gk21_complex(anvil_gk21_fn f, void *ctx, double a, double b, cplx *val, double *err)
+void anvil_gk21_complex_floor(anvil_gk21_fn f, void *ctx, double a, double b, cplx *val,
+			      double *err, double *floor)
 {
 	double c = 0.5 * (a + b), h = 0.5 * (b - a);
 	cplx fc = f(c, ctx), f1[10], f2[10];
@@ -87,4 +89,11 @@ void anvil_gk21_complex(anvil_gk21_fn f, void *ctx, double a, double b, cplx *va
 	*val = rk * h;
 	*err = hypot(rescale(creal(diff), abs_re * ah, asc[0] * ah),
 		     rescale(cimag(diff), abs_im * ah, asc[1] * ah));
+	if (floor)
+		*floor = 50.0 * DBL_EPSILON * hypot(abs_re * ah, abs_im * ah);
+}
+
+void anvil_gk21_complex(anvil_gk21_fn f, void *ctx, double a, double b, cplx *val, double *err)
+{
+	anvil_gk21_complex_floor(f, ctx, a, b, val, err, NULL);
 }

@@ -32,6 +32,8 @@ struct green_spectrum {
 	anvil_progress_fn progress;
 	void *ctx;
 	double patch;
+	int no_lift; /* the band's k-integral on the real axis (kernel.h: anvil_kband_lift),
+		      * for tests; a set's is sp[0]'s */
 	double complex *spec;
 	double *err;
 };

@@ -14,6 +14,20 @@ double anvil_kernel_zhat(double k)
 	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
 }
 
+cplx anvil_kernel_zhat_c(cplx k)
+{
+	cplx a = k * k;
+	if (creal(k) * creal(k) + cimag(k) * cimag(k) < 0.01)
+		return (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 +
+			a * a * a * a / 1330560.0) / (2.0 * M_PI);
+	/* sin k and cos k from one sincos and one exp (csin and ccos would
+	 * take two of each) */
+	double x = creal(k), y = cimag(k), sx = sin(x), cx = cos(x), ey = exp(y), ie = 1.0 / ey;
+	double ch = 0.5 * (ey + ie), sh = fabs(y) < 0.5 ? sinh(y) : 0.5 * (ey - ie);
+	cplx sk = anvil_kernel_cmplx(sx * ch, cx * sh), ck = anvil_kernel_cmplx(cx * ch, -sx * sh);
+	return 3.0 * (sk - k * ck) * anvil_kernel_recip(2.0 * M_PI * a * k);
+}
+
 cplx anvil_kernel_cmplx(double re, double im)
 {
 	/* a complex has the representation of double[2] (C11 6.2.5p13) */
@@ -77,6 +91,16 @@ cplx anvil_kernel_rayleigh(double a, cplx b, double kap2, cplx gam, cplx X)
 	return b * Q * anvil_kernel_recip(g2X);
 }
 
+cplx anvil_kernel_rayleigh_c(cplx a, cplx b, double kap2, cplx gam, cplx X)
+{
+	cplx g2 = gam * gam, g2X = g2 + X, g2mX = g2 - X;
+	if (norm2(g2mX) >= norm2(g2X))
+		return g2mX;
+	cplx Q = 16.0 * (1.0 - kap2) * a * a * a + (24.0 - 16.0 * kap2) * a * a * b +
+		 8.0 * a * b * b + b * b * b;
+	return b * Q * anvil_kernel_recip(g2X);
+}
+
 cplx anvil_kernel_tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx E1, cplx E2,
 			cplx ip12)
 {
@@ -98,4 +122,16 @@ double anvil_kband(double omega, double wabs, double nu, double hh, double cr)
 double anvil_kband_piece(double hh, double kband)
 {
 	return fmin(2.0 / hh, fmin(4.0, fmax(1.0, kband / 32.0)));
+}
+
+double anvil_kband_lift(double omega, double hh, double kband)
+{
+	if (!(isfinite(hh) && omega * hh < ANVIL_LIFT_CUTOFF * M_PI))
+		return 0.0;
+	return fmin(fmin(ANVIL_LIFT_MAX, 0.5 / hh), 0.5 * kband / M_PI);
+}
+
+double anvil_kband_lift_piece(double hh, double kband, double lift)
+{
+	return fmin(kband, fmax(anvil_kband_piece(hh, kband), 2.0 * lift));
 }

@@ -11,6 +11,12 @@
  * series for small k, where the closed form cancels catastrophically. */
 double anvil_kernel_zhat(double k);
 
+/* The same at a complex k (the layer correction's lifted contour,
+ * green_spectrum.c): the series where |k| < 0.1, else sin and cos of k
+ * from one sincos and one exp; |zhat| grows like exp(|Im k|) off the real
+ * axis. */
+double complex anvil_kernel_zhat_c(double complex k);
+
 /* re + i im with the sign of a zero im kept (C11's CMPLX, which not every
  * C library offers, e.g. glibc 2.36 to clang 14): the static field's branch
  * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it. */
@@ -45,6 +51,10 @@ void anvil_kernel_exp_1m(double complex z, double complex *E, double complex *m)
 double complex anvil_kernel_rayleigh(double a, double complex b, double kap2,
 				     double complex gam, double complex X);
 
+/* The same at a complex a = k^2 (a lifted k-contour, layer_bc.h). */
+double complex anvil_kernel_rayleigh_c(double complex a, double complex b, double kap2,
+				       double complex gam, double complex X);
+
 /* t2 - t1, t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j), ip12 = 1/(p1 p2), p_j = 1 + E_j:
  * through exp(-hh (alpha2 - alpha1)) - 1 where E1 and E2 are close (their
  * difference would cancel), directly where they are not (there the ratio
@@ -70,5 +80,33 @@ double anvil_kband(double omega, double wabs, double nu, double hh, double cr);
  * ANVIL_KTAIL_PIECE wide. */
 #define ANVIL_KTAIL_PIECE 16.0
 double anvil_kband_piece(double hh, double kband);
+
+/* The layer correction's band [0, kband] is integrated on the contour
+ * k(x) = x + i H sin(pi x/kband), x in [0, kband] (green_spectrum.c), where
+ * this returns H > 0; 0: on the real axis.  Exact by Cauchy's theorem when
+ * no pole or branch point of W(k, s) lies between the two paths.  For
+ * s = c0 + i omega, omega >= 0, a forward mode's pole (group velocity > 0)
+ * and the branch points k = kappa_j (omega - i c0) lie below the real
+ * axis, and the alpha_j's cuts never enter the first quadrant (Im (k^2 +
+ * kappa_j^2 s^2) > 0 there).  Below the first thickness resonance (A1,
+ * omega = pi c2/h) only A0 and S0 propagate, both forward; the first
+ * quadrant holds only evanescent roots: A0's at 45 degrees or steeper
+ * (Kirchhoff: k^4 = -s^2 rho h/D), and the complex modes at Im k >= 2.25/hh
+ * (sin 2z + 2z = 0, z = k hh/2).  So H is taken where omega hh <
+ * ANVIL_LIFT_CUTOFF pi, and at most 0.5 kband/pi (a slope of at most 0.5:
+ * below 27 degrees), 0.5/hh (a quarter of the complex modes' height) and
+ * ANVIL_LIFT_MAX (zhat(k a) grows like exp(a H), a <= 1).  Off the real
+ * axis the poles (c0/c_group below it) are H sin(...) further from the
+ * path: the peaks the bisection chased are gone.  tests/test_lift.c checks
+ * the two paths agree within their error estimates, and finds the first
+ * disagreement (S1's backward wave, whose pole lies above the axis) at
+ * omega hh/pi = 1.75 for nu = 0.3. */
+#define ANVIL_LIFT_CUTOFF 0.9
+#define ANVIL_LIFT_MAX 8.0
+double anvil_kband_lift(double omega, double hh, double kband);
+
+/* The starting pieces of a band lifted by H = lift: as anvil_kband_piece,
+ * and at least 2 H (at most kband) wide: the path is H from the poles. */
+double anvil_kband_lift_piece(double hh, double kband, double lift);
 
 #endif

@@ -8,6 +8,27 @@
 
 typedef double complex cplx;
 
+/* The layer's part of the solve, from alpha_j, gamma, X and R. */
+static void layer_solve(struct anvil_layer_bc *bc)
+{
+	cplx m1, m2; /* 1 - E_j */
+	double hh = bc->hh;
+	/* E_j itself, not 1 - m_j: that would leave rounding noise (1e-16)
+	 * where E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
+	anvil_kernel_exp_1m(-hh * bc->al1, &bc->E1, &m1);
+	anvil_kernel_exp_1m(-hh * bc->al2, &bc->E2, &m2);
+	bc->p1 = 2.0 - m1;
+	bc->p2 = 2.0 - m2;
+	cplx ip1 = anvil_kernel_recip(bc->p1), ip2 = anvil_kernel_recip(bc->p2);
+	bc->t1 = m1 * ip1;
+	bc->t2 = m2 * ip2;
+	bc->u1 = 2.0 * bc->E1 * ip1;
+	bc->d = anvil_kernel_tdiff(bc->al1, bc->al2, bc->b, bc->kap2, hh, bc->E1, bc->E2, ip1 * ip2);
+	bc->Xd = bc->X * bc->d;
+	bc->den1 = bc->t2 * bc->R + bc->Xd;
+	bc->den2 = bc->t1 * bc->R - bc->Xd;
+}
+
 /* Every quotient through one reciprocal (kernel.h: anvil_kernel_recip) and
  * each E_j with its 1 - E_j from one exponential (anvil_kernel_exp_1m):
  * that halved the cost of an evaluation (scripts/bench). */
@@ -26,23 +47,28 @@ void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil
 	bc->gam = gam;
 	bc->X = X;
 	bc->R = anvil_kernel_rayleigh(a, b, kap2, gam, X);
-	if (!isfinite(hh))
-		return;
-	/* E_j itself, not 1 - m_j: that would leave rounding noise (1e-16)
-	 * where E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
-	cplx m1, m2; /* 1 - E_j */
-	anvil_kernel_exp_1m(-hh * al1, &bc->E1, &m1);
-	anvil_kernel_exp_1m(-hh * al2, &bc->E2, &m2);
-	bc->p1 = 2.0 - m1;
-	bc->p2 = 2.0 - m2;
-	cplx ip1 = anvil_kernel_recip(bc->p1), ip2 = anvil_kernel_recip(bc->p2);
-	bc->t1 = m1 * ip1;
-	bc->t2 = m2 * ip2;
-	bc->u1 = 2.0 * bc->E1 * ip1;
-	bc->d = anvil_kernel_tdiff(al1, al2, b, kap2, hh, bc->E1, bc->E2, ip1 * ip2);
-	bc->Xd = X * bc->d;
-	bc->den1 = bc->t2 * bc->R + bc->Xd;
-	bc->den2 = bc->t1 * bc->R - bc->Xd;
+	if (isfinite(hh))
+		layer_solve(bc);
+}
+
+/* The same operations with a complex: the real solve above stays as it
+ * was (its bits, and its cost). */
+void anvil_layer_bc_solve_c(cplx k, cplx s, double kap2, double hh, struct anvil_layer_bc *bc)
+{
+	cplx a = k * k, b = s * s;
+	cplx al1 = anvil_kernel_csqrt(a + kap2 * b), al2 = anvil_kernel_csqrt(a + b);
+	cplx gam = 2.0 * a + b, X = 4.0 * a * al1 * al2;
+	bc->k = NAN; /* no potentials */
+	bc->kap2 = kap2;
+	bc->hh = hh;
+	bc->b = b;
+	bc->al1 = al1;
+	bc->al2 = al2;
+	bc->gam = gam;
+	bc->X = X;
+	bc->R = anvil_kernel_rayleigh_c(a, b, kap2, gam, X);
+	if (isfinite(hh))
+		layer_solve(bc);
 }
 
 cplx anvil_layer_bc_w_halfspace(const struct anvil_layer_bc *bc)

@@ -40,6 +40,14 @@ struct anvil_layer_bc {
 void anvil_layer_bc_solve(double k, double complex s, double kap2, double hh,
 			  struct anvil_layer_bc *bc);
 
+/* The same at a complex k, Re k >= 0, Im k >= 0, where the principal
+ * alpha_j are the analytic continuation from the real axis (no branch cut
+ * of theirs crosses that quadrant for Re s > 0, Im s >= 0): for a
+ * k-contour lifted off the real axis (green_spectrum.c).  bc->k is NaN:
+ * anvil_layer_bc_potentials needs a real k. */
+void anvil_layer_bc_solve_c(double complex k, double complex s, double kap2, double hh,
+			    struct anvil_layer_bc *bc);
+
 /* The half-space's transformed surface displacement w(z = 0) (against
  * k J0(kr)), alpha1 b / R. */
 double complex anvil_layer_bc_w_halfspace(const struct anvil_layer_bc *bc);

@@ -1,0 +1,124 @@
+/* test_lift.c: the layer correction's band on a lifted k-contour (kernel.h
+ * anvil_kband_lift, green_spectrum.c).
+ *
+ * Lifting the band's path off the real axis is exact (Cauchy) only if no
+ * pole or branch point of W(k, s) lies between the two paths.  For each
+ * case (thickness, Poisson's ratio, patch, line) the spectrum is computed
+ * twice, on the lifted contour and on the real axis (green_spectrum.h
+ * no_lift), at every term up to the A1 cutoff omega = pi/hh (the lift
+ * stops at 0.9 of it), and each term must agree within the two error
+ * estimates plus ROUND of its size: the estimates of the lowest terms on
+ * a thin plate are their rounding floors (green_spectrum.c ROUND_STOP),
+ * not bounds, and there the two paths differed by up to 2.0 times their
+ * sum, 1e-14 of the value.  The check has teeth: with the lift carried to
+ * 3 times the cutoff, terms at omega hh/pi = 1.75-1.81 (nu = 0.3, S1's
+ * backward wave, whose pole lies above the axis) were off by 1e5-1e6
+ * times their estimates.  A last test holds the rounding stop: the
+ * omega = 0 term of h = 0.02 r0 on a long line, whose tolerance is below
+ * its rounding floor, took 343 056 evaluations (8191 pieces) to end where
+ * it began. */
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "green_spectrum.h"
+#include "material.h"
+#include "tap.h"
+
+/* A few hundred ulp of the term: the kernel's own rounding (its stable
+ * forms, layer_bc.c) on two different paths. */
+#define ROUND 1e-13
+
+struct spectra {
+	size_t M, evals[2];
+	int st[2];
+	double complex *F[2];
+	double *e[2];
+};
+
+/* Both paths' spectra of the layer correction on the line of half period
+ * Tp, c0 = 10/Tp (the normal level's c0T), up to omega_max, with epsF. */
+static int spectra(struct spectra *r, double hh, double nu, double patch, double Tp,
+		   double omega_max, double epsF)
+{
+	double kap2 = anvil_kappa2(nu), xr;
+	struct anvil_durbin dl;
+	if (anvil_rayleigh_x(kap2, &xr, NULL) || anvil_durbin_init(&dl, Tp, 10.0 / Tp, omega_max, 0))
+		return -1;
+	struct green_plate pl = green_plate_term(ANVIL_GREEN_LAYER_CORRECTION, hh, nu);
+	r->M = dl.M;
+	for (int i = 0; i < 2; i++) {
+		r->F[i] = malloc((dl.M + 1) * sizeof *r->F[i]);
+		r->e[i] = malloc((dl.M + 1) * sizeof *r->e[i]);
+		if (!r->F[i] || !r->e[i])
+			return -1;
+		struct green_spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = 1e-10,
+					     .epsF = epsF, .pl = &pl, .patch = patch,
+					     .no_lift = i, .spec = r->F[i], .err = r->e[i] };
+		r->st[i] = green_sample_spectra(ANVIL_GREEN_LAYER_CORRECTION, kap2, nu, hh, &sp, 1,
+						&r->evals[i]);
+	}
+	return 0;
+}
+
+static void spectra_free(struct spectra *r)
+{
+	for (int i = 0; i < 2; i++) {
+		free(r->F[i]);
+		free(r->e[i]);
+	}
+}
+
+static void agree(double hh, double nu, double patch, double Tp)
+{
+	struct spectra r = { 0 };
+	double worst = 0;
+	size_t wn = 0, bad = 0;
+	int st = spectra(&r, hh, nu, patch, Tp, M_PI / hh, 1e-9);
+	for (size_t n = 0; !st && n <= r.M; n++) {
+		double d = cabs(r.F[0][n] - r.F[1][n]);
+		double q = d / (r.e[0][n] + r.e[1][n] + ROUND * cabs(r.F[1][n]));
+		bad += !(q <= 1.0);
+		if (!(q <= worst)) {
+			worst = q;
+			wn = n;
+		}
+	}
+	ok(!st && (r.st[0] == ANVIL_OK || r.st[0] == ANVIL_ETOL) &&
+		   (r.st[1] == ANVIL_OK || r.st[1] == ANVIL_ETOL) && bad == 0,
+	   "h = %g r0, nu = %g, patch %g, T' = %g: lifted and real-axis band agree on %zu of %zu "
+	   "terms to pi/hh (worst %.2f of the allowance at omega = %.3g); evaluations %zu -> %zu",
+	   hh, nu, patch, Tp, r.M + 1 - bad, r.M + 1, worst, (double)wn * M_PI / Tp, r.evals[1],
+	   r.evals[0]);
+	spectra_free(&r);
+}
+
+int main(void)
+{
+	gsl_set_error_handler_off();
+	plan(9);
+	agree(0.02, 0.3, 0.0, 16.0);
+	agree(0.05, 0.3, 0.5, 64.0);
+	agree(0.05, 0.45, 1.0, 64.0);
+	agree(0.1, 0.0, 1.0, 64.0);
+	agree(0.2, 0.22, 0.5, 64.0);
+	agree(0.5, 0.3, 0.0, 64.0);
+	agree(2.0, 0.45, 1.0, 64.0);
+
+	/* The rounding stop: omega = 0 alone (M = 0) on h = 0.02 r0, T' = 64 */
+	struct spectra r = { 0 };
+	int st = spectra(&r, 0.02, 0.3, 0.0, 64.0, 0.0, 1e-9);
+	ok(!st && r.M == 0 && r.st[0] == ANVIL_ETOL && r.st[1] == ANVIL_ETOL && r.evals[0] < 5000 &&
+		   r.evals[1] < 5000,
+	   "omega = 0 on h = 0.02 r0: its tolerance below rounding, ETOL after %zu and %zu "
+	   "evaluations (lifted, real axis)",
+	   r.evals[0], r.evals[1]);
+	double d = st ? NAN : cabs(r.F[0][0] - r.F[1][0]);
+	ok(d <= r.e[0][0] + r.e[1][0] + ROUND * cabs(r.F[1][0]),
+	   "and the two agree: |d| = %.3g, estimates %.3g + %.3g, value %.6g", d, r.e[0][0],
+	   r.e[1][0], cabs(r.F[1][0]));
+	spectra_free(&r);
+	return done_testing();
+}
