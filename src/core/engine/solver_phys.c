@@ -548,7 +548,7 @@ static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 			 2e6 * p->h / p->c1, row->model_err);
 	else
 		snprintf(r->note, sizeof r->note,
-			 "physical contact: Hertz + the half-space's radiation lag (no reflection during the contact)");
+			 "physical contact: Hertz + the half-space's remainder to second order, its radiation lag and the reactive term after it (no reflection during the contact)");
 	solver_rest_note(r);
 	solver_contacts_note(r);
 	return solver_check_target(r, pl->pb.accuracy, err);
