@@ -63,10 +63,12 @@ struct anvil_contact_opts {
 struct anvil_contact_energy {
 	double eps;      /* beta m1 / T^3 */
 	double lost;     /* kinetic energy lost, m1 (V0^2 - V_s^2) / 2, J */
-	double rad_pq;   /* beta int dP/dt Q dt, Q the zeroth-order dP/dt: what the
+	double rad_pq;   /* beta int dP/dt Q dt, Q the zeroth-order dP/dt, less
+			  * int dP/dt sigma with the second order (g2): what the
 			  * model takes, equal to lost up to O(beta^5) */
 	double rad_pp;   /* beta int (dP/dt)^2 dt: Hunter's loss, equal to lost up
-			  * to O(f) relative */
+			  * to O(f^2) relative (the O(f) terms are odd about the
+			  * pulse's peak; tests/test_contact.c) */
 	double err;      /* estimated absolute error of the three, J */
 };
 
