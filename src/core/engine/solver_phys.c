@@ -461,7 +461,7 @@ static int thin_check(const struct anvil_plan *pl, const struct anvil_result *r,
  *    reduction's own next term is larger; each value moves by at most that
  *    times the radiated fraction f of it (E_a: of m1 V0^2 / 2).  The
  *    first-order model carried f q here, and its measured change to the
- *    second order was 0.15-0.45 of that (doc/contact-model.md);
+ *    second order was 0.14-0.42 of that (tests/test_physical.c, 10-500 m/s);
  *  - the inner region (impact.c): the outer solution starts where
  *    W - w_c = c_u V0^2 and ends where it is c_u V_s^2, a shift the
  *    spreading contact's true start could change by as much again, so t_s
