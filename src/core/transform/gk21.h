@@ -19,6 +19,12 @@
  * raw difference. */
 void anvil_gk21_node(double a, double b, int j, double *x, double *wk, double *wg);
 
+/* The node (anvil_gk21_node's j) that anvil_gk21_complex_floor evaluates
+ * at its call n (0..20): always the same order, so that a caller can
+ * prepare per-node factors of a panel before the rule asks for them
+ * (green_spectrum.c). */
+int anvil_gk21_called(int n);
+
 typedef double complex (*anvil_gk21_fn)(double x, void *ctx);
 
 /* The rule on [a, b] for a complex integrand, each node evaluated once:
