@@ -239,85 +239,13 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
  * from the online fast convolution: P against g (fc) and, with the true
  * radius, Q against dg = g2 - g (fc a pair).
  *
- * The second order (issue 11; g2 > 0, radiation.h): the remainder is
- * -beta dP/dt + g2 d^2(a P)/dt^2, reduced in order as the first:
- *   W - w_c = alpha - beta P'(alpha) u + Sigma,  u = v - dw_c/dt,
- *   Sigma = g2 (a P)''_0 - beta^2 P'(alpha) P''_0
- *         = c_u u^2 - c_x alpha (P/m1 + d^2w_c/dt^2),
- * the subscript 0 the zeroth-order values (alpha' = u, alpha'' = -P/m1 -
- * w_c''; a P = K sqrt(R) alpha^2 and P' P'' = (9/8) K^2 are finite as
- * alpha -> 0):
- *   c_u = 2 g2 K sqrt(R) - (9/8) beta^2 K^2,  c_x = 2 g2 K sqrt(R) - (9/4) beta^2 K^2.
- * The beta^2 part is the first-order reduction's own next term, of the
- * same order as g2's (doc/contact-model.md).  Sigma is O(f^2) of alpha
- * and tends to c_u u^2 as alpha -> 0: the outer solution starts and ends
- * where W - w_c = c_u u^2, not 0 (the inner region, while the contact
- * spreads faster than the waves, alpha up to about R V0^2/c2^2, is not modelled:
- * solver_phys.c puts that shift into t_s's error).  So the state sees
- * A - Sigma, with Sigma before the step (lag2_before): in contact the
- * last two nodes' extrapolated, out of contact c_u u0^2 (P_n = 0 there).
- * Not Sigma at P_n = 0 in contact: on a layer dw_c/dt has a gain e0 on
- * P_n, and the velocity had P_n been 0 is far from the contact's (1 km/s
- * on h = r0 then "ended" at the peak).  P_n solves the root with A less
- * that Sigma, then once more with Sigma at that P_n (one fixed-point
- * round; dSigma/dP is O(f^2) of the Hertz stiffness).  sg keeps the
- * Sigma each node's step used, so W - w_c - sg is alpha - beta Q > 0 at a
- * node in contact and the state's A - sg at the next: the exact end
- * search interpolates it (impact_end.c).  w_c'' passes the lag's low-pass
- * twice (impact.h, tau_lag: gain at most 1/tau_lag^2 up to Nyquist,
- * where the expansion no longer holds anyway); the BDF2 of the filtered
- * dw_c/dt has gain 1/(tau_lag dt), and the paper's case lost its end in
- * the run at half tau_lag (so the second order needs tau_lag > 0:
- * anvil_impact_run; with the BDF2 of an unfiltered dw_c/dt, gain 1/dt^2,
- * a test's layer at h = r0 took 34 times the energy lost).  Before the outer
- * solution's start the bodies touch without force (on[0] = 0 stays the
- * touch). */
-struct lag2 {
-	double cu, cx;
-};
-
-static struct lag2 lag2_of(const struct ctx *c)
-{
-	const struct anvil_params *p = c->p;
-	if (!(c->g2 > 0))
-		return (struct lag2){ 0.0, 0.0 };
-	double gk = 2.0 * c->g2 * p->K * sqrt(p->r0), bk = c->beta * p->K;
-	return (struct lag2){ gk - 1.125 * bk * bk, gk - 2.25 * bk * bk };
-}
-
-/* Sigma at node n before its step, what decides the state: in contact
- * (after a force) the last two nodes' sa1, sa2 extrapolated, else c_u
- * u0^2 (P_n = 0). */
-static double lag2_before(const struct lag2 *l, const struct ctx *c, size_t n, int in,
-			  double impulse, double u0, double sa1, double sa2)
-{
-	if (!in || !(impulse > 0) || n < 2)
-		return l->cu * u0 * u0;
-	double r = n - c->seg0 >= 2 || !c->seg0 ? 1.0 : 2.0; /* the steps' ratio */
-	return sa1 + r * (sa1 - sa2);
-}
-
-/* d^2w_c/dt^2 at node n (see above) from dw_c/dt there, ud, low-passed:
- * the second stage's state *z2 and ud's last value udp, trapezoidal as
- * the first (r = dt / (2 tl)). */
-static double lag2_wdd(double ud, double udp, double tl, double rl, double *z2)
-{
-	*z2 = ((1.0 - rl) * *z2 + rl * (ud + udp)) / (1.0 + rl);
-	return (ud - *z2) / tl;
-}
-
-/* Sigma at node n for load P, relative velocity u, w_c'' wdd. */
-static double lag2_after(const struct lag2 *l, const struct anvil_params *p, double P, double u,
-			 double wdd)
-{
-	double x = cbrt(P);
-	return l->cu * u * u - l->cx * p->k0 * x * x * (P / p->m1 + wdd);
-}
-
+ * The second order (issue 11; g2 > 0): -beta dP/dt's reduction and the
+ * reactive term after it enter as Sigma (impact_lag2.c), which the state
+ * and the exact end search see as well. */
 static int pass_physical(struct ctx *c, struct pass *s, double beta)
 {
 	const struct anvil_params *p = c->p;
-	const struct lag2 l2 = lag2_of(c);
+	const struct impact_lag2 l2 = impact_lag2_of(c);
 	double dt = s->dt, b = 1.5 * beta / p->k0;
 	double tl = c->tau_lag, rl = 0.5 * dt / tl, zl = 0; /* the lag's filter */
 	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
@@ -375,7 +303,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			e0 = g0 / dt;
 		}
 		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1, u0 = v0 - wd0;
-		double sgd = lag2_before(&l2, c, n, in, impulse, u0, sa1, sa2);
+		double sgd = impact_lag2_before(&l2, c, n, in, impulse, u0, sa1, sa2);
 		double Ae = A - sgd;
 		s->sg[n] = sgd; /* before the state: it may end a contact here */
 		/* touching before the outer solution's start (above): no force */
@@ -395,7 +323,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			/* one round: Sigma at that P (the filter's trial state),
 			 * then the step's root with it */
 			double zt = z2, ud = wd0 + e0 * P, u = u0 - D * P;
-			double s1 = lag2_after(&l2, p, P, u, lag2_wdd(ud, udp, tl, rl, &zt));
+			double s1 = impact_lag2_after(&l2, p, P, u, impact_lag2_wdd(ud, udp, tl, rl, &zt));
 			P = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1) : 0.0;
 			s->sg[n] = sgd = s1;
 		}
@@ -413,7 +341,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			Q = 1.5 * x / p->k0 * (s->v[n] - (wd0 + e0 * P));
 		double ud = wd0 + e0 * P;
 		if (tl > 0) /* the second stage's state */
-			lag2_wdd(ud, udp, tl, rl, &z2);
+			impact_lag2_wdd(ud, udp, tl, rl, &z2);
 		sig = P > 0 ? sgd : 0.0;
 		sa2 = sa1, sa1 = sgd;
 		udp = ud;

@@ -261,4 +261,21 @@ int impact_contact_state(const struct ctx *c, struct pass *s, size_t n, double A
 int impact_parted(const struct ctx *c, const struct pass *s, size_t n, double impulse,
 		  double amax);
 
+/* impact_lag2.c: the physical contact's second order, Sigma = c_u u^2 -
+ * c_x alpha (P/m1 + w_c''); c_u = c_x = 0 without it (g2 = 0). */
+struct impact_lag2 {
+	double cu, cx;
+};
+struct impact_lag2 impact_lag2_of(const struct ctx *c);
+/* Sigma at node n before its step (the state's): in contact after a force
+ * the last two nodes' sa1, sa2 extrapolated, else c_u u0^2. */
+double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c, size_t n, int in,
+			  double impulse, double u0, double sa1, double sa2);
+/* w_c'' from dw_c/dt ud through the second low-pass stage (*z2; udp: ud's
+ * last value; rl = dt / (2 tl)). */
+double impact_lag2_wdd(double ud, double udp, double tl, double rl, double *z2);
+/* Sigma for load P, relative velocity u and w_c'' wdd. */
+double impact_lag2_after(const struct impact_lag2 *l, const struct anvil_params *p, double P,
+			 double u, double wdd);
+
 #endif
