@@ -249,7 +249,6 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	double dt = s->dt, b = 1.5 * beta / p->k0;
 	double tl = c->tau_lag, rl = 0.5 * dt / tl, zl = 0; /* the lag's filter */
 	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
-	double sa1 = 0, sa2 = 0; /* Sigma's own values at the last two nodes */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
 	int in = 1;
@@ -303,7 +302,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			e0 = g0 / dt;
 		}
 		double v0 = p->V0 - (impulse + 0.5 * dt * s->P[n - 1]) / p->m1, u0 = v0 - wd0;
-		double sgd = impact_lag2_before(&l2, c, n, in, impulse, u0, sa1, sa2);
+		double sgd = impact_lag2_before(&l2, c, s, n, in, impulse, u0);
 		double Ae = A - sgd;
 		s->sg[n] = sgd; /* before the state: it may end a contact here */
 		/* touching before the outer solution's start (above): no force */
@@ -343,7 +342,6 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (tl > 0) /* the second stage's state */
 			impact_lag2_wdd(ud, udp, tl, rl, &z2);
 		sig = P > 0 ? sgd : 0.0;
-		sa2 = sa1, sa1 = sgd;
 		udp = ud;
 		s->W[n] = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - P * dt * dt / (6.0 * p->m1) -
 			  mh / p->m1;

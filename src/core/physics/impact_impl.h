@@ -268,9 +268,9 @@ struct impact_lag2 {
 };
 struct impact_lag2 impact_lag2_of(const struct ctx *c);
 /* Sigma at node n before its step (the state's): in contact after a force
- * the last two nodes' sa1, sa2 extrapolated, else c_u u0^2. */
-double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c, size_t n, int in,
-			  double impulse, double u0, double sa1, double sa2);
+ * the last two nodes' sg extrapolated, else c_u u0^2. */
+double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c,
+			  const struct pass *s, size_t n, int in, double impulse, double u0);
 /* w_c'' from dw_c/dt ud through the second low-pass stage (*z2; udp: ud's
  * last value; rl = dt / (2 tl)). */
 double impact_lag2_wdd(double ud, double udp, double tl, double rl, double *z2);

@@ -49,15 +49,15 @@ struct impact_lag2 impact_lag2_of(const struct ctx *c)
 }
 
 /* Sigma at node n before its step, what decides the state: in contact
- * (after a force) the last two nodes' sa1, sa2 extrapolated, else c_u
- * u0^2 (P_n = 0). */
-double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c, size_t n, int in,
-			  double impulse, double u0, double sa1, double sa2)
+ * (after a force) the last two nodes' Sigma (sg: what their steps used)
+ * extrapolated, else c_u u0^2 (P_n = 0). */
+double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c,
+			  const struct pass *s, size_t n, int in, double impulse, double u0)
 {
 	if (!in || !(impulse > 0) || n < 2)
 		return l->cu * u0 * u0;
 	double r = n - c->seg0 >= 2 || !c->seg0 ? 1.0 : 2.0; /* the steps' ratio */
-	return sa1 + r * (sa1 - sa2);
+	return s->sg[n - 1] + r * (s->sg[n - 1] - s->sg[n - 2]);
 }
 
 /* d^2w_c/dt^2 at node n (see above) from dw_c/dt there, ud, low-passed:
