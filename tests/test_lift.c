@@ -108,11 +108,9 @@ static void agree(double hh, double nu, double patch, double Tp)
  * ktail) for the Hertz patches: at ktail = 1e-10 against 1e-14 (every
  * tail 40 % longer), term by term within the two estimates plus ROUND,
  * on a thin plate to the A1 cutoff.  Measured: 0.00-0.16 of the
- * allowance; a cut where the patch's zhat has decayed as well (320
- * instead of 580 for r0 at hh = 0.02) was off by 12-1023 times it.  A
- * point load's terms (no zhat decay) were 5920 times off at the same cut
- * on h = 0.02 r0, p = 0, T' = 16, not tested here: the cut at ktail is
- * not inside the estimates there. */
+ * allowance.  Since the cut is chosen by each term's budget (green_cut.h)
+ * ktail is only its hard limit; tests/test_kcut.c holds every term
+ * against a far cut, point loads and the half-space included. */
 static void tail_end(double hh, double patch, double Tp)
 {
 	struct spectra r = { 0 };

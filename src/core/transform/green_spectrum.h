@@ -34,6 +34,8 @@ struct green_spectrum {
 	double patch;
 	int no_lift; /* the band's k-integral on the real axis (kernel.h: anvil_kband_lift),
 		      * for tests; a set's is sp[0]'s */
+	int far_cut; /* each k-integral to its hard limit (ktail), not where the budget
+		      * allows: a reference for tests; a set's is sp[0]'s */
 	double complex *spec;
 	double *err;
 };
