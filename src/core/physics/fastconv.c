@@ -28,7 +28,7 @@ struct level {
 struct anvil_fastconv {
 	size_t cap, n, direct_max;
 	size_t nz;    /* 1 + the index of the last nonzero value pushed (0: none) */
-	size_t hi;    /* acc's entries written: [0, hi) (reset clears no more) */
+	size_t hi;    /* acc's entries zeroed, then summed into: [0, hi) */
 	int nk;       /* kernels: 1, or 2 for a pair */
 	const double *g[2]; /* kernels, cap: own copies, or borrowed (fill) */
 	double *own_g[2];
@@ -201,8 +201,10 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 	f->fft = fft ? fft : (f->own = anvil_fastconv_fft_alloc(cap, f->direct_max));
 	int bad = !f->fft;
 	for (int i = 0; i < nk && !bad; i++) {
-		/* calloc: the pages a march never reaches are never touched */
-		f->x[i] = calloc(cap, sizeof *f->x[i]);
+		/* never zeroed: x_m is read only once pushed (m < n); malloc's
+		 * pages a march never reaches are never touched (calloc's can be
+		 * memset whole: glibc serves a freed large block from the heap) */
+		f->x[i] = malloc(cap * sizeof *f->x[i]);
 		f->buf[i] = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf[i]);
 		if (fill)
 			f->g[i] = g[i];
@@ -210,7 +212,7 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 			memcpy(f->own_g[i], g[i], cap * sizeof *g[i]);
 		bad = !f->g[i] || !f->x[i] || !f->buf[i];
 	}
-	f->acc = calloc(cap, sizeof *f->acc);
+	f->acc = malloc(cap * sizeof *f->acc); /* zeroed as the squares reach it (hi) */
 	f->lev = calloc((size_t)f->nlev + 1, sizeof *f->lev);
 	if (bad || !f->acc || !f->lev) {
 		anvil_fastconv_free(f);
@@ -229,17 +231,14 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 
 void anvil_fastconv_reset(struct anvil_fastconv *f)
 {
-	/* only what was written: x below n, acc below hi (the rest is still
-	 * calloc's zeros, its pages perhaps never touched) */
-	for (int i = 0; i < f->nk; i++)
-		memset(f->x[i], 0, f->n * sizeof *f->x[i]);
-	memset(f->acc, 0, f->hi * sizeof *f->acc);
+	/* x is read only once pushed again; acc is zeroed again as the
+	 * squares reach it */
 	f->n = f->nz = f->hi = 0;
 }
 
 double anvil_fastconv_next(const struct anvil_fastconv *f)
 {
-	return f->n < f->cap ? f->acc[f->n] : 0.0;
+	return f->n < f->hi ? f->acc[f->n] : 0.0; /* beyond hi: no square has reached it */
 }
 
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }
@@ -340,8 +339,10 @@ int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y)
 			return -3;
 		f->have = need;
 	}
-	if (end > f->hi)
+	if (end > f->hi) { /* the targets' sums start at zero */
+		memset(f->acc + f->hi, 0, (end - f->hi) * sizeof *f->acc);
 		f->hi = end;
+	}
 	if (k < f->nlev && B > f->direct_max && !f->lev[k].spec[0] && level_init(f, k))
 		return -2;
 	if (k < f->nlev && f->lev[k].spec[0])
