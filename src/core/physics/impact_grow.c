@@ -394,29 +394,16 @@ int impact_hist(struct ctx *c, size_t i, double *val)
 	return st;
 }
 
-/* The hat of widths lw, rw (in dt0) at node time K dt0, through ramp r, at
- * the target u dt0 + d: every lag a whole number of dt0 plus d, as the
- * weights' table has it (the node times' own rounding, the same for every
- * node, would bias the sum against the march's weights). */
-static int hat_at(const struct ctx *c, int r, size_t u, double d, size_t K, size_t lw, size_t rw,
-		  double *val)
+/* Ramp r at the target u dt0 + d less the node time K dt0: every lag a
+ * whole number of dt0 plus d, as the weights' table has it (the node
+ * times' own rounding, the same for every node, would bias the sum
+ * against the march's weights). */
+static int rlag(const struct ctx *c, int r, size_t u, double d, size_t K, double *val)
 {
 	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
 	void *fx = r ? c->rctx2 : c->rctx;
-	double l = (double)lw * c->dt0, rr = (double)rw * c->dt0, a, b, e;
-	int st = impact_ramp_of(c, fn, fx, (double)(u - K + lw) * c->dt0 + d, &a);
-	if (!st)
-		st = impact_ramp_of(c, fn, fx, (double)(u - K) * c->dt0 + d, &b);
-	if (!st)
-		st = u >= K + rw ? impact_ramp_of(c, fn, fx, (double)(u - K - rw) * c->dt0 + d, &e)
-				 : impact_ramp_of(c, fn, fx, d - (double)(K + rw - u) * c->dt0, &e);
-	*val = (a - b) / l - (b - e) / rr; /* slopes: no R-sized rounding (hist_chunk) */
-	if (r && !st) {
-		double h0;
-		st = hat_at(c, 0, u, d, K, lw, rw, &h0);
-		*val -= h0;
-	}
-	return st;
+	return impact_ramp_of(c, fn, fx, u >= K ? (double)(u - K) * c->dt0 + d
+						: d - (double)(K - u) * c->dt0, val);
 }
 
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val)
@@ -426,7 +413,10 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 	const double *tn = v->t - c->seg0, *P = v->P - c->seg0, *Q = v->Q - c->seg0;
 	size_t u = c->K0 + (k << c->lev), Kp = 0, Km = 0, Kn = 0, j = 0;
 	double w = 0, t = (double)u * c->dt0 + d;
-	int st = ANVIL_OK;
+	int st = ANVIL_OK, nr = c->dg ? 2 : 1, have = 0;
+	/* the ramps at the lags of nodes m - 1, m, m + 1 (ramp, ramp2): node
+	 * m + 1's hat reuses two of them (each value one call, not three) */
+	double R[2][3];
 	for (size_t f = 0; f < c->nfz; f++) /* long mode: the far ones' charges */
 		if (t >= c->fz[f].t_far)
 			w += impact_far_sum(c, &c->fz[f], t);
@@ -436,15 +426,28 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 		Kn = m < c->seg0 ? (size_t)llround(tn[m + 1] / c->dt0) : Km + ((size_t)1 << c->lev);
 		while (j < c->nfz && m > c->fz[j].n0 + c->fz[j].S)
 			j++;
-		if (j < c->nfz && t >= c->fz[j].t_far)
+		if (j < c->nfz && t >= c->fz[j].t_far) {
+			have = 0;
 			continue; /* in its segment's far field */
-		double h;
-		st = hat_at(c, 0, u, d, Km, Km - Kp, Kn - Km, &h);
-		w += P[m] * h;
-		if (c->dg && !st) {
-			st = hat_at(c, 1, u, d, Km, Km - Kp, Kn - Km, &h);
-			w += Q[m] * h;
 		}
+		for (int r = 0; r < nr && !st; r++) {
+			if (have) /* the last hat's middle and right */
+				R[r][0] = R[r][1], R[r][1] = R[r][2];
+			else if (!(st = rlag(c, r, u, d, Kp, &R[r][0])))
+				st = rlag(c, r, u, d, Km, &R[r][1]);
+			if (!st)
+				st = rlag(c, r, u, d, Kn, &R[r][2]);
+		}
+		have = !st;
+		if (st)
+			break;
+		/* slopes: no R-sized rounding (hist_chunk); the Q hat's through
+		 * ramp2 less the P hat's */
+		double l = (double)(Km - Kp) * c->dt0, rr = (double)(Kn - Km) * c->dt0;
+		double h = (R[0][0] - R[0][1]) / l - (R[0][1] - R[0][2]) / rr;
+		w += P[m] * h;
+		if (c->dg)
+			w += Q[m] * ((R[1][0] - R[1][1]) / l - (R[1][1] - R[1][2]) / rr - h);
 	}
 	*val = w;
 	return st;
