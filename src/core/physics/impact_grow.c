@@ -37,7 +37,6 @@
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include <stdio.h>
 
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_fft_real.h>
@@ -249,7 +248,6 @@ static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, si
 	int lg = 6;
 	while (N < V)
 		N <<= 1, lg++;
-	if (getenv("ANVIL_DBG")) fprintf(stderr, "FC L=%d S=%zu q=%zu C=%zu o0=%zu nf=%zu direct=%d\n", f->L, S, q, C, o0, f->nf, (double)(S - 1) * (double)C <= HIST_FFT_COST * (double)N * (double)lg);
 	if ((double)(S - 1) * (double)C <= HIST_FFT_COST * (double)N * (double)lg) {
 		for (size_t k = 0; k < C; k++)
 			out[k] += dot_rev(f->x, f->g, o0 + q * k, S) +
