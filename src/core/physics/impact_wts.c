@@ -44,26 +44,35 @@ void impact_rtab_free(struct rtab *t)
 	t->n = 0;
 }
 
-/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
- * that makes it (the same bits); NaN when the call fails. */
-static double rraw(const struct ctx *c, int r, size_t u)
+/* ramp (r = 0) or ramp2 (r = 1) at u dt0 by the call, kept in the table
+ * when it is there (tab); NaN when the call fails.  Apart from rraw's
+ * lookup, so that the lookup inlines where the weights are made. */
+static double rmake(const struct ctx *c, int r, size_t u, int tab)
 {
-	struct rtab *t = c->rt;
-	size_t U = u << c->rsh;
-	int tab = u < c->nR0 && t && U < t->n && t->R[r];
-	uint64_t bit = (uint64_t)1 << (U & 63);
-	if (tab && (t->have[r][U >> 6] & bit))
-		return t->R[r][U];
 	double v;
 	int st = r ? impact_ramp_of(c, c->ramp2, c->rctx2, (double)u * c->dt0, &v)
 		   : impact_ramp_at(c, (double)u * c->dt0, &v);
 	if (st)
 		return NAN;
 	if (tab) {
+		struct rtab *t = c->rt;
+		size_t U = u << c->rsh;
 		t->R[r][U] = v;
-		t->have[r][U >> 6] |= bit;
+		t->have[r][U >> 6] |= (uint64_t)1 << (U & 63);
 	}
 	return v;
+}
+
+/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
+ * that makes it (the same bits); NaN when the call fails. */
+static inline double rraw(const struct ctx *c, int r, size_t u)
+{
+	const struct rtab *t = c->rt;
+	size_t U = u << c->rsh;
+	int tab = u < c->nR0 && t && U < t->n && t->R[r];
+	if (tab && (t->have[r][U >> 6] >> (U & 63) & 1))
+		return t->R[r][U];
+	return rmake(c, r, u, tab);
 }
 
 double impact_rtab(const struct ctx *c, int r, size_t u)
