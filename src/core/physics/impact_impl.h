@@ -229,6 +229,12 @@ struct rtab {
 	double *R[2];   /* ramp, ramp2 (NULL without it) */
 	uint64_t *have[2];
 	size_t n;       /* entries, in the dt/2 pass's dt0 */
+	/* beyond: U = (2 i + 1) 2^z kept in row z at i (impact_wts.c) */
+	struct rtab_row {
+		double *v;
+		uint64_t *have;
+		size_t cap;
+	} row[2][64];
 };
 /* A table of n entries (ramp2: with its second row); ANVIL_OK or
  * ANVIL_ENOMEM.  impact_rtab_free(NULL) is a no-op. */
