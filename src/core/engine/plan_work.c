@@ -248,10 +248,13 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * of the window on the grown contacts measured (all of it where the
  * contact fills its window, short ones), it is priced at 0.16 us: on
  * scripts/bench section 13 and the six thin-plate scenes of the march's
- * speed-up (cold, one thread) the physical row's whole prediction is then
- * 0.67-1.63 times the process' CPU time (0.69 on the two long-mode rows
- * at h = 0.05-0.1 r0, whose band the solver doubles: lambda* = 9000,
- * plan.c, PHYS_WIDE_LAMBDA). */
+ * speed-up (cold, one thread, best of 3) the physical row's whole
+ * prediction is then 0.69-1.96 times the process' CPU time (before:
+ * 0.65-1.9): 0.69-0.74 on the two long-mode rows at h = 0.05-0.1 r0,
+ * whose band the solver doubles (lambda* = 9000: plan.c,
+ * PHYS_WIDE_LAMBDA), 1.84-1.96 on h = 0.5 r0, 100 kg at 1 m/s and
+ * h = 0.02 r0, 100 kg at 1 mm/s (1.78-1.90 before), 1.0-1.36 elsewhere
+ * but 1.63 on h = r0, 1 kg at 10 m/s. */
 /* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
  * both passes), and the far field's cost per grown node and frozen level
  * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
