@@ -253,7 +253,7 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * 0.65-1.9): 0.69-0.74 on the two long-mode rows at h = 0.05-0.1 r0,
  * whose band the solver doubles (lambda* = 9000: plan.c,
  * PHYS_WIDE_LAMBDA), 1.84-1.96 on h = 0.5 r0, 100 kg at 1 m/s and
- * h = 0.02 r0, 100 kg at 1 mm/s (1.78-1.90 before), 1.0-1.36 elsewhere
+ * h = 0.02 r0, 100 kg at 1 mm/s (1.78-1.90 before), 0.70-1.36 elsewhere
  * but 1.63 on h = r0, 1 kg at 10 m/s. */
 /* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
  * both passes), and the far field's cost per grown node and frozen level
