@@ -2,7 +2,7 @@
  *
  * The step of a pass is dt0 2^L on segments of nodes; every node is a
  * multiple of dt0, so every lag between a node and a hat's corner is one,
- * and the ramp response at j dt0 (weights' table R0) gives every weight of
+ * and the ramp response at j dt0 (the ramps' table, impact_wts.c) gives every weight of
  * every level exactly: the hat of widths (l, r) at t_m deflects the anvil
  * at t by (R(t - t_m + l) - R(t - t_m))/l - (R(t - t_m) - R(t - t_m - r))/r.
  * The product integration stays exact (P piecewise linear through its

@@ -123,7 +123,7 @@ struct ctx {
 	size_t grow_after;   /* nodes before the step may grow; 0: never */
 	double grow_eta;     /* the smoothness asked of P (impact.h) */
 	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
-	struct rtab *rt;     /* ramp and ramp2 at j dt0, j < nR0, as made (impact_wts.c); beyond, by call */
+	struct rtab *rt;     /* ramp and ramp2 at j dt0 as made (impact_wts.c): j < nR0 in its table, beyond in its rows */
 	int rsh;             /* the pass's j is the table's j << rsh */
 	size_t nR;           /* the window's end, in dt0, plus one */
 	size_t nR0;          /* the table's reach (nR but in long mode) */
