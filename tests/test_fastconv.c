@@ -139,6 +139,79 @@ static void test_pair(size_t N, size_t direct_max, double bound)
 	free(h);
 }
 
+/* A lazy kernel: filled from the whole one as asked; fails past fail_at. */
+struct lazy {
+	const double *src[2];
+	double *g[2];
+	size_t asked, most, fail_at;
+	int order_ok;
+};
+
+static int lazy_fill(void *ctx, size_t need)
+{
+	struct lazy *l = ctx;
+	l->order_ok &= need > l->asked; /* asked only for more */
+	if (need > l->fail_at)
+		return 1;
+	for (size_t j = l->asked; j < need; j++)
+		for (int i = 0; i < 2; i++)
+			if (l->g[i])
+				l->g[i][j] = l->src[i][j];
+	l->asked = need;
+	return 0;
+}
+
+/* The lazy kernel gives the bits of the whole one, asks for no more than
+ * the pushes read (2B before a square of side B: below 2n after n pushes),
+ * keeps them after a reset, and a failing fill stops a push with -3. */
+static void test_lazy(size_t N, size_t direct_max)
+{
+	unsigned long long s = 7654321ULL + N;
+	double *x = malloc(N * sizeof *x), *g = malloc(N * sizeof *g), *h = malloc(N * sizeof *h);
+	double *lg = malloc(N * sizeof *lg), *lh = malloc(N * sizeof *lh);
+	for (size_t i = 0; i < N; i++) {
+		x[i] = (i / 200) % 4 == 3 ? 0.0 : urand(&s);
+		g[i] = urand(&s) / (1.0 + 0.01 * (double)i);
+		h[i] = urand(&s) / (1.0 + 0.03 * (double)i);
+	}
+	struct lazy l = { { g, h }, { lg, lh }, 0, 0, (size_t)-1, 1 };
+	struct anvil_fastconv *w = anvil_fastconv_alloc_pair(g, h, N, direct_max, NULL);
+	struct anvil_fastconv *z = anvil_fastconv_alloc_lazy(lg, lh, N, direct_max, NULL, lazy_fill, &l);
+	int same = 1, bounded = l.asked == 2;
+	for (int round = 0; round < 2; round++) {
+		size_t stop = round ? N : N / 3; /* a march that stops early, then a whole one */
+		for (size_t n = 0; n < stop; n++) {
+			same &= anvil_fastconv_next(w) == anvil_fastconv_next(z);
+			anvil_fastconv_push_pair(w, x[n], 0.5 * x[n]);
+			anvil_fastconv_push_pair(z, x[n], 0.5 * x[n]);
+			bounded &= l.asked <= N && (round || l.asked <= 2 * (n + 1) || l.asked == 2);
+		}
+		if (!round)
+			ok(l.asked < N, "lazy kernel, N = %zu: %zu of it made for %zu pushes", N, l.asked,
+			   stop);
+		anvil_fastconv_reset(w);
+		anvil_fastconv_reset(z);
+	}
+	ok(same, "lazy kernel (N = %zu, direct up to %zu): the bits of the whole one, also after a reset",
+	   N, direct_max);
+	ok(bounded && l.order_ok, "lazy kernel: asked for no more than 2n after n pushes, never twice");
+	struct lazy f = { { g, h }, { lg, lh }, 0, 0, 40, 1 };
+	struct anvil_fastconv *e = anvil_fastconv_alloc_lazy(lg, NULL, N, direct_max, NULL, lazy_fill, &f);
+	int r = 0;
+	for (size_t n = 0; n < N && !r; n++)
+		r = anvil_fastconv_push(e, x[n] + 1.0);
+	ok(r == -3 && f.asked <= 40, "a failing fill stops the push with -3");
+	ok(anvil_fastconv_alloc_lazy(lg, NULL, N, 0, NULL, NULL, NULL) == NULL, "a lazy kernel needs its fill");
+	anvil_fastconv_free(e);
+	anvil_fastconv_free(w);
+	anvil_fastconv_free(z);
+	free(x);
+	free(g);
+	free(h);
+	free(lg);
+	free(lh);
+}
+
 int main(void)
 {
 	/* the bound: eps log2(N) times a small constant (rounding of the FFT) */
@@ -149,6 +222,8 @@ int main(void)
 	test_impact_like();
 	test_pair(3000, 0, 5e-15);
 	test_pair(1000, (size_t)-1, 1e-15);
+	test_lazy(3000, 0);
+	test_lazy(1000, (size_t)-1);
 	ok(anvil_fastconv_alloc(NULL, 0, 0) == NULL, "capacity 0 is refused");
 	anvil_fastconv_free(NULL);
 	plan(tap_n);

@@ -138,6 +138,19 @@ static int dlog_ramp(void *ctx, double tau, double *val)
 	return st;
 }
 
+/* dlog_ramp, its calls counted. */
+struct counted {
+	struct dlog q;
+	size_t calls;
+};
+
+static int counted_ramp(void *ctx, double tau, double *val)
+{
+	struct counted *k = ctx;
+	k->calls++;
+	return dlog_ramp(&k->q, tau, val);
+}
+
 /* A run in long mode (impact.h t_smooth; max_steps bounds the nodes) or
  * not (max_steps 0: as run()), on ramp over a window of win T. */
 static int run_long(const struct dash *d, anvil_ramp_fn ramp, void *ctx, double dt,
@@ -181,7 +194,7 @@ static int within(const struct anvil_result *a, double ts, double Pmax, double R
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(13);
+	plan(14);
 	struct anvil_params p;
 	paper_params(&p, INFINITY, 10);
 	/* the dashpot drains the impactor's momentum over about 10 T */
@@ -269,6 +282,19 @@ int main(void)
 	   dl, dp);
 	diag("long: t_s = %.10g T, exact %.10g T (%.2g); R_f %.10g / %.10g", ll.ts.val / p.T,
 	     le.ts.val / p.T, le.ts.err / p.T, ll.Rf.val, le.Rf.val);
+	/* the weights made as the march reaches them, each ramp value once
+	 * for both passes (impact_wts.c): the whole tables of the two passes
+	 * were 120001 + 240001 calls; the contact ends at 112 T of the 300,
+	 * so the dt/2 pass's table alone, made in full, was more than all
+	 * the calls now (the contact end's off-grid ones included) */
+	struct counted kq = { q, 0 };
+	struct anvil_result lk;
+	st = run_long(&d, counted_ramp, &kq, dt, ga, 0, 0, 300, &lk);
+	ok(!st && lk.ts.val == le.ts.val && lk.Pmax.val == le.Pmax.val && lk.Rf.val == le.Rf.val &&
+	   kq.calls < 240001,
+	   "the ramp's table made only as far as the march reaches: %zu calls, the dt/2 table alone was 240001 (the same bits)",
+	   kq.calls);
+	anvil_result_free(&lk);
 	st = run_long(&d, dlog_ramp, &q, dt, ga, 1, 0, 300, &lp) ||
 	     run_long(&d, dlog_ramp, &q, dt, ga, 1, 20000, 300, &lq);
 	ok(!st && fabs(lq.ts.val - lp.ts.val) < 0.1 * lp.ts.err &&

@@ -239,15 +239,22 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * their predicted/marched nodes 0.75-1.6); each such node pays the frozen
  * past (IMPACT_HIST, s: 8 us before its chunks were held to a few spans
  * of the frozen segments, impact_grow.c hist_cmax, and the plate's K(t)
- * was made once per window, plan_work.c), and every step of the window at
- * dt still costs the ramp's table (IMPACT_TAB, s; measured 0.7-1.2 us per
+ * was made once per window, plan_work.c), and the ramp's table costs per
+ * step of the window at dt (IMPACT_TAB, s; measured 0.7-1.2 us per
  * window step in PHYS_RUNS' units before the plate's tail left the
  * samples beyond T1 out, 0.44-0.47 us after: 19 grid rows of 3.4e5 and
- * 6e5 window steps, priced 1.9-2.3 times their CPU at 1 us).  On the 18
- * long contacts of scripts/bench section 13 (cold, one thread) the
- * physical row's whole prediction is then 0.73-1.52 times the process'
- * CPU time, and 0.55 on h = 0.05 r0, 10 kg at 1 m/s, whose band the
- * solver doubles (lambda* = 9000: plan.c, PHYS_WIDE_LAMBDA). */
+ * 6e5 window steps, priced 1.9-2.3 times their CPU at 1 us).  Since the
+ * table is made only as far as the march reaches (impact_wts.c), 0.27-0.38
+ * of the window on the grown contacts measured (all of it where the
+ * contact fills its window, short ones), it is priced at 0.16 us: on
+ * scripts/bench section 13 and the six thin-plate scenes of the march's
+ * speed-up (cold, one thread, best of 3) the physical row's whole
+ * prediction is then 0.69-1.96 times the process' CPU time (before:
+ * 0.65-1.9): 0.69-0.74 on the two long-mode rows at h = 0.05-0.1 r0,
+ * whose band the solver doubles (lambda* = 9000: plan.c,
+ * PHYS_WIDE_LAMBDA), 1.84-1.96 on h = 0.5 r0, 100 kg at 1 m/s and
+ * h = 0.02 r0, 100 kg at 1 mm/s (1.78-1.90 before), 0.70-1.36 elsewhere
+ * but 1.63 on h = r0, 1 kg at 10 m/s. */
 /* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
  * both passes), and the far field's cost per grown node and frozen level
  * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
@@ -255,7 +262,7 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
 #define IMPACT_FAR 1.0e-6
 #define IMPACT_GROWN 12.0
 #define IMPACT_HIST 3.5e-6
-#define IMPACT_TAB 4.5e-7
+#define IMPACT_TAB 1.6e-7
 double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
 {
 	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;

@@ -28,8 +28,13 @@ struct level {
 struct anvil_fastconv {
 	size_t cap, n, direct_max;
 	size_t nz;    /* 1 + the index of the last nonzero value pushed (0: none) */
+	size_t hi;    /* acc's entries zeroed, then summed into: [0, hi) */
 	int nk;       /* kernels: 1, or 2 for a pair */
-	double *g[2]; /* kernels, cap */
+	const double *g[2]; /* kernels, cap: own copies, or borrowed (fill) */
+	double *own_g[2];
+	anvil_fastconv_fill fill; /* a lazy kernel's maker, or NULL */
+	void *fctx;
+	size_t have;  /* a lazy kernel's entries made */
 	double *x[2]; /* pushed values, cap */
 	double *acc;  /* partial sums c_n, cap */
 	double *buf[2]; /* scratch, 2 B_max */
@@ -111,7 +116,7 @@ void anvil_fastconv_free(struct anvil_fastconv *f)
 	free(f->lev);
 	anvil_fastconv_fft_free(f->own);
 	for (int i = 0; i < 2; i++) {
-		free(f->g[i]);
+		free(f->own_g[i]);
 		free(f->x[i]);
 		free(f->buf[i]);
 	}
@@ -139,12 +144,13 @@ static int level_init(struct anvil_fastconv *f, int k)
 }
 
 static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
-					    size_t direct_max, struct anvil_fastconv_fft *fft);
+					    size_t direct_max, struct anvil_fastconv_fft *fft,
+					    anvil_fastconv_fill fill, void *fctx);
 
 struct anvil_fastconv *anvil_fastconv_alloc_fft(const double *g, size_t cap, size_t direct_max,
 						struct anvil_fastconv_fft *fft)
 {
-	return alloc_kernels(&g, 1, cap, direct_max, fft);
+	return alloc_kernels(&g, 1, cap, direct_max, fft, NULL, NULL);
 }
 
 struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *h, size_t cap,
@@ -152,11 +158,31 @@ struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *
 						 struct anvil_fastconv_fft *fft)
 {
 	const double *gh[2] = { g, h };
-	return alloc_kernels(gh, 2, cap, direct_max, fft);
+	return alloc_kernels(gh, 2, cap, direct_max, fft, NULL, NULL);
+}
+
+struct anvil_fastconv *anvil_fastconv_alloc_lazy(const double *g, const double *h, size_t cap,
+						 size_t direct_max,
+						 struct anvil_fastconv_fft *fft,
+						 anvil_fastconv_fill fill, void *ctx)
+{
+	const double *gh[2] = { g, h };
+	if (!fill)
+		return NULL;
+	struct anvil_fastconv *f = alloc_kernels(gh, h ? 2 : 1, cap, direct_max, fft, fill, ctx);
+	size_t need = cap < 2 ? cap : 2;
+	if (f && fill(ctx, need)) {
+		anvil_fastconv_free(f);
+		return NULL;
+	}
+	if (f)
+		f->have = need;
+	return f;
 }
 
 static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size_t cap,
-					    size_t direct_max, struct anvil_fastconv_fft *fft)
+					    size_t direct_max, struct anvil_fastconv_fft *fft,
+					    anvil_fastconv_fill fill, void *fctx)
 {
 	if (!cap)
 		return NULL;
@@ -171,16 +197,22 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 		return NULL; /* tables that do not cover these levels */
 	}
 	f->nk = nk;
+	f->fill = fill, f->fctx = fctx;
 	f->fft = fft ? fft : (f->own = anvil_fastconv_fft_alloc(cap, f->direct_max));
 	int bad = !f->fft;
 	for (int i = 0; i < nk && !bad; i++) {
-		f->g[i] = malloc(cap * sizeof *f->g[i]);
-		f->x[i] = calloc(cap, sizeof *f->x[i]);
+		/* never zeroed: x_m is read only once pushed (m < n); malloc's
+		 * pages a march never reaches are never touched (calloc's can be
+		 * memset whole: glibc serves a freed large block from the heap) */
+		f->x[i] = malloc(cap * sizeof *f->x[i]);
 		f->buf[i] = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf[i]);
-		if (!(bad = !f->g[i] || !f->x[i] || !f->buf[i]))
-			memcpy(f->g[i], g[i], cap * sizeof *g[i]);
+		if (fill)
+			f->g[i] = g[i];
+		else if ((f->g[i] = f->own_g[i] = malloc(cap * sizeof *f->own_g[i])))
+			memcpy(f->own_g[i], g[i], cap * sizeof *g[i]);
+		bad = !f->g[i] || !f->x[i] || !f->buf[i];
 	}
-	f->acc = calloc(cap, sizeof *f->acc);
+	f->acc = malloc(cap * sizeof *f->acc); /* zeroed as the squares reach it (hi) */
 	f->lev = calloc((size_t)f->nlev + 1, sizeof *f->lev);
 	if (bad || !f->acc || !f->lev) {
 		anvil_fastconv_free(f);
@@ -199,15 +231,14 @@ struct anvil_fastconv *anvil_fastconv_alloc(const double *g, size_t cap, size_t 
 
 void anvil_fastconv_reset(struct anvil_fastconv *f)
 {
-	for (int i = 0; i < f->nk; i++)
-		memset(f->x[i], 0, f->cap * sizeof *f->x[i]);
-	memset(f->acc, 0, f->cap * sizeof *f->acc);
-	f->n = f->nz = 0;
+	/* x is read only once pushed again; acc is zeroed again as the
+	 * squares reach it */
+	f->n = f->nz = f->hi = 0;
 }
 
 double anvil_fastconv_next(const struct anvil_fastconv *f)
 {
-	return f->n < f->cap ? f->acc[f->n] : 0.0;
+	return f->n < f->hi ? f->acc[f->n] : 0.0; /* beyond hi: no square has reached it */
 }
 
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }
@@ -302,6 +333,16 @@ int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y)
 	size_t B = (size_t)1 << k;
 	if (f->nz <= L - B)
 		return 0; /* sources all zero (free flight): the square adds nothing */
+	size_t need = 2 * B < f->cap ? 2 * B : f->cap, end = L + B < f->cap ? L + B : f->cap;
+	if (f->fill && need > f->have) { /* a square reads g_j, j < 2B */
+		if (f->fill(f->fctx, need))
+			return -3;
+		f->have = need;
+	}
+	if (end > f->hi) { /* the targets' sums start at zero */
+		memset(f->acc + f->hi, 0, (end - f->hi) * sizeof *f->acc);
+		f->hi = end;
+	}
 	if (k < f->nlev && B > f->direct_max && !f->lev[k].spec[0] && level_init(f, k))
 		return -2;
 	if (k < f->nlev && f->lev[k].spec[0])

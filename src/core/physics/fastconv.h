@@ -56,6 +56,21 @@ struct anvil_fastconv *anvil_fastconv_alloc_pair(const double *g, const double *
 						 size_t direct_max,
 						 struct anvil_fastconv_fft *fft);
 
+/* A kernel made as the convolution reaches it: fill(ctx, need) makes
+ * g_j (and h_j, h NULL for a single one) for j < need in the caller's
+ * arrays, which hold cap values each, never move and outlive f
+ * (borrowed, not copied); it returns 0, or nonzero when it fails (the
+ * push then returns -3).  Before a square of side B the convolution asks
+ * for j < min(2B, cap), all it reads: a march that stops early (a grown
+ * step's segment, a short contact) never has the rest made.  fill(ctx, 2)
+ * is asked at once (NULL when it fails).  As anvil_fastconv_alloc_pair
+ * otherwise; the same bits as a convolution given the whole kernel. */
+typedef int (*anvil_fastconv_fill)(void *ctx, size_t need);
+struct anvil_fastconv *anvil_fastconv_alloc_lazy(const double *g, const double *h, size_t cap,
+						 size_t direct_max,
+						 struct anvil_fastconv_fft *fft,
+						 anvil_fastconv_fill fill, void *ctx);
+
 /* Forget the pushed values (same kernel): as new. */
 void anvil_fastconv_reset(struct anvil_fastconv *f);
 
@@ -63,13 +78,14 @@ void anvil_fastconv_reset(struct anvil_fastconv *f);
  * is in it).  0 when n >= cap. */
 double anvil_fastconv_next(const struct anvil_fastconv *f);
 
-/* Push x_n; returns 0, -1 when cap values have been pushed already, or -2
- * when out of memory (a level's spectrum is made when first needed). */
+/* Push x_n; returns 0, -1 when cap values have been pushed already, -2
+ * when out of memory (a level's spectrum is made when first needed), or
+ * -3 when a lazy kernel's fill fails. */
 int anvil_fastconv_push(struct anvil_fastconv *f, double x);
 
 /* Push x_n and y_n to a pair (a single convolution takes y_n = 0 only);
  * returns 0, -1 when full or y_n != 0 on a single one, -2 when out of
- * memory. */
+ * memory, -3 when a lazy kernel's fill fails. */
 int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
 
 /* The number of values pushed. */

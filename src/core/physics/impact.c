@@ -55,35 +55,26 @@ int impact_ramp_at(const struct ctx *c, double t, double *val)
 
 /* Weights of the product integration: the deflection at t_n caused by the
  * hat function of unit height centred at t_m is g_{n-m}, the second
- * difference of the ramp response divided by dt. */
-static int weights(struct ctx *c, double dt, size_t cap)
+ * difference of the ramp response divided by dt; made as the march reaches
+ * them (impact_wts.c).  cap: the first segment's (all the window's but in
+ * long mode). */
+static int weights(struct ctx *c, size_t cap)
 {
-	/* cap: the first segment's weights (all the window's but in long mode) */
-	double *R = malloc((cap + 2) * sizeof *R);
 	c->g = malloc(cap * sizeof *c->g);
-	if (!R || !c->g) {
-		free(R);
-		return ANVIL_ENOMEM;
-	}
-	int st = ANVIL_OK;
-	for (size_t j = 0; j < cap + 1 && !st; j++)
-		st = impact_ramp_at(c, (double)j * dt, &R[j]);
-	for (size_t j = 0; j < cap && !st; j++)
-		c->g[j] = (R[j + 1] - 2.0 * R[j] + (j ? R[j - 1] : 0.0)) / dt;
-	c->ng = cap;
-	c->R0 = R, c->nR0 = cap + 1; /* kept: every level's weights (impact_grow.c) */
-	if (c->ramp2 && !st) { /* dg = g2 - g */
-		double *R2 = malloc((cap + 2) * sizeof *R2);
+	if (c->ramp2)
 		c->dg = malloc(cap * sizeof *c->dg);
-		c->R20 = R2;
-		if (!c->dg || !R2)
-			st = ANVIL_ENOMEM;
-		for (size_t j = 0; j < cap + 1 && !st; j++)
-			st = impact_ramp_of(c, c->ramp2, c->rctx2, (double)j * dt, &R2[j]);
-		for (size_t j = 0; j < cap && !st; j++)
-			c->dg[j] = (R2[j + 1] - 2.0 * R2[j] + (j ? R2[j - 1] : 0.0)) / dt - c->g[j];
-	}
-	return st;
+	c->ng = cap, c->gnf = 0;
+	if (!c->g || (c->ramp2 && !c->dg))
+		return ANVIL_ENOMEM;
+	return impact_g_need(c, 2);
+}
+
+/* A push's status (fastconv.h): full is no error here (the march stops
+ * at the capacity), out of memory is, and a weight that failed (a ramp
+ * call: impact_wts.c). */
+static int push_status(int r)
+{
+	return r == -2 ? ANVIL_ENOMEM : r == -3 ? ANVIL_ENUM : ANVIL_OK;
 }
 
 /* The one positive root of k0 x^2 + B x^3 = A (x = P^(1/3)), A > 0.
@@ -159,8 +150,8 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		if (anvil_fastconv_push(c->fc, P) == -2)
-			return ANVIL_ENOMEM;
+		if ((st = push_status(anvil_fastconv_push(c->fc, P))))
+			return st;
 		if (impact_rest_check(c, s, n, in))
 			break;
 		if (!in && !s->pend_k && impact_parted(c, s, n, impulse, amax)) {
@@ -350,8 +341,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		S0 += P;
 		S1 += P * tn;
 		s->n = n + 1;
-		if (anvil_fastconv_push_pair(c->fc, P, s->Q[n]) == -2)
-			return ANVIL_ENOMEM;
+		if ((st = push_status(anvil_fastconv_push_pair(c->fc, P, s->Q[n]))))
+			return st;
 		if (impact_rest_check(c, s, n, in))
 			break;
 		if (!in && !s->pend_k && impact_parted(c, s, n, impulse, amax)) {
@@ -418,42 +409,52 @@ static int pass_paper(const struct ctx *c, struct pass *s)
 		impulse += 0.5 * dt * (s->P[n - 1] + s->P[n]);
 		a_prev = -s->P[n] / p->m1;
 		s->n = n + 1;
-		if (anvil_fastconv_push(c->fc, s->P[n - 1]) == -2)
-			return ANVIL_ENOMEM;
+		int st = push_status(anvil_fastconv_push(c->fc, s->P[n - 1]));
+		if (st)
+			return st;
 	}
 	return ANVIL_ETOL;
+}
+
+/* The pass of step dt (fine: the dt/2 one): the window's nodes cap, the
+ * nodes the march may make, the first segment's weights nw; cap < 8 is
+ * too few. */
+static void pass_sizes(const struct ctx *c, double dt, int fine, size_t *cap, size_t *nodes,
+		       size_t *nw)
+{
+	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
+	*cap = *nodes = *nw = (size_t)floor(t_avail / dt) - 1;
+	if (c->lng) { /* the nodes the march may make, the first segment's weights */
+		size_t mult = fine ? 2 : 1, w0 = 2 * c->grow_after + 64;
+		*nodes = *cap < mult * c->max_nodes ? *cap : mult * c->max_nodes;
+		w0 = mult * (w0 > IMPACT_LONG_SEG ? w0 : IMPACT_LONG_SEG);
+		*nw = *nodes < w0 ? *nodes : w0;
+	}
 }
 
 static int run_pass(struct ctx *c, enum anvil_scheme scheme, double dt, size_t direct_max,
 		    struct pass *s)
 {
-	double t_avail = c->tau_avail * c->p->r0 / c->p->c2;
-	size_t cap = (size_t)floor(t_avail / dt) - 1, nodes = cap, nw = cap;
+	size_t cap, nodes, nw;
+	pass_sizes(c, dt, c->sched != NULL, &cap, &nodes, &nw);
 	if (cap < 8)
 		return ANVIL_ETOL;
-	if (c->lng) { /* the nodes the march may make, the first segment's weights */
-		size_t mult = c->sched ? 2 : 1, w0 = 2 * c->grow_after + 64;
-		nodes = cap < mult * c->max_nodes ? cap : mult * c->max_nodes;
-		w0 = mult * (w0 > IMPACT_LONG_SEG ? w0 : IMPACT_LONG_SEG);
-		nw = nodes < w0 ? nodes : w0;
-	}
 	int st = pass_alloc(s, nodes, dt);
 	free(c->g);
 	free(c->dg);
-	free(c->R0);
-	free(c->R20);
 	impact_grow_reset(c);
-	c->g = c->dg = c->R0 = c->R20 = NULL;
+	c->g = c->dg = NULL;
 	c->seg0 = c->K0 = 0, c->lev = 0, c->T0 = c->Ih = c->M1h = 0, c->segcap = nw;
 	c->dt0 = dt;
 	c->nR = cap + 1;
+	c->nR0 = nw + 1;
+	c->rsh = c->sched ? 0 : 1; /* the table is in the dt/2 pass's dt0 */
 	if (!st)
-		st = weights(c, dt, nw);
+		st = weights(c, nw);
 	anvil_fastconv_free(c->fc);
 	c->fc = NULL;
 	impact_end_tab_free(c->tab); /* a new dt */
-	if (!st && !(c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, nw, direct_max, c->fft)
-				   : anvil_fastconv_alloc_fft(c->g, nw, direct_max, c->fft)))
+	if (!st && !(c->fc = impact_fc_alloc(c, direct_max)))
 		st = ANVIL_ENOMEM;
 	if (!st)
 		st = scheme == ANVIL_SCHEME_PAPER ? pass_paper(c, s)
@@ -639,8 +640,17 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	struct anvil_fastconv_fft *fft =
 		anvil_fastconv_fft_alloc((size_t)(lng ? fmin(fcap, 2.0 * (double)o->max_steps) : fcap),
 					 o->direct_max);
-	if (!(c.fft = fft))
+	/* the ramps' table, the dt/2 pass's first segment's reach (the dt
+	 * pass's lies within: its u is 2u there) */
+	struct rtab rt = {0};
+	size_t fcp, fnodes, fnw;
+	pass_sizes(&c, 0.5 * dt, 1, &fcp, &fnodes, &fnw);
+	if (!(c.fft = fft) || (fcp >= 8 && impact_rtab_alloc(&rt, fnw + 1, c.ramp2 != NULL))) {
+		anvil_fastconv_fft_free(fft);
+		impact_rtab_free(&rt);
 		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
+	}
+	c.rt = &rt;
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	struct pass *last = &a; /* the pass that ran last, for the messages */
 	c.rest_stop = a.rest ? a.ts : c.rest_stop; /* the finer pass stops there too */
@@ -688,8 +698,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	free(c.g);
 	anvil_fastconv_free(c.fc);
 	free(c.dg);
-	free(c.R0);
-	free(c.R20);
+	impact_rtab_free(&rt);
 	impact_grow_free(&c);
 	impact_end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);

@@ -266,7 +266,7 @@ int impact_contact_state(const struct ctx *c, struct pass *s, size_t n, double A
 int impact_parted(const struct ctx *c, const struct pass *s, size_t n, double impulse,
 		  double amax)
 {
-	double dt = s->dt, late = impulse * c->g[c->ng - 1] / dt;
+	double dt = s->dt, late = impulse * impact_g_at(c, c->ng - 1) / dt;
 	double u = (s->w[n] - s->w[n - 1]) / dt;
 	return s->v[n] < 0 && u > s->v[n] &&
 	       s->W[n] < fmin(s->w[n], late) - IMPACT_PART_MARGIN * amax;

@@ -96,6 +96,8 @@ static int far_exact(const struct end_ctx *e, int i, double *val)
 	if (d == 0.0 || d == dt) { /* on the grid: the weights */
 		double w = 0;
 		size_t sh = d == 0.0 ? 0 : 1;
+		if (impact_g_need(c, k + sh))
+			return ANVIL_ENUM;
 		for (size_t m = 1; m < e->m0; m++)
 			w += P[m] * c->g[k + sh - m] + (c->dg ? Q[m] * c->dg[k + sh - m] : 0.0);
 		*val = w;

@@ -2,7 +2,7 @@
  *
  * The step of a pass is dt0 2^L on segments of nodes; every node is a
  * multiple of dt0, so every lag between a node and a hat's corner is one,
- * and the ramp response at j dt0 (weights' table R0) gives every weight of
+ * and the ramp response at j dt0 (the ramps' table, impact_wts.c) gives every weight of
  * every level exactly: the hat of widths (l, r) at t_m deflects the anvil
  * at t by (R(t - t_m + l) - R(t - t_m))/l - (R(t - t_m) - R(t - t_m - r))/r.
  * The product integration stays exact (P piecewise linear through its
@@ -97,60 +97,18 @@ int impact_grow_due(const struct ctx *c, const struct pass *s, size_t n, int in)
 	return 4.0 * d2 <= c->grow_eta * ref ? c->lev + 1 : 0;
 }
 
-/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
- * that made it (the same bits); NaN when the call fails. */
-static double rraw(const struct ctx *c, int r, size_t u)
-{
-	if (u < c->nR0)
-		return r ? c->R20[u] : c->R0[u];
-	double v;
-	int st = r ? impact_ramp_of(c, c->ramp2, c->rctx2, (double)u * c->dt0, &v)
-		   : impact_ramp_at(c, (double)u * c->dt0, &v);
-	return st ? NAN : v;
-}
-
-double impact_rtab(const struct ctx *c, int r, size_t u)
-{
-	return r ? rraw(c, 1, u) - rraw(c, 0, u) : rraw(c, 0, u);
-}
-
-/* Level L's weights j0 <= j < j1 into g (and dg when ramp2 is given) from
- * the ramps at j 2^L dt0 (as weights() makes level 0's); 1 when one is
- * not finite (a ramp call failed). */
-static int level_fill(const struct ctx *c, int L, size_t j0, size_t j1, double dn, double *g,
-		      double *dg)
-{
-	size_t mn = (size_t)1 << L;
-	int bad = 0;
-	/* each ramp value once (beyond the table each is a call): a window
-	 * of three sliding along j, the same operands as before */
-	double a[3] = { j0 ? rraw(c, 0, (j0 - 1) * mn) : 0.0, rraw(c, 0, j0 * mn), 0.0 };
-	double b[3] = { dg && j0 ? rraw(c, 1, (j0 - 1) * mn) : 0.0, dg ? rraw(c, 1, j0 * mn) : 0.0, 0.0 };
-	for (size_t j = j0; j < j1; j++) {
-		a[2] = rraw(c, 0, (j + 1) * mn);
-		g[j] = (a[2] - 2.0 * a[1] + (j ? a[0] : 0.0)) / dn;
-		a[0] = a[1], a[1] = a[2];
-		if (dg) {
-			b[2] = rraw(c, 1, (j + 1) * mn);
-			dg[j] = (b[2] - 2.0 * b[1] + (j ? b[0] : 0.0)) / dn - g[j];
-			b[0] = b[1], b[1] = b[2];
-		}
-		bad |= !isfinite(g[j]) || (dg && !isfinite(dg[j]));
-	}
-	return bad;
-}
-
-/* The weights of level L from the table (as weights() makes level 0's). */
-static int level_weights(struct ctx *c, int L, size_t capn, double dn)
+/* The weights of level L (as weights() makes level 0's), made as they
+ * are needed (impact_wts.c). */
+static int level_weights(struct ctx *c, int L, size_t capn)
 {
 	double *g = malloc(capn * sizeof *g), *dg = NULL;
-	if (!g || (c->R20 && !(dg = malloc(capn * sizeof *dg)))) {
+	if (!g || (c->ramp2 && !(dg = malloc(capn * sizeof *dg)))) {
 		free(g);
 		return ANVIL_ENOMEM;
 	}
-	int bad = level_fill(c, L, 0, capn, dn, g, dg);
-	c->g = g, c->dg = dg, c->ng = capn; /* the old ones: frozen with their segment */
-	return bad ? ANVIL_ENUM : ANVIL_OK;
+	c->g = g, c->dg = dg, c->ng = capn, c->gnf = 0; /* the old ones: frozen with their segment */
+	c->lev = L;
+	return impact_g_need(c, 2);
 }
 
 /* At the freeze of f (long mode): its charges and where the far field
@@ -171,9 +129,8 @@ static int far_setup(struct ctx *c, struct frozen *f, const double *tn, double d
 	if (!g || (dg && !(dg = realloc(f->dg, ng * sizeof *dg))))
 		return ANVIL_ENOMEM;
 	f->dg = dg;
-	int bad = level_fill(c, f->L, f->ng, ng, dp, f->g, f->dg);
-	f->ng = ng;
-	return bad ? ANVIL_ENUM : ANVIL_OK;
+	f->ng = ng; /* made as the targets reach them (hist_chunk) */
+	return ANVIL_OK;
 }
 
 int impact_grow_switch(struct ctx *c, struct pass *s, int L)
@@ -195,7 +152,7 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 	const double *x = s->P + c->seg0;
 	double Pn = s->P[ns];
 	c->fz[c->nfz++] = (struct frozen){ .x = x, .z = c->dg ? s->Q + c->seg0 : NULL, .S = S,
-					   .K = c->K0, .Kb = Ks, .ng = c->ng, .L = c->lev, .Ln = L,
+					   .K = c->K0, .Kb = Ks, .ng = c->ng, .nf = c->gnf, .L = c->lev, .Ln = L,
 					   .g = c->g, .dg = c->dg, .Pb = Pn,
 					   .Qb = c->dg ? s->Q[ns] : 0.0, .n0 = c->seg0,
 					   .t_far = INFINITY };
@@ -212,17 +169,16 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 	}
 	c->Ih += Pn * 0.5 * (dp + dn);
 	c->M1h += Pn * (s->t[ns] * 0.5 * (dp + dn) + (dn * dn - dp * dp) / 6.0);
-	int st = level_weights(c, L, capn, dn);
+	int st = level_weights(c, L, capn); /* c->lev = L from here */
 	if (st)
 		return st;
 	anvil_fastconv_free(c->fc);
-	c->fc = c->dg ? anvil_fastconv_alloc_pair(c->g, c->dg, capn, 0, c->fft)
-		      : anvil_fastconv_alloc_fft(c->g, capn, 0, c->fft);
+	c->fc = impact_fc_alloc(c, 0);
 	if (!c->fc)
 		return ANVIL_ENOMEM;
 	anvil_fastconv_push(c->fc, 0.0); /* node 0: in the frozen past */
 	impact_end_tab_free(c->tab);    /* a new step */
-	c->seg0 = ns, c->K0 = Ks, c->lev = L, c->segcap = capn;
+	c->seg0 = ns, c->K0 = Ks, c->segcap = capn;
 	c->hlo = c->hn = 0; /* the chunk was the old segment's */
 	c->T0 = (double)Ks * s->dt0;
 	s->t[ns] = c->T0;
@@ -279,12 +235,15 @@ static double dot_rev(const double *x, const double *g, size_t o, size_t S)
  * added to out[k]: directly, or by one FFT correlation over the dense
  * span of lags (GSL radix 2) when that is cheaper: a chunk of the
  * march's nodes costs O((S + q C) log) instead of O(S C). */
-static int frozen_chunk(struct ctx *c, const struct frozen *f, size_t o0, size_t q, size_t C,
+static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, size_t C,
 			double *out)
 {
 	size_t S = f->S;
 	if (S < 2)
 		return ANVIL_OK;
+	/* both ways read its weights up to the last target's lag */
+	if (impact_wts_fill(c, f->L, f->g, f->dg, &f->nf, o0 + q * (C - 1) + 1))
+		return ANVIL_ENUM;
 	size_t V = S - 1 + q * (C - 1), N = 64;
 	int lg = 6;
 	while (N < V)
@@ -345,7 +304,7 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 {
 	memset(out, 0, C * sizeof *out);
 	for (size_t j = 0; j < c->nfz; j++) {
-		const struct frozen *f = &c->fz[j];
+		struct frozen *f = &c->fz[j];
 		size_t u0 = c->K0 + (i0 << c->lev); /* the first target, in dt0 */
 		size_t q = (size_t)1 << (c->lev - f->L);
 		size_t mp = (size_t)1 << f->L, mn = (size_t)1 << f->Ln;
@@ -433,29 +392,16 @@ int impact_hist(struct ctx *c, size_t i, double *val)
 	return st;
 }
 
-/* The hat of widths lw, rw (in dt0) at node time K dt0, through ramp r, at
- * the target u dt0 + d: every lag a whole number of dt0 plus d, as the
- * weights' table has it (the node times' own rounding, the same for every
- * node, would bias the sum against the march's weights). */
-static int hat_at(const struct ctx *c, int r, size_t u, double d, size_t K, size_t lw, size_t rw,
-		  double *val)
+/* Ramp r at the target u dt0 + d less the node time K dt0: every lag a
+ * whole number of dt0 plus d, as the weights' table has it (the node
+ * times' own rounding, the same for every node, would bias the sum
+ * against the march's weights). */
+static int rlag(const struct ctx *c, int r, size_t u, double d, size_t K, double *val)
 {
 	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
 	void *fx = r ? c->rctx2 : c->rctx;
-	double l = (double)lw * c->dt0, rr = (double)rw * c->dt0, a, b, e;
-	int st = impact_ramp_of(c, fn, fx, (double)(u - K + lw) * c->dt0 + d, &a);
-	if (!st)
-		st = impact_ramp_of(c, fn, fx, (double)(u - K) * c->dt0 + d, &b);
-	if (!st)
-		st = u >= K + rw ? impact_ramp_of(c, fn, fx, (double)(u - K - rw) * c->dt0 + d, &e)
-				 : impact_ramp_of(c, fn, fx, d - (double)(K + rw - u) * c->dt0, &e);
-	*val = (a - b) / l - (b - e) / rr; /* slopes: no R-sized rounding (hist_chunk) */
-	if (r && !st) {
-		double h0;
-		st = hat_at(c, 0, u, d, K, lw, rw, &h0);
-		*val -= h0;
-	}
-	return st;
+	return impact_ramp_of(c, fn, fx, u >= K ? (double)(u - K) * c->dt0 + d
+						: d - (double)(K - u) * c->dt0, val);
 }
 
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val)
@@ -465,7 +411,10 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 	const double *tn = v->t - c->seg0, *P = v->P - c->seg0, *Q = v->Q - c->seg0;
 	size_t u = c->K0 + (k << c->lev), Kp = 0, Km = 0, Kn = 0, j = 0;
 	double w = 0, t = (double)u * c->dt0 + d;
-	int st = ANVIL_OK;
+	int st = ANVIL_OK, nr = c->dg ? 2 : 1, have = 0;
+	/* the ramps at the lags of nodes m - 1, m, m + 1 (ramp, ramp2): node
+	 * m + 1's hat reuses two of them (each value one call, not three) */
+	double R[2][3];
 	for (size_t f = 0; f < c->nfz; f++) /* long mode: the far ones' charges */
 		if (t >= c->fz[f].t_far)
 			w += impact_far_sum(c, &c->fz[f], t);
@@ -475,15 +424,28 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 		Kn = m < c->seg0 ? (size_t)llround(tn[m + 1] / c->dt0) : Km + ((size_t)1 << c->lev);
 		while (j < c->nfz && m > c->fz[j].n0 + c->fz[j].S)
 			j++;
-		if (j < c->nfz && t >= c->fz[j].t_far)
+		if (j < c->nfz && t >= c->fz[j].t_far) {
+			have = 0;
 			continue; /* in its segment's far field */
-		double h;
-		st = hat_at(c, 0, u, d, Km, Km - Kp, Kn - Km, &h);
-		w += P[m] * h;
-		if (c->dg && !st) {
-			st = hat_at(c, 1, u, d, Km, Km - Kp, Kn - Km, &h);
-			w += Q[m] * h;
 		}
+		for (int r = 0; r < nr && !st; r++) {
+			if (have) /* the last hat's middle and right */
+				R[r][0] = R[r][1], R[r][1] = R[r][2];
+			else if (!(st = rlag(c, r, u, d, Kp, &R[r][0])))
+				st = rlag(c, r, u, d, Km, &R[r][1]);
+			if (!st)
+				st = rlag(c, r, u, d, Kn, &R[r][2]);
+		}
+		have = !st;
+		if (st)
+			break;
+		/* slopes: no R-sized rounding (hist_chunk); the Q hat's through
+		 * ramp2 less the P hat's */
+		double l = (double)(Km - Kp) * c->dt0, rr = (double)(Kn - Km) * c->dt0;
+		double h = (R[0][0] - R[0][1]) / l - (R[0][1] - R[0][2]) / rr;
+		w += P[m] * h;
+		if (c->dg)
+			w += Q[m] * ((R[1][0] - R[1][1]) / l - (R[1][1] - R[1][2]) / rr - h);
 	}
 	*val = w;
 	return st;

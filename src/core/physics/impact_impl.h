@@ -4,6 +4,7 @@
 #define ANVIL_IMPACT_IMPL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_fft_real.h>
@@ -81,7 +82,7 @@ struct pass {
 
 struct frozen {
 	const double *x, *z;
-	size_t S, K, Kb, ng;
+	size_t S, K, Kb, ng, nf; /* nf: its weights made so far (impact_wts.c) */
 	int L, Ln;
 	double *g, *dg;
 	double Pb, Qb;
@@ -97,8 +98,8 @@ struct ctx {
 	anvil_ramp_fn ramp;
 	void *rctx;
 	double tau_avail;
-	double *g;      /* convolution weights g_j, j < ng */
-	size_t ng;
+	double *g;      /* convolution weights g_j, j < ng, made below gnf (impact_wts.c) */
+	size_t ng, gnf;
 	int physical;   /* the physical contact (opts), with beta */
 	double beta;
 	double g2;      /* the lag's next term (opts); 0: first order */
@@ -122,9 +123,10 @@ struct ctx {
 	size_t grow_after;   /* nodes before the step may grow; 0: never */
 	double grow_eta;     /* the smoothness asked of P (impact.h) */
 	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
-	double *R0, *R20;    /* ramp and ramp2 at j dt0, j < nR0 (weights'); beyond, by call */
+	struct rtab *rt;     /* ramp and ramp2 at j dt0 as made (impact_wts.c): j < nR0 in its table, beyond in its rows */
+	int rsh;             /* the pass's j is the table's j << rsh */
 	size_t nR;           /* the window's end, in dt0, plus one */
-	size_t nR0;          /* the table's length (nR but in long mode) */
+	size_t nR0;          /* the table's reach (nR but in long mode) */
 	int lng;             /* long mode (impact.h, t_smooth) */
 	double t_smooth;
 	size_t max_nodes;    /* long mode: the dt pass's nodes at most */
@@ -216,9 +218,44 @@ void impact_grow_free(struct ctx *c);
  * (0 <= d <= its step), by direct sums over its hats (off the grid: the
  * contact end); v the current segment's view. */
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val);
+/* impact_wts.c: the ramps at the grid's times and the weights from them,
+ * each made once, when first needed.
+ *
+ * The ramp responses at u dt0 of both passes of an impact, made when first
+ * asked for and kept: in the dt/2 pass's dt0, where the dt pass's u is 2u
+ * (the same double: (2u)(dt/2) and u dt are the one real product rounded,
+ * so the same call's same bits).  A bit per entry says it is made. */
+struct rtab {
+	double *R[2];   /* ramp, ramp2 (NULL without it) */
+	uint64_t *have[2];
+	size_t n;       /* entries, in the dt/2 pass's dt0 */
+	/* beyond: U = (2 i + 1) 2^z kept in row z at i (impact_wts.c) */
+	struct rtab_row {
+		double *v;
+		uint64_t *have;
+		size_t cap;
+	} row[2][64];
+};
+/* A table of n entries (ramp2: with its second row); ANVIL_OK or
+ * ANVIL_ENOMEM.  impact_rtab_free(NULL) is a no-op. */
+int impact_rtab_alloc(struct rtab *t, size_t n, int two);
+void impact_rtab_free(struct rtab *t);
 /* R_r(u dt0) (r = 1: ramp2 - ramp): the table's, or by call beyond it
  * (the same bits: the table is made by the same call); NaN on failure. */
 double impact_rtab(const struct ctx *c, int r, size_t u);
+/* Level L's weights g_j (and dg_j) for *nf <= j < need, from the ramps at
+ * j 2^L dt0 (as weights() makes level 0's); *nf = need.  ANVIL_ENUM when
+ * one is not finite (a ramp call failed), else ANVIL_OK. */
+int impact_wts_fill(const struct ctx *c, int L, double *g, double *dg, size_t *nf, size_t need);
+/* The current segment's weights made to min(need, ng) (c's table is a
+ * cache: c itself is never const).  ANVIL_OK or ANVIL_ENUM. */
+int impact_g_need(const struct ctx *c, size_t need);
+/* The current segment's weight j < ng, made alone when it is not yet (the
+ * same bits). */
+double impact_g_at(const struct ctx *c, size_t j);
+/* The online convolution of the current segment's weights (ng of them),
+ * made as it reaches them; NULL when out of memory. */
+struct anvil_fastconv *impact_fc_alloc(struct ctx *c, size_t direct_max);
 /* The largest segment a long mode's level >= 1 makes before it freezes
  * and goes on at the same level (its weights' count), in the dt pass's
  * nodes (the dt/2 pass: twice). */
