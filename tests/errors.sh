@@ -1,0 +1,48 @@
+#!/bin/sh
+# errors.sh: a hurried user's mistakes (qa7's break-it pass): each is
+# refused or said in one line naming what is wrong, exits non-zero, and
+# leaves nothing half-written; devices, links and FIFOs given as outputs
+# stay what they are.
+. "${top_srcdir:-.}/tests/setup.sh"
+
+M=-mhertz,zener
+K=$tmp/k
+mkdir "$K"
+no_tmp() { [ -z "$(find "$K" -name '*.tmp*' -o -name '.*.??????')" ]; }
+
+# ---- write failures are said, with the file and the reason ----
+# (qa7: a history larger than the stream's buffer failed inside the
+# writer, and run exited 1 without a word)
+if [ -c /dev/full ]; then
+	check_exit 1 'run --history /dev/full: exit 1' "$ANVIL" run $M --history /dev/full -o "$K/r.tsv"
+	assert '...saying which file and why' grep -q '^anvil: /dev/full: write failed: No space left' "$tmp/err"
+	assert '...and the results file is not left behind' [ ! -e "$K/r.tsv" ]
+	check_exit 1 'run -f json > /dev/full: exit 1' sh -c "\"\$ANVIL\" run $M -f json >/dev/full"
+	assert '...saying so' grep -q '^anvil: standard output: write failed: No space left' "$tmp/err"
+else
+	for t in 1 2 3 4 5; do skip "write failures ($t)" 'no /dev/full'; done
+fi
+
+# ---- plot's outputs: links followed, devices written into ----
+# (qa7: the script and the image were renamed onto the path given: a
+# link was replaced by a file, and as root --script /dev/full replaced
+# the device with a regular file)
+ln -s target.gp "$K/link.gp"
+check 'plot --script onto a link' "$ANVIL" plot force --script "$K/link.gp"
+assert '...the link is still a link' [ -L "$K/link.gp" ]
+assert '...and the file it names has the script' grep -q '^# anvil chart' "$K/target.gp"
+mkdir "$K/dir"
+check_exit 1 'plot --script a directory: exit 1' "$ANVIL" plot force --script "$K/dir"
+assert '...saying it is a directory' grep -q 'dir: is a directory' "$tmp/err"
+if [ "$(id -u)" = 0 ] && mknod "$K/full" c 1 7 2>/dev/null; then
+	check_exit 1 'plot --script into a full device: exit 1' "$ANVIL" plot force --script "$K/full"
+	assert '...saying why' grep -q 'full: write failed: No space left' "$tmp/err"
+	assert '...and the device is still a device' [ -c "$K/full" ]
+	check_exit 1 'map --script into it: exit 1' "$ANVIL" map --grid 4x4 --no-yield -q --script "$K/full" -o "$K/m.tsv"
+	assert '...the device is still a device' [ -c "$K/full" ]
+else
+	for t in 1 2 3 4 5; do skip "plot into a device ($t)" 'not root (mknod)'; done
+fi
+assert 'no temporary file is left' no_tmp
+
+done_testing
