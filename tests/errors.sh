@@ -43,6 +43,16 @@ if [ "$(id -u)" = 0 ] && mknod "$K/full" c 1 7 2>/dev/null; then
 else
 	for t in 1 2 3 4 5; do skip "plot into a device ($t)" 'not root (mknod)'; done
 fi
+
+# ---- a closed pipe ----
+# (qa7: SIGPIPE's default killed anvil with the results' temporary file
+# beside r.tsv; now the handler removes it, and the status is still 141)
+# (hertz, zener and the half-space: a history of 130 kB, beyond a pipe's 64 kB)
+sh -c "\"\$ANVIL\" run -q -m hertz,zener,halfspace --history - -o \"$K/r.tsv\"; echo \$? >\"$K/rc\"" |
+	head -c 1 >/dev/null
+assert 'run --history - | head: 141, as SIGPIPE' [ "$(cat "$K/rc")" = 141 ]
+assert '...and neither the results nor their temporary file are left' \
+	sh -c "[ ! -e '$K/r.tsv' ] && [ -z \"\$(find '$K' -name 'r.tsv.tmp*')\" ]"
 assert 'no temporary file is left' no_tmp
 
 done_testing

@@ -291,7 +291,9 @@ static void on_signal(int sig)
 
 void cli_signals_install(void)
 {
-	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+	/* SIGPIPE too: "anvil run --history - -o r.tsv | head -1" died of it
+	 * with r.tsv's temporary file left beside it (qa7); 141 either way */
+	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
 		struct sigaction sa, old;
 		if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
