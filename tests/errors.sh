@@ -19,8 +19,16 @@ if [ -c /dev/full ]; then
 	assert '...and the results file is not left behind' [ ! -e "$K/r.tsv" ]
 	check_exit 1 'run -f json > /dev/full: exit 1' sh -c "\"\$ANVIL\" run $M -f json >/dev/full"
 	assert '...saying so' grep -q '^anvil: standard output: write failed: No space left' "$tmp/err"
+	# (qa7: "table: input/output error", "field: ...", "sweep: write failed")
+	for c in "table -f json" "field --at 0,1mm --no-yield -q" "map --grid 30x30 --no-yield -q" \
+		"sweep impact.velocity=1..10m/s:40 -m hertz" "plot force --script -"; do
+		check_exit 1 "$c > /dev/full: exit 1" sh -c "\"\$ANVIL\" $c >/dev/full"
+		assert "...saying what and why" grep -q '^anvil: standard output: write failed: No space left' "$tmp/err"
+	done
+	check_exit 1 'sweep -o /dev/full: exit 1' "$ANVIL" sweep impact.velocity=1..10m/s:40 -m hertz -o /dev/full
+	assert '...naming the file' grep -q '^anvil: /dev/full: write failed: No space left' "$tmp/err"
 else
-	for t in 1 2 3 4 5; do skip "write failures ($t)" 'no /dev/full'; done
+	for t in $(seq 17); do skip "write failures ($t)" 'no /dev/full'; done
 fi
 
 # ---- plot's outputs: links followed, devices written into ----

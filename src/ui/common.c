@@ -41,6 +41,13 @@ const char *cli_model_reason(enum anvil_model m, const char *msg)
 	return strncmp(msg, name, n) == 0 && msg[n] == ':' && msg[n + 1] == ' ' ? msg + n + 2 : msg;
 }
 
+void cli_write_failed(const char *path)
+{
+	int e = errno, out = !path || !strcmp(path, "-");
+	if (!(out && e == EPIPE))
+		cli_error("%s: write failed: %s", out ? "standard output" : path, strerror(e));
+}
+
 int cli_exit_code(int status)
 {
 	if (status == ANVIL_OK)

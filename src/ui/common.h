@@ -23,6 +23,10 @@ void cli_init(void);
 /* "anvil: MESSAGE" on stderr (one line). */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* "anvil: PATH: write failed: REASON" (errno's), PATH "standard output"
+ * for NULL or "-", where a closed pipe stays quiet (as cli_out_commit). */
+void cli_write_failed(const char *path);
+
 /* Map a core status to an exit code: input errors -> 2, others -> 1. */
 /* A model's message without a leading "MODEL: " (the core's refusals
  * name the model; a row or a "MODEL: " prefix already does). */

@@ -410,8 +410,11 @@ static int sweep_go(struct sweep *sw, const struct sweep_opts *o)
 		}
 		return cst ? EXIT_FAIL : w.failed ? EXIT_FAIL : EXIT_OK;
 	}
+	if (st == ANVIL_EIO) /* qa7: was "sweep: write failed", no file, no reason */
+		cli_write_failed(o->out);
+	else
+		cli_error("sweep: %s", anvil_strerror(st));
 	cli_out_abort(&w.out);
-	cli_error("sweep: %s", st == ANVIL_EIO ? "write failed" : anvil_strerror(st));
 	return EXIT_FAIL;
 }
 
