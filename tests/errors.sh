@@ -61,6 +61,13 @@ sh -c "\"\$ANVIL\" run -q -m hertz,zener,halfspace --history - -o \"$K/r.tsv\"; 
 assert 'run --history - | head: 141, as SIGPIPE' [ "$(cat "$K/rc")" = 141 ]
 assert '...and neither the results nor their temporary file are left' \
 	sh -c "[ ! -e '$K/r.tsv' ] && [ -z \"\$(find '$K' -name 'r.tsv.tmp*')\" ]"
+
+# ---- an empty file name ----
+# (qa7: "anvil: : write failed: No such file or directory")
+for c in "run $M -o" "run $M --history" "plot force --script" "sweep impact.velocity=1m/s -m hertz -o"; do
+	check_exit 1 "$c '': exit 1" $ANVIL $c ''
+	assert '...saying the name is empty' grep -q '^anvil: an empty output file name' "$tmp/err"
+done
 assert 'no temporary file is left' no_tmp
 
 done_testing

@@ -412,6 +412,9 @@ int cli_out_open_err(struct cli_out *o, const char *path, struct anvil_err *err)
 		o->f = stdout;
 		return ANVIL_OK;
 	}
+	if (!path[0]) /* qa7: "anvil: : write failed: No such file or directory" */
+		return anvil_err_set(err, ANVIL_EIO,
+				     "an empty output file name: give a file, or - for standard output");
 	if (!(o->path = strdup(path)) || !(o->dest = resolve_links(path))) {
 		int nomem = errno == ENOMEM || !o->path;
 		int st = anvil_err_set(err, nomem ? ANVIL_ENOMEM : ANVIL_EIO, "%s: %s", path,
