@@ -68,6 +68,10 @@ for c in "run $M -o" "run $M --history" "plot force --script" "sweep impact.velo
 	check_exit 1 "$c '': exit 1" $ANVIL $c ''
 	assert '...saying the name is empty' grep -q '^anvil: an empty output file name' "$tmp/err"
 done
+
+# ---- a range typed as elsewhere ----
+check_exit 2 'sweep impact.velocity=1:1e6:1: exit 2' $ANVIL sweep impact.velocity=1:1e6:1
+assert '...saying what a range is' grep -q 'a range is A\.\.B\[UNIT\]:COUNT' "$tmp/err"
 assert 'no temporary file is left' no_tmp
 
 done_testing
