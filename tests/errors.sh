@@ -72,6 +72,16 @@ done
 # ---- a range typed as elsewhere ----
 check_exit 2 'sweep impact.velocity=1:1e6:1: exit 2' $ANVIL sweep impact.velocity=1:1e6:1
 assert '...saying what a range is' grep -q 'a range is A\.\.B\[UNIT\]:COUNT' "$tmp/err"
+
+# ---- fit: a measurement no run gives is refused before the search ----
+# (qa7: ts=-62us and Rf=1.5 searched the whole range to say no thickness
+# gives them; ts=62us+- said "ts=: expected a time ..., got ''")
+for m in ts=-62us ts=0us Pmax=0kN Rf=1.5 Rf=-0.1; do
+	check_exit 2 "fit $m: exit 2" $ANVIL fit "$m"
+	assert '...saying why, naming it' grep -q "'$m': \(must be > 0\|a restitution lies in 0 .. 1\)" "$tmp/err"
+done
+check_exit 2 'fit ts=62us+-: exit 2' $ANVIL fit 'ts=62us+-'
+assert '...nothing after +-' grep -q 'nothing after +-' "$tmp/err"
 assert 'no temporary file is left' no_tmp
 
 done_testing
