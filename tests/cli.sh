@@ -470,4 +470,11 @@ check 'h = 10 mm on r0 = 3 mm' "$ANVIL" run -m zener -s layer.thickness=10mm -s 
 assert '...every h/r0 of the output and the warnings in four digits' \
 	sh -c '[ -z "$(cat "$1" "$2" | grep -o "h/r0 = [0-9.]*" | grep -v "h/r0 = 3\.333\$")" ] && grep -q "h/r0 = 3\.333 is thick" "$1"' _ "$tmp/out" "$tmp/err"
 
+# ---- what -q keeps (man: run -q) ----
+check 'run -q: the default scene' "$ANVIL" run -q -m layer
+assert '...says nothing on stderr (no verdict, plan warning or note)' [ ! -s "$tmp/err" ]
+check 'run -q on a 1 nm layer' "$ANVIL" run -q -m zener -s layer.thickness=1e-9m
+assert '...still warns on the value (not chatter)' grep -q 'layer.thickness: 0.001 um is below 1 um' "$tmp/err"
+assert '...and says nothing else' [ "$(wc -l <"$tmp/err")" -eq 1 ]
+
 done_testing

@@ -38,7 +38,8 @@ static void run_usage(FILE *f)
 	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
 	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
 	      "  -v, --verbose        print the resolved scene, the plan and timings on stderr\n"
-	      "  -q, --quiet          no progress or informational messages\n",
+	      "  -q, --quiet          no progress, plan warnings, verdict or notes (errors\n"
+	      "                       and warnings on values and accuracy still print)\n",
 	      f);
 }
 
