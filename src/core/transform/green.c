@@ -451,9 +451,10 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
 
 /* The samples are uniform (tau_j = j dtau): the interval is known without
  * GSL's bisection (a third of a warm run's time went there).  Handed to
- * gsl_interp_eval as a local accelerator whose cache is that interval, so
- * the lookup is a hit and the value the same bits; a local one, because a
- * response is shared read-only between threads. */
+ * gsl_interp_eval_deriv as a local accelerator whose cache is that
+ * interval, so the lookup is a hit and the value the same bits (and the
+ * ramp's own lookup starts there); a local one, because a response is
+ * shared read-only between threads. */
 static gsl_interp_accel uniform_hint(const struct anvil_green *g, double tau)
 {
 	gsl_interp_accel acc = {0};
