@@ -464,4 +464,17 @@ assert '...its row: t_s 1.861e+16 us, t_max 8.917e-07 us' \
 	awk '$1 == "zener" { t = $3; m = $5 } END { exit !(t ~ /^1\.86[0-9]e\+16$/ && m ~ /e-07$/) }' "$tmp/out"
 assert '...its note says it is the limit' grep -q '^zener: dashpot limit (lambda\* = 1.01e+13)' "$tmp/out"
 
+# ---- one precision for one quantity in a scene's notes ----
+# (qa7: h/r0 3.333 in the warning and the title, 3.33333 in zener's note)
+check 'h = 10 mm on r0 = 3 mm' "$ANVIL" run -m zener -s layer.thickness=10mm -s impactor.radius=3mm
+assert '...every h/r0 of the output and the warnings in four digits' \
+	sh -c '[ -z "$(cat "$1" "$2" | grep -o "h/r0 = [0-9.]*" | grep -v "h/r0 = 3\.333\$")" ] && grep -q "h/r0 = 3\.333 is thick" "$1"' _ "$tmp/out" "$tmp/err"
+
+# ---- what -q keeps (man: run -q) ----
+check 'run -q: the default scene' "$ANVIL" run -q -m layer
+assert '...says nothing on stderr (no verdict, plan warning or note)' [ ! -s "$tmp/err" ]
+check 'run -q on a 1 nm layer' "$ANVIL" run -q -m zener -s layer.thickness=1e-9m
+assert '...still warns on the value (not chatter)' grep -q 'layer.thickness: 0.001 um is below 1 um' "$tmp/err"
+assert '...and says nothing else' [ "$(wc -l <"$tmp/err")" -eq 1 ]
+
 done_testing

@@ -41,6 +41,13 @@ const char *cli_model_reason(enum anvil_model m, const char *msg)
 	return strncmp(msg, name, n) == 0 && msg[n] == ':' && msg[n + 1] == ' ' ? msg + n + 2 : msg;
 }
 
+void cli_write_failed(const char *path)
+{
+	int e = errno, out = !path || !strcmp(path, "-");
+	if (!(out && e == EPIPE))
+		cli_error("%s: write failed: %s", out ? "standard output" : path, strerror(e));
+}
+
 int cli_exit_code(int status)
 {
 	if (status == ANVIL_OK)
@@ -291,7 +298,9 @@ static void on_signal(int sig)
 
 void cli_signals_install(void)
 {
-	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+	/* SIGPIPE too: "anvil run --history - -o r.tsv | head -1" died of it
+	 * with r.tsv's temporary file left beside it (qa7); 141 either way */
+	static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 	for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
 		struct sigaction sa, old;
 		if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
@@ -403,6 +412,9 @@ int cli_out_open_err(struct cli_out *o, const char *path, struct anvil_err *err)
 		o->f = stdout;
 		return ANVIL_OK;
 	}
+	if (!path[0]) /* qa7: "anvil: : write failed: No such file or directory" */
+		return anvil_err_set(err, ANVIL_EIO,
+				     "an empty output file name: give a file, or - for standard output");
 	if (!(o->path = strdup(path)) || !(o->dest = resolve_links(path))) {
 		int nomem = errno == ENOMEM || !o->path;
 		int st = anvil_err_set(err, nomem ? ANVIL_ENOMEM : ANVIL_EIO, "%s: %s", path,

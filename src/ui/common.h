@@ -23,6 +23,10 @@ void cli_init(void);
 /* "anvil: MESSAGE" on stderr (one line). */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* "anvil: PATH: write failed: REASON" (errno's), PATH "standard output"
+ * for NULL or "-", where a closed pipe stays quiet (as cli_out_commit). */
+void cli_write_failed(const char *path);
+
 /* Map a core status to an exit code: input errors -> 2, others -> 1. */
 /* A model's message without a leading "MODEL: " (the core's refusals
  * name the model; a row or a "MODEL: " prefix already does). */
@@ -76,8 +80,8 @@ void cli_sets_free(struct cli_sets *s);
  *   a device, FIFO, socket   written through directly (not replaced);
  *   a directory              refused.
  * Temporary files are registered with the signal handler of
- * cli_signals_install, which removes them when SIGINT/SIGTERM/SIGHUP end
- * anvil. */
+ * cli_signals_install, which removes them when SIGINT/SIGTERM/SIGHUP (or
+ * SIGPIPE, a closed pipe) end anvil. */
 struct cli_out {
 	FILE *f;
 	char *path;  /* the name given, for messages; NULL for stdout */
@@ -101,7 +105,7 @@ int cli_out_commit_err(struct cli_out *o, struct anvil_err *err);
 void cli_out_abort(struct cli_out *o);
 
 /* Signals: one SIGINT, SIGTERM or SIGHUP ends anvil at once with status
- * 128 + signal, after removing the registered temporary output files and
+ * 128 + signal (SIGPIPE too, as its default would, quietly: 141), after removing the registered temporary output files and
  * terminating the registered child processes (gnuplot).  The handler is
  * async-signal-safe (unlink, kill, _exit).  Signals ignored at start
  * (nohup) stay ignored.  Installed by main for every command but the TUI,

@@ -162,7 +162,9 @@ static int axis_check(struct sweep_axis *a, const struct anvil_scene *base, cons
 		struct anvil_scene sc = *base;
 		struct anvil_err e = {0};
 		if (anvil_scene_set(&sc, a->key, a->val[i], "command line", 0, &e))
-			return anvil_err_set(err, ANVIL_EPARSE, "%s: %s", arg, e.msg);
+			/* "1:1e6:1" (MATLAB's, Python's slices): a range meant */
+			return anvil_err_set(err, ANVIL_EPARSE, "%s: %s%s", arg, e.msg,
+					     strchr(a->val[i], ':') ? "; a range is A..B[UNIT]:COUNT[:lin|log], e.g. 1..10m/s:10" : "");
 	}
 	return ANVIL_OK;
 }

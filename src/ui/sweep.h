@@ -106,7 +106,10 @@ struct sweep_done {
  * from the calling thread, in scene order, for every scene run; a
  * non-zero return stops the sweep.  tick (may be NULL) is called from the
  * calling thread about five times a second with the scenes done.  *stop
- * non-zero (a signal) cancels the runs under way and stops.  Returns
+ * non-zero (a signal) stops at once: the scenes done are emitted, and
+ * ANVIL_ECANCEL returns without waiting for the runs under way, whose
+ * threads are left to end with the process: the caller must exit soon
+ * (and not free sw, nor skip, before; they no longer read them).  Returns
  * ANVIL_OK, ANVIL_ECANCEL (stopped), ANVIL_ENOMEM, or emit's status.
  * st->layer_computed sums what the solvers computed. */
 struct sweep_stats {

@@ -306,6 +306,7 @@ static int pool_drain(struct pool *p, sweep_emit_fn emit, sweep_tick_fn tick, vo
 {
 	size_t next = 0, n = p->s1 - p->s0;
 	int st = ANVIL_OK;
+	double ticked = 0;
 	pthread_mutex_lock(&p->mu);
 	while (next < n) {
 		if (p->skip && p->skip[next]) {
@@ -314,15 +315,20 @@ static int pool_drain(struct pool *p, sweep_emit_fn emit, sweep_tick_fn tick, vo
 		}
 		struct sweep_done *d = p->slot[next];
 		if (!d) {
-			if (p->live == 0)
-				break; /* stopped: nothing more will come */
+			/* stopped: nothing more will come, or a signal, which wakes
+			 * no condition: looked at every 20 ms (the runs under way
+			 * are not waited for: sweep_run) */
+			if (p->live == 0 || (p->stop && *p->stop))
+				break;
 			struct timespec ts;
-			deadline(&ts, 0.2);
+			deadline(&ts, 0.02);
 			pthread_cond_timedwait(&p->cv, &p->mu, &ts);
 			size_t done = p->done;
 			pthread_mutex_unlock(&p->mu);
-			if (tick)
+			if (tick && cli_now() - ticked >= 0.2) {
+				ticked = cli_now();
 				tick(ctx, done);
+			}
 			pthread_mutex_lock(&p->mu);
 			continue;
 		}
@@ -365,18 +371,25 @@ int sweep_run(const struct sweep *sw, size_t s0, size_t s1, const unsigned char 
 	      int nthreads, sweep_emit_fn emit, sweep_tick_fn tick, void *ctx,
 	      volatile sig_atomic_t *stop, struct sweep_stats *stats)
 {
-	struct pool p = {.sw = sw, .s0 = s0, .s1 = s1, .skip = skip, .stop = stop};
+	/* on the heap: stopped by a signal, the threads still running hold it
+	 * after the return (below) */
+	struct pool *pp = calloc(1, sizeof *pp);
 	pthread_t tid[256];
 	sigset_t all, old;
 	int st;
-	pthread_mutex_init(&p.mu, NULL);
-	pthread_cond_init(&p.cv, NULL);
-	if ((st = pool_units(&p)) || (st = pool_shares(&p))) {
-		pool_free(&p);
+	if (!pp)
+		return ANVIL_ENOMEM;
+	struct pool *p = pp;
+	*p = (struct pool){.sw = sw, .s0 = s0, .s1 = s1, .skip = skip, .stop = stop};
+	pthread_mutex_init(&p->mu, NULL);
+	pthread_cond_init(&p->cv, NULL);
+	if ((st = pool_units(p)) || (st = pool_shares(p))) {
+		pool_free(p);
+		free(p);
 		return st;
 	}
-	if (nthreads > (int)p.nunit)
-		nthreads = (int)p.nunit;
+	if (nthreads > (int)p->nunit)
+		nthreads = (int)p->nunit;
 	if (nthreads > 256)
 		nthreads = 256;
 	/* signals go to the calling thread, which sets *stop */
@@ -384,23 +397,37 @@ int sweep_run(const struct sweep *sw, size_t s0, size_t s1, const unsigned char 
 	pthread_sigmask(SIG_BLOCK, &all, &old);
 	int started = 0;
 	for (; started < nthreads; started++) {
-		pthread_mutex_lock(&p.mu);
-		p.live++;
-		pthread_mutex_unlock(&p.mu);
-		if (pthread_create(&tid[started], NULL, worker, &p) != 0) {
-			p.live--;
+		pthread_mutex_lock(&p->mu);
+		p->live++;
+		pthread_mutex_unlock(&p->mu);
+		if (pthread_create(&tid[started], NULL, worker, p) != 0) {
+			p->live--;
 			break;
 		}
 	}
 	pthread_sigmask(SIG_SETMASK, &old, NULL);
-	st = started || !nthreads ? pool_drain(&p, emit, tick, ctx) : ANVIL_ENOMEM;
-	pthread_mutex_lock(&p.mu);
-	p.halt = 1;
-	pthread_mutex_unlock(&p.mu);
+	st = started || !nthreads ? pool_drain(p, emit, tick, ctx) : ANVIL_ENOMEM;
+	pthread_mutex_lock(&p->mu);
+	p->halt = 1;
+	/* Stopped by a signal with runs under way: they would end first (an
+	 * impact's march has no point to cancel at: a slow scene kept a Ctrl-C
+	 * waiting for seconds, qa7), and their scenes are no result
+	 * (cut_short).  Left to end with the process, which the caller ends
+	 * now; p stays theirs. */
+	int orphan = st == ANVIL_ECANCEL && p->live > 0;
+	if (stats)
+		*stats = p->stats;
+	pthread_mutex_unlock(&p->mu);
+	if (orphan) {
+		for (int i = 0; i < started; i++)
+			pthread_detach(tid[i]);
+		return st;
+	}
 	for (int i = 0; i < started; i++)
 		pthread_join(tid[i], NULL);
 	if (stats)
-		*stats = p.stats;
-	pool_free(&p);
+		*stats = p->stats;
+	pool_free(p);
+	free(p);
 	return st;
 }

@@ -376,7 +376,7 @@ static void zener_note(const struct anvil_params *p, struct anvil_result *r)
 			 "half-space: no plate term, the Hertz solution");
 	else if (p->h > p->r0)
 		snprintf(r->note, sizeof r->note,
-			 "thin-plate theory; h/r0 = %g is thick for it", p->h / p->r0);
+			 "thin-plate theory; h/r0 = %.4g is thick for it", p->h / p->r0);
 	else
 		r->note[0] = '\0';
 }

@@ -39,6 +39,7 @@ struct anvil_green {
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
 	gsl_interp *interp;   /* cubic spline through the ramp samples */
+	double *coef;         /* per interval: its y, b, c, d (green_spline), owned */
 	int tailed;           /* 1: beyond tail.t1 the plate's closed form (plate.h) */
 	struct anvil_plate_tail tail; /* its arrays owned */
 	double abserr;        /* over [0, T1] when tailed (tail.v included) */
@@ -63,9 +64,62 @@ void anvil_green_free(struct anvil_green *g)
 	if (!g)
 		return;
 	gsl_interp_free(g->interp);
+	free(g->coef);
 	anvil_plate_tail_free(&g->tail);
 	free(g->tau);
 	free(g);
+}
+
+/* c_i = y''(tau_i) / 2 of GSL's spline at node i < n - 1 (cspline_eval_deriv2
+ * at its interval's start: 2 c_i + 6 d_i 0, exact). */
+static int spline_c(const struct anvil_green *g, size_t i, double *c)
+{
+	gsl_interp_accel acc = { .cache = i };
+	double ypp;
+	int st = gsl_interp_eval_deriv2_e(g->interp, g->tau, g->ramp, g->tau[i], &acc, &ypp);
+	*c = 0.5 * ypp;
+	return st;
+}
+
+/* GSL's natural cubic spline through the samples, and each interval's
+ * polynomial y + x (b + x (c + x d)) as GSL's cspline_eval forms it
+ * (coeff_calc), kept: GSL forms the interval's coefficients, three
+ * divisions, on every call, and the exact end of a contact evaluates the
+ * ramp ~10^4 times per impact (tests/test_green.c: the same bits as
+ * gsl_interp_eval).  The c_i are GSL's own: its cspline state's first
+ * member (GSL 1.x-2.x), checked at three nodes against y''/2 (spline_c),
+ * or else asked node by node (slower: a response read from disk takes
+ * 1.7 times as long).  ANVIL_ENOMEM, ANVIL_ENUM. */
+static int green_spline(struct anvil_green *g)
+{
+	size_t n = g->n;
+	g->interp = gsl_interp_alloc(gsl_interp_cspline, n);
+	g->coef = malloc(4 * (n - 1) * sizeof *g->coef);
+	if (!g->interp || !g->coef)
+		return ANVIL_ENOMEM;
+	if (gsl_interp_init(g->interp, g->tau, g->ramp, n))
+		return ANVIL_ENUM;
+	const double *c = g->interp->state ? *(double *const *)g->interp->state : NULL;
+	size_t probe[3] = { 0, n / 2, n - 2 };
+	for (int k = 0; k < 3 && c; k++) {
+		double ck;
+		if (spline_c(g, probe[k], &ck) || memcmp(&ck, &c[probe[k]], sizeof ck) != 0)
+			c = NULL;
+	}
+	double c_i = 0.0; /* natural: 0 at both ends */
+	for (size_t i = 0; i + 1 < n; i++) {
+		double c_ip1 = 0.0;
+		if (i + 2 < n && (c ? (c_ip1 = c[i + 1], 0) : spline_c(g, i + 1, &c_ip1)))
+			return ANVIL_ENUM;
+		double dx = g->tau[i + 1] - g->tau[i], dy = g->ramp[i + 1] - g->ramp[i];
+		double *cf = g->coef + 4 * i;
+		cf[0] = g->ramp[i];
+		cf[1] = (dy / dx) - dx * (c_ip1 + 2.0 * c_i) / 3.0;
+		cf[2] = c_i;
+		cf[3] = (c_ip1 - c_i) / (3.0 * dx);
+		c_i = c_ip1;
+	}
+	return ANVIL_OK;
 }
 
 /* The response g from the first dl->M + 1 terms of the spectrum (the main
@@ -114,10 +168,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.v : 0.0);
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau;
-	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
-	if (!g->interp)
-		return ANVIL_ENOMEM;
-	return gsl_interp_init(g->interp, g->tau, g->ramp, g->n) ? ANVIL_ENUM : ANVIL_OK;
+	return green_spline(g);
 }
 
 /* The band's edge.  The series cut at term M is the response convolved
@@ -400,9 +451,10 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
 
 /* The samples are uniform (tau_j = j dtau): the interval is known without
  * GSL's bisection (a third of a warm run's time went there).  Handed to
- * gsl_interp_eval as a local accelerator whose cache is that interval, so
- * the lookup is a hit and the value the same bits; a local one, because a
- * response is shared read-only between threads. */
+ * gsl_interp_eval_deriv as a local accelerator whose cache is that
+ * interval, so the lookup is a hit and the value the same bits (and the
+ * ramp's own lookup starts there); a local one, because a response is
+ * shared read-only between threads. */
 static gsl_interp_accel uniform_hint(const struct anvil_green *g, double tau)
 {
 	gsl_interp_accel acc = {0};
@@ -425,8 +477,20 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
 		*val = anvil_plate_tail_ramp(&g->tail, tau);
 		return ANVIL_OK;
 	}
-	gsl_interp_accel acc = uniform_hint(g, tau);
-	*val = gsl_interp_eval(g->interp, g->tau, g->ramp, tau, &acc);
+	if (!(tau <= g->tau[g->n - 1])) { /* gsl_interp_eval's domain */
+		*val = NAN;
+		return ANVIL_OK;
+	}
+	/* the interval gsl_interp_accel_find settles from the hint: the one
+	 * with tau_i <= tau < tau_i+1, the last for the last node */
+	size_t i = uniform_hint(g, tau).cache, last = g->n - 2;
+	while (i > 0 && tau < g->tau[i])
+		i--;
+	while (i < last && tau >= g->tau[i + 1])
+		i++;
+	const double *cf = g->coef + 4 * i;
+	double delx = tau - g->tau[i];
+	*val = cf[0] + delx * (cf[1] + delx * (cf[2] + delx * cf[3]));
 	return ANVIL_OK;
 }
 
@@ -617,10 +681,9 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau; /* as green_compute: the same bits */
 	memcpy(g->ramp, s->ramp, g->n * sizeof *g->ramp);
-	g->interp = gsl_interp_alloc(gsl_interp_cspline, g->n);
-	if (!g->interp || gsl_interp_init(g->interp, g->tau, g->ramp, g->n)) {
-		anvil_err_set(err, g->interp ? ANVIL_ENUM : ANVIL_ENOMEM,
-			      "layer response: cannot rebuild the interpolant");
+	int sst = green_spline(g);
+	if (sst) {
+		anvil_err_set(err, sst, "layer response: cannot rebuild the interpolant");
 		anvil_green_free(g);
 		return NULL;
 	}

@@ -237,7 +237,7 @@ static int write_grid(FILE *f, enum out_format fmt, const char *preamble,
 static int finish_out(struct cli_out *o)
 {
 	if (fflush(o->f) != 0 || ferror(o->f)) {
-		cli_error("%s: write failed", o->path ? o->path : "standard output");
+		cli_write_failed(o->path);
 		cli_out_abort(o);
 		return EXIT_FAIL;
 	}
@@ -501,7 +501,10 @@ static int emit(struct cli_out *o, const struct fargs *a, struct out_grid *g, ch
 	out_grid_free(g);
 	free(pre);
 	if (st) {
-		cli_error("%s: %s", a->cmd, anvil_strerror(st));
+		if (st == ANVIL_EIO) /* qa7: was "field: input/output error" */
+			cli_write_failed(o->path);
+		else
+			cli_error("%s: %s", a->cmd, anvil_strerror(st));
 		cli_out_abort(o);
 		return EXIT_FAIL;
 	}

@@ -373,6 +373,8 @@ static int fit_target(struct fit *f, const char *arg)
 	int wide = 0;
 	if ((pm = strstr(buf, "+-")) || (pm = strstr(buf, "\xc2\xb1")))
 		wide = 2; /* "+-" and UTF-8 "±" are both two bytes */
+	if (pm && !pm[wide]) /* qa7: "ts=: expected a time ..., got ''" */
+		return out_usage("fit", "'%s': nothing after +-: give the uncertainty, e.g. ts=62us+-1us", arg);
 	if (pm)
 		*pm = '\0';
 	if (answer_parse(f->q, buf, &f->target, &err) ||
@@ -382,6 +384,10 @@ static int fit_target(struct fit *f, const char *arg)
 	}
 	if (f->terr < 0 || !isfinite(f->target))
 		return out_usage("fit", "'%s': the uncertainty must be positive", arg);
+	/* no run gives these (qa7: searched the whole range to say so) */
+	if (f->q == ANSWER_RF ? !(f->target >= 0 && f->target <= 1) : !(f->target > 0))
+		return out_usage("fit", "'%s': %s", arg,
+				 f->q == ANSWER_RF ? "a restitution lies in 0 .. 1" : "must be > 0");
 	return -1;
 }
 

@@ -38,7 +38,8 @@ static void run_usage(FILE *f)
 	      "      --png DIR        write force, velocity and deflection charts into DIR\n"
 	      "  -m, --models LIST    models to run, e.g. hertz,zener (as -s solver.models=)\n"
 	      "  -v, --verbose        print the resolved scene, the plan and timings on stderr\n"
-	      "  -q, --quiet          no progress or informational messages\n",
+	      "  -q, --quiet          no progress, plan warnings, verdict or notes (errors\n"
+	      "                       and warnings on values and accuracy still print)\n",
 	      f);
 }
 
@@ -215,11 +216,14 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 }
 
 /* Fill an open output and push it to the disk without committing it, so
- * that a full disk shows up before any file is put in place. */
+ * that a full disk shows up before any file is put in place; a write that
+ * failed while filling (st, ANVIL_EIO: output larger than the stream's
+ * buffer) is said too (qa7: --history /dev/full exited 1 without a word). */
 static int run_fill(struct cli_out *o, const char *path, int st)
 {
-	if (!st && (fflush(o->f) != 0 || ferror(o->f))) {
-		cli_error("%s: write failed: %s", path, strerror(errno));
+	if (st == ANVIL_EIO || (!st && (fflush(o->f) != 0 || ferror(o->f)))) {
+		cli_error("%s: write failed: %s", path && strcmp(path, "-") ? path : "standard output",
+			  strerror(errno));
 		st = ANVIL_EIO;
 	}
 	return st;
@@ -242,6 +246,8 @@ static int run_write(const struct anvil_scene *sc, const struct run_opts *o,
 		st = cli_out_commit(hist);
 	if (!st && !to_file && sc->output.table)
 		st = out_results(out->f, fmt, sc, res, n);
+	if (st == ANVIL_EIO && !to_file && errno != EPIPE) /* as cli_out_commit */
+		cli_error("standard output: write failed: %s", strerror(errno));
 	if (!st)
 		st = cli_out_commit(out);
 	if (st) {

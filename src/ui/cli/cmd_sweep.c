@@ -193,6 +193,7 @@ struct writer {
 	size_t failed, warned;
 	double start;
 	int shown;
+	int werrno; /* errno of the write that failed (said after the runs) */
 };
 
 static int put_line(struct writer *w, const char *s)
@@ -203,7 +204,10 @@ static int put_line(struct writer *w, const char *s)
 	if (w->o->format != OUT_JSON)
 		fputc('\n', w->out.f);
 	w->rows++;
-	return ferror(w->out.f) ? ANVIL_EIO : ANVIL_OK;
+	if (!ferror(w->out.f))
+		return ANVIL_OK;
+	w->werrno = errno;
+	return ANVIL_EIO;
 }
 
 static int emit_row(struct writer *w, size_t row, const struct anvil_scene *sc, const struct sweep_rowkey *k,
@@ -234,8 +238,10 @@ static int emit(void *ctx, const struct sweep_done *d)
 		st = d->st || i >= d->n ? emit_row(w, row++, &sc, &k[i], NULL, d->st, d->why)
 					: emit_row(w, row++, &sc, &k[i], &d->r[i], 0, NULL);
 	/* on disk as it completes: an interruption keeps it */
-	if (!st && fflush(w->out.f) != 0)
+	if (!st && fflush(w->out.f) != 0) {
+		w->werrno = errno;
 		st = ANVIL_EIO;
+	}
 	w->scenes++;
 	return st;
 }
@@ -410,8 +416,13 @@ static int sweep_go(struct sweep *sw, const struct sweep_opts *o)
 		}
 		return cst ? EXIT_FAIL : w.failed ? EXIT_FAIL : EXIT_OK;
 	}
+	if (st == ANVIL_EIO) { /* qa7: was "sweep: write failed", no file, no reason */
+		errno = w.werrno ? w.werrno : errno;
+		cli_write_failed(o->out);
+	}
+	else
+		cli_error("sweep: %s", anvil_strerror(st));
 	cli_out_abort(&w.out);
-	cli_error("sweep: %s", st == ANVIL_EIO ? "write failed" : anvil_strerror(st));
 	return EXIT_FAIL;
 }
 

@@ -251,7 +251,7 @@ static int table_print(const struct table_cell *cells, double V0, enum out_forma
 		st = out_grid_print(g, fmt, f);
 		out_grid_free(g);
 	}
-	if (st)
+	if (st && st != ANVIL_EIO) /* a write: said with its file (anvil_cmd_table) */
 		cli_error("table: %s", anvil_strerror(st));
 	return st;
 }
@@ -290,7 +290,7 @@ static int table_all(struct anvil_solver *s, const struct anvil_scene *sc,
 		if (!o->v0 || i == 0)
 			st = table_one(s, *sc, o->v0 ? o->v0 : both[i], fmt, i == 0, &all, f,
 				       why, whylen);
-	if (!st && all && (st = out_grid_print(all, fmt, f)))
+	if (!st && all && (st = out_grid_print(all, fmt, f)) && st != ANVIL_EIO)
 		cli_error("table: %s", anvil_strerror(st));
 	out_grid_free(all);
 	if (!st && fmt == OUT_TABLE)
@@ -321,6 +321,8 @@ int anvil_cmd_table(int argc, char **argv)
 		goto done;
 	}
 	st = table_all(s, &sc, &o, out.f, why, sizeof why);
+	if (st == ANVIL_EIO) /* qa7: was "table: input/output error" */
+		cli_write_failed(o.out);
 	if (!st)
 		st = cli_out_commit(&out);
 done:

@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "common.h"
 #include "plot.h"
 
 #ifndef ANVIL_GNUPLOT
@@ -229,9 +230,10 @@ static int signature_ok(int fd, enum plot_format fmt)
 	return pread(fd, buf, n, 0) == (ssize_t)n && memcmp(buf, s, n) == 0;
 }
 
-/* Run gnuplot to completion: 0 when it exited 0 having written an image. */
+/* Run gnuplot to completion: 0 when it exited 0 having written an image
+ * (its signature checked when out_fd can be read back: readable). */
 static int gp_run(struct gp_proc *g, const char *script, size_t len, int out_fd,
-		  enum plot_format fmt)
+		  enum plot_format fmt, int readable)
 {
 	struct sigaction ign = {.sa_handler = SIG_IGN}, old;
 	/* A gnuplot that dies early must not take anvil down with SIGPIPE. */
@@ -253,7 +255,7 @@ static int gp_run(struct gp_proc *g, const char *script, size_t len, int out_fd,
 	}
 	sigaction(SIGPIPE, &old, NULL);
 	return g->cancelled || g->exec_errno || !WIFEXITED(g->status) ||
-	       WEXITSTATUS(g->status) != 0 || !signature_ok(out_fd, fmt);
+	       WEXITSTATUS(g->status) != 0 || (readable && !signature_ok(out_fd, fmt));
 }
 
 /* gnuplot's words on one line: blank lines and the caret line under the
@@ -299,91 +301,47 @@ static int gp_error(const struct gp_proc *g, const char *path, struct anvil_err 
 
 /* ------------------------------------------------- atomic output files */
 
-/* A temporary file beside path, to be renamed onto it. */
-struct tmp_file {
-	int fd;
-	char name[PATH_MAX];
-};
-
-static int tmp_open(struct tmp_file *t, const char *path, struct anvil_err *err)
-{
-	const char *slash = strrchr(path, '/');
-	int dirlen = slash ? (int)(slash - path + 1) : 0;
-	if (snprintf(t->name, sizeof t->name, "%.*s.%s.XXXXXX", dirlen, path,
-		     slash ? slash + 1 : path) >= (int)sizeof t->name)
-		return anvil_err_set(err, ANVIL_EIO, "%s: file name too long", path);
-	if ((t->fd = mkstemp(t->name)) < 0)
-		return anvil_err_set(err, ANVIL_EIO, "%s: %s", path, strerror(errno));
-	/* mkstemp's 0600 would make charts private; the usual mode instead. */
-	mode_t mask = umask(0);
-	umask(mask);
-	fchmod(t->fd, 0666 & ~mask);
-	return ANVIL_OK;
-}
-
-static void tmp_abort(struct tmp_file *t)
-{
-	if (t->fd >= 0) {
-		close(t->fd);
-		unlink(t->name);
-	}
-	t->fd = -1;
-}
-
-static int tmp_commit(struct tmp_file *t, const char *path, struct anvil_err *err)
-{
-	int e = close(t->fd) < 0 ? errno : 0;
-	t->fd = -1;
-	if (!e && rename(t->name, path) < 0)
-		e = errno;
-	if (e) {
-		unlink(t->name);
-		return anvil_err_set(err, ANVIL_EIO, "%s: %s", path, strerror(e));
-	}
-	return ANVIL_OK;
-}
+/* The image and the script go through common.h's outputs, as every other
+ * file anvil writes: links followed to the file they name, a device or
+ * FIFO written straight into (qa7: a temporary file renamed onto
+ * "--script /dev/full" replaced the device with a regular file, as root),
+ * a directory refused, a regular file replaced at once by a temporary
+ * one beside it, which a signal removes. */
 
 int plot_render(const char *script, size_t len, const char *path,
 		const struct plot_opts *o, struct anvil_err *err)
 {
-	struct tmp_file t;
+	struct cli_out out;
 	struct gp_proc g = {.cancel = o ? o->cancel : NULL};
 	enum plot_format fmt = o ? o->format : PLOT_PNG;
 	if (!path || !path[0] || strcmp(path, "-") == 0)
 		return anvil_err_set(err, ANVIL_EINVAL,
 				     "an image needs a file name, not standard output");
-	int st = tmp_open(&t, path, err);
+	int st = cli_out_open_err(&out, path, err);
 	if (st)
 		return st;
-	if (gp_run(&g, script, len, t.fd, fmt)) {
-		tmp_abort(&t);
+	/* a device or FIFO cannot be read back: gnuplot's exit status alone */
+	if (gp_run(&g, script, len, fileno(out.f), fmt, !out.direct)) {
+		cli_out_abort(&out);
 		return gp_error(&g, path, err);
 	}
-	return tmp_commit(&t, path, err);
+	return cli_out_commit_err(&out, err);
 }
 
 static int write_script_file(const char *path, const char *buf, size_t len,
 			     struct anvil_err *err)
 {
-	struct tmp_file t;
-	if (strcmp(path, "-") == 0)
-		return fwrite(buf, 1, len, stdout) == len && fflush(stdout) == 0
-			? ANVIL_OK : anvil_err_set(err, ANVIL_EIO, "standard output: write failed");
-	int st = tmp_open(&t, path, err);
+	struct cli_out out;
+	int to_stdout = strcmp(path, "-") == 0;
+	int st = cli_out_open_err(&out, to_stdout ? NULL : path, err);
 	if (st)
 		return st;
-	for (size_t off = 0; off < len;) {
-		ssize_t k = write(t.fd, buf + off, len - off);
-		if (k < 0 && errno == EINTR)
-			continue;
-		if (k <= 0) {
-			int e = errno;
-			tmp_abort(&t);
-			return anvil_err_set(err, ANVIL_EIO, "%s: %s", path, strerror(e));
-		}
-		off += (size_t)k;
+	if (fwrite(buf, 1, len, out.f) != len && !to_stdout) {
+		int e = errno;
+		cli_out_abort(&out);
+		return anvil_err_set(err, ANVIL_EIO, "%s: write failed: %s", path, strerror(e));
 	}
-	return tmp_commit(&t, path, err);
+	return cli_out_commit_err(&out, err);
 }
 
 int plot_emit(const char *buf, size_t len, const struct plot_opts *o,
