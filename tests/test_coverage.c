@@ -120,12 +120,26 @@ static void vals(const struct anvil_result *r, const struct anvil_val *v[NOUT])
 	v[0] = &r->ts, v[1] = &r->tmax, v[2] = &r->Pmax, v[3] = &r->Rf, v[4] = &r->Ea;
 }
 
+/* A row at rest on the plate (result.h rest_bound) has no contact end:
+ * its t_s is when the rebound's bound fell within its level's rest_tol (a
+ * tenth of the level's merge gap, solver.c), so draft's and normal's t_s
+ * are two thresholds' times, not one quantity (h 0.29 r0 titanium, 0.31 kg
+ * at 0.6 m/s: 28.6, 38.0 and 47.2 ms at draft, normal and fine, the bound
+ * 1e-3, 1e-4, 1e-5; each within its estimate, the time the bound took to
+ * halve).  Its t_s is compared only when neither row is at rest, and the
+ * solver holds it to no target (solver_check_target); R_f's [0, bound] is
+ * compared as any value. */
+static int at_rest(const struct anvil_result *lo, const struct anvil_result *hi)
+{
+	return lo->rest_bound > 0 || hi->rest_bound > 0;
+}
+
 /* The true error of lo against hi past lo's target (the check the solver
  * makes: P_max and t_s relative, R_f against max(R_f, 0.1)). */
 static int misses(const struct anvil_result *lo, const struct anvil_result *hi, double tgt)
 {
 	return fabs(lo->Pmax.val - hi->Pmax.val) > tgt * hi->Pmax.val ||
-	       fabs(lo->ts.val - hi->ts.val) > tgt * hi->ts.val ||
+	       (!at_rest(lo, hi) && fabs(lo->ts.val - hi->ts.val) > tgt * hi->ts.val) ||
 	       fabs(lo->Rf.val - hi->Rf.val) > tgt * fmax(fabs(hi->Rf.val), 0.1);
 }
 
@@ -146,7 +160,7 @@ struct sample {
 
 static void run_sample(struct anvil_solver *s, const struct sample *sp)
 {
-	int covered[NOUT] = { 0 }, n = 0, silent = 0, slow = 0;
+	int covered[NOUT] = { 0 }, ncmp[NOUT] = { 0 }, n = 0, silent = 0, slow = 0, rest = 0;
 	double worst[NOUT] = { 0 };
 	const char *lo_name = anvil_accuracy_name(sp->lo), *hi_name = anvil_accuracy_name(sp->hi);
 	for (int i = 0; i < sp->n; i++) {
@@ -178,7 +192,11 @@ static void run_sample(struct anvil_solver *s, const struct sample *sp)
 		const struct anvil_val *a[NOUT], *b[NOUT];
 		vals(&lo, a);
 		vals(&hi, b);
+		rest += at_rest(&lo, &hi);
 		for (int k = 0; k < NOUT; k++) {
+			if (k == 0 && at_rest(&lo, &hi))
+				continue; /* two rest thresholds' times (at_rest) */
+			ncmp[k]++;
 			double err = fabs(a[k]->val - b[k]->val), est = a[k]->err + b[k]->err;
 			double ratio = est > 0 ? err / est : (err > 0 ? INFINITY : 0);
 			if (sl < 0)
@@ -197,17 +215,19 @@ static void run_sample(struct anvil_solver *s, const struct sample *sp)
 		anvil_result_free(&lo);
 		anvil_result_free(&hi);
 	}
-	diag("%s: %d scenes left out by their planned cost", sp->name, slow);
+	diag("%s: %d scenes left out by their planned cost; %d at rest on the plate (t_s not compared)",
+	     sp->name, slow, rest);
 	ok(n >= sp->n / 2, "%s: %d of %d scenes run at both levels", sp->name, n, sp->n);
 	for (int k = 0; k < NOUT; k++)
 		if (!(sp->held >> k & 1u))
 			diag("%s: %s's coverage of %s not held yet: %.1f %% of %d scenes (worst ratio %.2f)",
-			     sp->name, lo_name, names[k], n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
+			     sp->name, lo_name, names[k], ncmp[k] ? 100.0 * covered[k] / ncmp[k] : 0.0,
+			     ncmp[k], worst[k]);
 		else
-			ok(n > 0 && covered[k] >= 0.95 * n,
+			ok(ncmp[k] >= n / 2 && ncmp[k] > 0 && covered[k] >= 0.95 * ncmp[k],
 			   "%s: %s's estimate (plus %s's) covers |%s - %s| of %s in %.1f %% of %d scenes (worst ratio %.2f)",
 			   sp->name, lo_name, hi_name, lo_name, hi_name, names[k],
-			   n ? 100.0 * covered[k] / n : 0.0, n, worst[k]);
+			   ncmp[k] ? 100.0 * covered[k] / ncmp[k] : 0.0, ncmp[k], worst[k]);
 	ok(silent == 0, "%s: no %s row that misses its target is ANVIL_OK (%d did)", sp->name,
 	   lo_name, silent);
 }
