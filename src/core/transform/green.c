@@ -6,6 +6,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
+#include <gsl/gsl_linalg.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -81,25 +82,63 @@ static int spline_c(const struct anvil_green *g, size_t i, double *c)
 	return st;
 }
 
+/* The natural spline's c_i = y''(tau_i)/2 (c[0] = c[n-1] = 0) by the
+ * system GSL's cspline_init solves, formed as it forms it and solved by the
+ * same public gsl_linalg_solve_symm_tridiag: the same bits (green_spline
+ * checks three nodes against GSL's own and else asks node by node).
+ * 0, or -1 (out of memory or a singular system). */
+static int spline_cs(const double *x, const double *y, size_t n, double *c)
+{
+	size_t m = n - 2;
+	c[0] = c[n - 1] = 0.0;
+	if (m == 0)
+		return 0;
+	double *w = malloc(3 * m * sizeof *w), *diag = w, *off = w + m, *gv = w + 2 * m;
+	if (!w)
+		return -1;
+	for (size_t i = 0; i < m; i++) {
+		double h_i = x[i + 1] - x[i], h_ip1 = x[i + 2] - x[i + 1];
+		double g_i = h_i != 0.0 ? 1.0 / h_i : 0.0, g_ip1 = h_ip1 != 0.0 ? 1.0 / h_ip1 : 0.0;
+		off[i] = h_ip1;
+		diag[i] = 2.0 * (h_ip1 + h_i);
+		gv[i] = 3.0 * ((y[i + 2] - y[i + 1]) * g_ip1 - (y[i + 1] - y[i]) * g_i);
+	}
+	int st = 0;
+	if (m == 1) {
+		c[1] = gv[0] / diag[0];
+	} else {
+		gsl_vector_view d = gsl_vector_view_array(diag, m), o = gsl_vector_view_array(off, m - 1),
+				b = gsl_vector_view_array(gv, m), sol = gsl_vector_view_array(c + 1, m);
+		st = gsl_linalg_solve_symm_tridiag(&d.vector, &o.vector, &b.vector, &sol.vector) ? -1 : 0;
+	}
+	free(w);
+	return st;
+}
+
 /* GSL's natural cubic spline through the samples, and each interval's
  * polynomial y + x (b + x (c + x d)) as GSL's cspline_eval forms it
  * (coeff_calc), kept: GSL forms the interval's coefficients, three
  * divisions, on every call, and the exact end of a contact evaluates the
  * ramp ~10^4 times per impact (tests/test_green.c: the same bits as
- * gsl_interp_eval).  The c_i are GSL's own: its cspline state's first
- * member (GSL 1.x-2.x), checked at three nodes against y''/2 (spline_c),
- * or else asked node by node (slower: a response read from disk takes
- * 1.7 times as long).  ANVIL_ENOMEM, ANVIL_ENUM. */
+ * gsl_interp_eval).  The c_i from spline_cs, checked at three nodes
+ * against GSL's y''/2 (spline_c), or else asked node by node (slower: a
+ * response read from disk takes 1.7 times as long).  ANVIL_ENOMEM,
+ * ANVIL_ENUM. */
 static int green_spline(struct anvil_green *g)
 {
 	size_t n = g->n;
 	g->interp = gsl_interp_alloc(gsl_interp_cspline, n);
 	g->coef = malloc(4 * (n - 1) * sizeof *g->coef);
-	if (!g->interp || !g->coef)
+	double *cs = malloc(n * sizeof *cs);
+	if (!g->interp || !g->coef || !cs) {
+		free(cs);
 		return ANVIL_ENOMEM;
-	if (gsl_interp_init(g->interp, g->tau, g->ramp, n))
+	}
+	if (gsl_interp_init(g->interp, g->tau, g->ramp, n)) {
+		free(cs);
 		return ANVIL_ENUM;
-	const double *c = g->interp->state ? *(double *const *)g->interp->state : NULL;
+	}
+	const double *c = spline_cs(g->tau, g->ramp, n, cs) ? NULL : cs;
 	size_t probe[3] = { 0, n / 2, n - 2 };
 	for (int k = 0; k < 3 && c; k++) {
 		double ck;
@@ -109,8 +148,10 @@ static int green_spline(struct anvil_green *g)
 	double c_i = 0.0; /* natural: 0 at both ends */
 	for (size_t i = 0; i + 1 < n; i++) {
 		double c_ip1 = 0.0;
-		if (i + 2 < n && (c ? (c_ip1 = c[i + 1], 0) : spline_c(g, i + 1, &c_ip1)))
+		if (i + 2 < n && (c ? (c_ip1 = c[i + 1], 0) : spline_c(g, i + 1, &c_ip1))) {
+			free(cs);
 			return ANVIL_ENUM;
+		}
 		double dx = g->tau[i + 1] - g->tau[i], dy = g->ramp[i + 1] - g->ramp[i];
 		double *cf = g->coef + 4 * i;
 		cf[0] = g->ramp[i];
@@ -119,6 +160,7 @@ static int green_spline(struct anvil_green *g)
 		cf[3] = (c_ip1 - c_i) / (3.0 * dx);
 		c_i = c_ip1;
 	}
+	free(cs);
 	return ANVIL_OK;
 }
 
