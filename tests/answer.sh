@@ -71,6 +71,10 @@ check_exit 1 "thickness: a range where nothing is within" \
 	$ANVIL thickness $D --range 0.5..1 -s effects.contact=paper -o none.tsv
 assert "...names the contact and writes nothing" \
 	sh -c 'grep -q "paper contact: even h = 1 r0 is not within" "$0" && [ ! -e none.tsv ]' "$tmp/err"
+check_exit 2 "thickness: a --range beyond what layer.thickness takes is refused at once" \
+	$ANVIL thickness $D --range 1e-9..1e9 -o none.tsv
+assert "...naming the bounds, no file written" \
+	sh -c 'grep -q "layer.thickness takes 1e-06..1e+06 r0" "$0" && [ ! -e none.tsv ]' "$tmp/err"
 
 check "thickness --range 16..64 (an integer LO: not read as 16. and .64)" \
 	$ANVIL thickness $D -s effects.contact=paper --range 16..64 -f tsv -o r16.tsv

@@ -58,8 +58,10 @@ assert 'bad --at: one line' [ "$(lines "$tmp/err")" -eq 1 ]
 check_exit 2 '--at with a bad length: exit 2' "$ANVIL" field $D --at 0,two
 check_exit 2 '--at below the bottom face: exit 2' "$ANVIL" field $D --at 0,5mm
 assert 'below the bottom: says where the layer is' grep -q 'outside the layer, 0 to h = 4 mm' "$tmp/err"
-check_exit 2 '--at without unit (metres) is outside: exit 2' "$ANVIL" field $D --at 0,2
-assert 'a bare number: says it is metres' grep -q 'without unit is in metres' "$tmp/err"
+check_exit 2 '--at with a bare depth (no unit): exit 2' "$ANVIL" field $D --at 0,0.002
+assert 'a bare number: asks for units' grep -q "expected two lengths R,Z with units" "$tmp/err"
+check 'a bare 0 needs no unit: --at 0,2mm' "$ANVIL" field $D --at 0,2mm --quantity w -q
+check_exit 2 'map: --depth without a unit: exit 2' "$ANVIL" map $D --time 3us --depth 0.002
 check_exit 2 '--at with a negative radius: exit 2' "$ANVIL" field $D --at -1mm,1mm
 check_exit 2 'unknown quantity: exit 2' "$ANVIL" field $D --at 0,1mm --quantity sxx
 check_exit 2 'a map option: exit 2' "$ANVIL" field $D --at 0,1mm --time 3us

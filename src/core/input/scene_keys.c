@@ -417,7 +417,7 @@ static int set_thickness(struct anvil_scene *sc, void *base, const struct key *k
 	 * change after); here only what no r0 can make sensible. */
 	if (!per_r0 && !isinf(v) && anvil_scene_range_check(v, ANVIL_RANGE_LENGTH, "m", value, err))
 		return ANVIL_EPARSE;
-	if (per_r0 && anvil_scene_range_check(v, 1e-6, 1e6, "r0", value, err))
+	if (per_r0 && anvil_scene_range_check(v, ANVIL_RANGE_H_R0, "r0", value, err))
 		return ANVIL_EPARSE;
 	sc->thickness = v;
 	sc->thickness_per_r0 = per_r0;

@@ -48,6 +48,7 @@ int anvil_scene_key_index(int sec, const char *key);
 /* The ranges values are refused outside of, SI (see anvil_scene_check). */
 #define ANVIL_RANGE_MASS 1e-12, 1e6
 #define ANVIL_RANGE_LENGTH 1e-9, 1e3   /* radius and thickness h */
+#define ANVIL_RANGE_H_R0 1e-6, 1e6     /* h given in r0 */
 #define ANVIL_RANGE_VELOCITY 1e-6, 1e5
 #define ANVIL_RANGE_E 1e3, 1e15
 #define ANVIL_RANGE_YIELD 0.0, 1e15

@@ -26,6 +26,7 @@
 #include "commands.h"
 #include "common.h"
 #include "output.h"
+#include "scene_keys.h"
 #include "units.h"
 
 #define THICK_MAXEVAL 64
@@ -99,6 +100,9 @@ static int parse_range(const char *s, double *lo, double *hi)
 	return *lo > 0 && *hi > *lo && isfinite(*hi) ? 0 : -1;
 }
 
+/* what layer.thickness takes in r0 (scene_keys.h): --range stays inside */
+static const double h_r0_lim[2] = { ANVIL_RANGE_H_R0 };
+
 static const struct option thick_longopts[] = {
 	{"set", required_argument, NULL, 's'},   {"within", required_argument, NULL, 'w'},
 	{"rtol", required_argument, NULL, 't'},  {"range", required_argument, NULL, 'r'},
@@ -120,9 +124,12 @@ static int thick_option(struct thick *t, int c, char **argv)
 			       ? out_usage("thickness", "--rtol %s: expected a tolerance such as 1%% or 0.01", optarg)
 			       : -1;
 	case 'r':
-		return parse_range(optarg, &t->lo, &t->hi)
-			       ? out_usage("thickness", "--range %s: expected LO..HI in r0, e.g. 0.5..32", optarg)
-			       : -1;
+		if (parse_range(optarg, &t->lo, &t->hi))
+			return out_usage("thickness", "--range %s: expected LO..HI in r0, e.g. 0.5..32", optarg);
+		if (t->lo < h_r0_lim[0] || t->hi > h_r0_lim[1])
+			return out_usage("thickness", "--range %s: layer.thickness takes %g..%g r0", optarg,
+					 h_r0_lim[0], h_r0_lim[1]);
+		return -1;
 	case 'c':
 		t->curve = optarg;
 		return -1;

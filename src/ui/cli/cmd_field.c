@@ -81,7 +81,14 @@ static int parse_length(const char *text, double r0, double *si)
 		*si = x * r0;
 		return ANVIL_OK;
 	}
-	return anvil_units_parse(text, ANVIL_DIM_LENGTH, si, NULL);
+	/* a unit, as every length of a scene; a bare 0 is the same in any */
+	if (!anvil_units_parse_with_unit(text, ANVIL_DIM_LENGTH, si, NULL))
+		return ANVIL_OK;
+	double x;
+	if (anvil_units_parse(text, ANVIL_DIM_LENGTH, &x, NULL) || x != 0)
+		return ANVIL_EPARSE;
+	*si = 0;
+	return ANVIL_OK;
 }
 
 /* Run the scene's layer (or half-space) with a full history and make its
@@ -415,8 +422,8 @@ static int parse_at(const struct fargs *a, const struct fctx *c, int i, double *
 	if (!(*r >= 0))
 		return out_usage("field", "--at '%s': the radius must be >= 0", s);
 	if (isfinite(c->p.h) && !(*z >= 0 && *z <= c->p.h * (1 + 1e-12)))
-		return out_usage("field", "--at '%s': the depth %g mm is outside the layer, 0 to h = %g mm "
-				 "(a length without unit is in metres)", s, *z * 1e3, c->p.h * 1e3);
+		return out_usage("field", "--at '%s': the depth %g mm is outside the layer, 0 to h = %g mm",
+				 s, *z * 1e3, c->p.h * 1e3);
 	if (!(*z >= 0))
 		return out_usage("field", "--at '%s': the depth must be >= 0", s);
 	return -1;
