@@ -377,12 +377,10 @@ static int adapt(struct quad *q, struct heap *h, double kband, double *kend, dou
 
 
 /* The tail's kernel from the interpolant (green_tail.h) when the tail
- * spans more than TAIL_MIN_SPAN (that many 16-wide pieces of 21
- * evaluations, against a panel's 17) and the interpolant's error bound,
+ * spans more than GREEN_TAIL_MIN_SPAN and the interpolant's error bound,
  * TAIL_SAFETY times its estimate over the envelope (green_cut.h), is at
  * most TAIL_SHARE of eps: that bound is returned, for the term's estimate
  * (0 when the kernel is evaluated). */
-#define TAIL_MIN_SPAN 64.0
 #define TAIL_SAFETY 2.0
 #define TAIL_SHARE 0.1
 static double cut_env(void *c, double K)
@@ -394,7 +392,7 @@ static double tail_fit(struct quad *q, struct green_cut *cut, double kband, doub
 		       double kend, double eps)
 {
 	q->tail_on = 0;
-	if (q->mode != ANVIL_GREEN_LAYER_CORRECTION || q->far_cut || !(kmax - kband > TAIL_MIN_SPAN))
+	if (q->mode != ANVIL_GREEN_LAYER_CORRECTION || q->far_cut || !(kmax - kband > GREEN_TAIL_MIN_SPAN))
 		return 0.0;
 	green_tail_key(&q->tail, q->s, q->kap2, q->hh, kband, kmax);
 	double e = TAIL_SAFETY * green_tail_bound(&q->tail, kend, cut_env, cut, &q->evals);

@@ -36,6 +36,20 @@ typedef double complex cplx;
 #define N GREEN_TAIL_DEG
 #define TAIL_ROUND 1e-12 /* the values' rounding, relative (above) */
 
+/* the panel after the one starting at a */
+static double next_start(double a, double hh)
+{
+	return a + fmin(TAIL_PANEL / hh, TAIL_GROW * a);
+}
+
+int green_tail_count(double hh, double kb, double kend)
+{
+	int i = 0;
+	for (double a = kb; i < GREEN_TAIL_PANELS && a < kend; i++)
+		a = next_start(a, hh);
+	return i;
+}
+
 void green_tail_key(struct green_tail *t, cplx s, double kap2, double hh, double kb, double kend)
 {
 	if (t->np && t->s == s && t->kap2 == kap2 && t->hh == hh && t->kb == kb && t->kend == kend)
@@ -48,7 +62,7 @@ void green_tail_key(struct green_tail *t, cplx s, double kap2, double hh, double
 	t->a[0] = kb;
 	int i = 0;
 	while (i < GREEN_TAIL_PANELS - 1 && t->a[i] < kend) {
-		t->a[i + 1] = t->a[i] + fmin(TAIL_PANEL / hh, TAIL_GROW * t->a[i]);
+		t->a[i + 1] = next_start(t->a[i], hh);
 		t->p[i++].n = 0;
 	}
 	if (t->a[i] < kend) /* the last panel reaches kend (its delta says how well) */

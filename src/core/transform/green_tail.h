@@ -26,6 +26,9 @@
 
 #define GREEN_TAIL_DEG 16
 #define GREEN_TAIL_PANELS 32
+/* the interpolant serves a tail longer than this (k_integral): 4 pieces
+ * of 21 evaluations, 84 against at most 3 panels' 51 */
+#define GREEN_TAIL_MIN_SPAN 64.0
 
 struct green_tail_panel {
 	int n;        /* 0: not fitted yet; -1: could not be (not finite) */
@@ -54,6 +57,10 @@ void green_tail_key(struct green_tail *t, double complex s, double kap2, double 
  * be fitted.  env is the caller's (a load's patch). */
 double green_tail_bound(struct green_tail *t, double kend, double (*env)(void *, double),
 			void *ctx, size_t *evals);
+
+/* The panels green_tail_key makes for [kb, kend] (the planner's price,
+ * plan_work.c). */
+int green_tail_count(double hh, double kb, double kend);
 
 /* W_c(k, s) at k in [kb, kend] of an earlier green_tail_bound (its panels
  * fitted). */
