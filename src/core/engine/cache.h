@@ -54,7 +54,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 14 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 15 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -72,7 +72,8 @@ struct anvil_halfspace; /* halfspace.h */
 				 plate.c; 13: the angle sums in the tail only, the
 				 band's zhat direct again; 14: the k-integrals cut
 				 by their budget, green_cut.h, the remainder in the
-				 estimate) */
+				 estimate; 15: the layer correction's tail kernel
+				 from its interpolant, green_tail.h) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -125,6 +125,12 @@ static double amplitude(struct green_cut *c, double K0)
 	return log(SAFETY) + fmax(la, log(4.0 * (1.0 - c->nu)));
 }
 
+double green_cut_env(const struct green_cut *c, double K)
+{
+	double l = layer_ln_m(c, K);
+	return l < LN_HUGE ? exp(l) : INFINITY;
+}
+
 double green_cut_find(struct green_cut *c, double k0, double kmax, double target, double *tail)
 {
 	struct lnb b = { c, 0.0, log(target) };

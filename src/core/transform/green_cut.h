@@ -39,4 +39,10 @@ struct green_cut {
  * k0 = kmax, the bound at k0.  One or two kernel evaluations. */
 double green_cut_find(struct green_cut *c, double k0, double kmax, double target, double *tail);
 
+/* The layer's envelope past K: a bound on the integral of
+ * Q(k) |zhat(k patch)| over [K, inf) (green_cut.c; INFINITY where it does
+ * not yet fall), without SAFETY: what an error of at most d in A(k)
+ * (green_tail.h) can make of the integral is d times this. */
+double green_cut_env(const struct green_cut *c, double K);
+
 #endif
