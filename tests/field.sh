@@ -146,4 +146,23 @@ assert '...saying how much work, and what judges it instead' \
 	grep -q "^anvil: field: at least [0-9.]* min of work (.* Fourier terms on .* k panels: .*), over the budget of 10 min; anvil run judges such a contact by quasi-static Hertz" "$tmp/err"
 assert '...and nothing on stdout' [ ! -s "$tmp/out" ]
 
+# A thin plate where the paper's contact runs away (its r0 patch on an 80 um
+# plate: "the contact's end is lost") while `anvil run` answers: the
+# impactor comes to rest on the plate (t_s = 14.7 s).  field takes run's
+# row, says so, and refuses that load's window (5.5e8 times 2h/c1) in one
+# line that names it, with run's own t_s: the same impact.
+T="-s layer.thickness=0.02r0 -s impactor.mass=1kg"
+check 'the thin plate: anvil run answers' "$ANVIL" run -q -m layer $T --format tsv
+ts_run=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "ts_us") c = i; next } { print $c }' "$tmp/out")
+check_exit 1 'the thin plate: field refuses the window, exit 1' "$ANVIL" field -q --at 0,0.05mm $T
+assert "...saying the paper's contact failed and run's row (physical) loads the patch" \
+	grep -q "^anvil: field: the paper's contact gives no force (impact: the contact's end near .* is lost .*); anvil run's row, the physical contact's, loads the r0 patch instead$" "$tmp/err"
+assert '...then why not, in one line: the window against 2h/c1' \
+	grep -q "^anvil: field: the load lasts [0-9.e+]* ms, [0-9.e+]* times 2h/c1: its window needs more Fourier terms than the bound of [0-9]*; anvil run judges such a contact by quasi-static Hertz$" "$tmp/err"
+# (the load ends one of its 2000 history steps after t_s, printed to 4 digits)
+assert "...whose load is run's contact (t_s $ts_run us)" \
+	awk -v ts="$ts_run" '/the load lasts/ { for (i = 1; i <= NF; i++) if ($i == "lasts") ms = $(i + 1) }
+		END { d = ms * 1e3 / ts - 1 - 1 / 2000; exit !(ts > 0 && d * d < 2.5e-7) }' "$tmp/err"
+assert '...two lines on stderr, nothing on stdout' sh -c "[ \$(wc -l <'$tmp/err') -eq 2 ] && [ ! -s '$tmp/out' ]"
+
 done_testing

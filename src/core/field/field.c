@@ -229,6 +229,16 @@ int anvil_field_check_grid(const struct anvil_field *f, const struct anvil_field
 #define FIELD_COST_SOLVE 3.4e-6
 #define FIELD_COST_DEPTH 1.9e-6
 
+/* The load's length in 2h/c1 (0 for a half-space): what the field's work
+ * grows with.  c1 = c2 / kappa (kap2 = (c2/c1)^2: the budget's message had
+ * c2 kappa, 0.29 of the count on steel). */
+static double load_reflections(const struct anvil_field *f)
+{
+	return isfinite(anvil_field_h(f))
+		       ? anvil_field_t_load(f) * f->c2 / sqrt(f->kap2) / (2.0 * anvil_field_h(f))
+		       : 0.0;
+}
+
 int anvil_field_check_work(const struct anvil_field *f, const struct anvil_field_window *w,
 			   const struct anvil_field_kgrid *g, size_t depth_panels, const char *what,
 			   struct anvil_err *err)
@@ -240,8 +250,17 @@ int anvil_field_check_work(const struct anvil_field *f, const struct anvil_field
 	return anvil_err_set(err, ANVIL_ETOL,
 			     "%s: at least %.2g min of work (%zu Fourier terms on %zu k panels: the load lasts %.4g ms, %.3g times 2h/c1), over the budget of %g min; anvil run judges such a contact by quasi-static Hertz",
 			     what, s / 60.0, w->M + 1, g->np, anvil_field_t_load(f) * 1e3,
-			     isfinite(anvil_field_h(f)) ? anvil_field_t_load(f) * f->c2 * sqrt(f->kap2) / (2.0 * anvil_field_h(f)) : 0.0,
+			     load_reflections(f),
 			     ANVIL_FIELD_BUDGET_S / 60.0);
+}
+
+int anvil_field_window_fail(const struct anvil_field *f, const char *what,
+			    struct anvil_err *err)
+{
+	return anvil_err_set(err, ANVIL_ETOL,
+			     "%s: the load lasts %.4g ms, %.3g times 2h/c1: its window needs more Fourier terms than the bound of %zu; anvil run judges such a contact by quasi-static Hertz",
+			     what, anvil_field_t_load(f) * 1e3, load_reflections(f),
+			     (size_t)ANVIL_DURBIN_M_MAX);
 }
 
 /* The message of a failed map or history: ANVIL_EINVAL there is a window

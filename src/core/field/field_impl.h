@@ -130,6 +130,12 @@ int anvil_field_check_grid(const struct anvil_field *f, const struct anvil_field
 int anvil_field_check_work(const struct anvil_field *f, const struct anvil_field_window *w,
 			   const struct anvil_field_kgrid *g, size_t depth_panels, const char *what,
 			   struct anvil_err *err);
+/* A load too long for the Fourier series' bound (window_init's
+ * ANVIL_EINVAL): ANVIL_ETOL, refused as the budget refuses, with the load's
+ * length against 2h/c1 (a thin plate's impactor at rest on it for
+ * seconds); returns ANVIL_ETOL. */
+int anvil_field_window_fail(const struct anvil_field *f, const char *what,
+			    struct anvil_err *err);
 /* Status st with its message (ANVIL_EINVAL: a bound of the line or the
  * panels); returns st. */
 int anvil_field_fail(const struct anvil_field *f, int st, const char *what,

@@ -296,6 +296,11 @@ int anvil_field_map_level(struct anvil_field *f, const flevel_t *lv, size_t nt, 
 	m.dz = g->nz > 1 ? (g->z_hi - g->z_lo) / f->r0 / (double)(g->nz - 1) : 0;
 	m.tau = tau;
 	st = tau ? anvil_field_window_init(f, lv, tau_hi, &m.w) : ANVIL_ENOMEM;
+	if (st == ANVIL_EINVAL) { /* the load too long for the series: refused as the budget does */
+		mapjob_free(&m);
+		free(tau);
+		return anvil_field_window_fail(f, "field map", err);
+	}
 	for (size_t i = 0; tau && i < nt; i++)
 		tau[i] = t[i] * s;
 	if (!st)

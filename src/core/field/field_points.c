@@ -185,6 +185,11 @@ int anvil_field_points(struct anvil_field *f, size_t npt, const double *r,
 	struct ptjob j = {.f = f, .npt = npt};
 	double *tau = malloc(nt * sizeof *tau);
 	st = tau ? anvil_field_window_init(f, FLEVEL(f->acc), tau_hi, &j.w) : ANVIL_ENOMEM;
+	if (st == ANVIL_EINVAL) { /* the load too long for the series: refused as the budget does */
+		ptjob_free(&j);
+		free(tau);
+		return anvil_field_window_fail(f, "field", err);
+	}
 	if (!st)
 		st = anvil_field_kgrid_init(&j.g, f, FLEVEL(f->acc), &j.w, rmax);
 	if (!st)

@@ -26,6 +26,8 @@ struct end_ctx {
 	double S0, S1;  /* sum P_m, sum P_m t_m over m < k */
 	double far[4];  /* the far past's deflection at d = i dt/3 */
 	double *R;      /* scratch: R(j dt + d), j = 0 .. k - m0 + 1 */
+	double memo[4]; /* alpha_end at two d known (d, value, d, value) */
+	double last[2]; /* alpha_end's last d and value */
 };
 
 void impact_end_tab_free(struct end_tab *t)
@@ -36,8 +38,10 @@ void impact_end_tab_free(struct end_tab *t)
 	memset(t, 0, sizeof *t);
 }
 
-/* R(j dt + d) through ramp r for j <= jmax (<= cap) in t's row (r, i);
- * NULL when out of memory. */
+/* R(j dt + d) through ramp r for IMPACT_END_NEAR <= j <= jmax (<= cap)
+ * in t's row (r, i); NULL when out of memory.  The far past (m < m0 = k -
+ * IMPACT_END_NEAR) reaches lags j >= IMPACT_END_NEAR only: the entries
+ * below are never made (nor read). */
 static const double *end_tab_get(const struct ctx *c, const struct pass *s, int r, int i,
 				 double d, size_t jmax)
 {
@@ -46,7 +50,8 @@ static const double *end_tab_get(const struct ctx *c, const struct pass *s, int 
 	void *fctx = r ? c->rctx2 : c->rctx;
 	if (!t->R[r][i] && !(t->R[r][i] = malloc((s->cap + 1) * sizeof **t->R)))
 		return NULL;
-	for (size_t j = t->len[r][i]; j <= jmax; j++)
+	for (size_t j = t->len[r][i] > IMPACT_END_NEAR ? t->len[r][i] : IMPACT_END_NEAR; j <= jmax;
+	     j++)
 		impact_ramp_of(c, fn, fctx, (double)j * s->dt + d, &t->R[r][i][j]);
 	if (jmax + 1 > t->len[r][i])
 		t->len[r][i] = jmax + 1;
@@ -138,7 +143,7 @@ static double near_deflection(double w, const double *F, const double *R, size_t
 
 static double alpha_end(double d, void *vp)
 {
-	const struct end_ctx *e = vp;
+	struct end_ctx *e = vp;
 	const struct ctx *c = e->c;
 	const struct anvil_params *p = c->p;
 	const double *P = e->s->P, dt = e->s->dt;
@@ -161,7 +166,20 @@ static double alpha_end(double d, void *vp)
 	/* the physical contact's second order: its alpha = 0 is at W - w_c =
 	 * c_u u^2 (impact.c, sg; 0 otherwise), linear between the nodes */
 	double sg = e->s->sg[k] + (e->s->sg[k + 1] - e->s->sg[k]) * d / dt;
-	return p->V0 * (c->T0 + tau) - mom / p->m1 - w - sg;
+	double f = p->V0 * (c->T0 + tau) - mom / p->m1 - w - sg;
+	e->last[0] = d, e->last[1] = f;
+	return f;
+}
+
+/* alpha_end, with the two values already known (memo: d, f, d, f) */
+static double alpha_end_memo(double d, void *vp)
+{
+	struct end_ctx *e = vp;
+	if (d == e->memo[0])
+		return e->memo[1];
+	if (d == e->memo[2])
+		return e->memo[3];
+	return alpha_end(d, vp);
 }
 
 static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pass *s, size_t k)
@@ -203,6 +221,10 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
  * ends near zero, where END_FLAT against the other end asks for digits
  * that the difference V0 t - mom/m1 - w cannot have. */
 #define END_ULPS 64.0
+/* The end's offset d is found to within this many steps dt when its
+ * residual is at rounding level (finish_exact): far below t_s's estimate
+ * (the passes' difference, O(dt^2) of t_s), far above alpha's noise. */
+#define END_DTOL 1e-9
 
 /* The end of the contact whose last node in contact is k = s->n - 1:
  * *toff its time, *ioff the impulse up to it (impulse: up to t_k). */
@@ -240,13 +262,30 @@ int impact_finish_exact(const struct ctx *c, const struct pass *s, double impuls
 		*ioff = impulse + 0.5 * s->P[k] * d;
 		return ANVIL_OK;
 	}
+	/* Brent's set evaluates both ends again: it is handed those known */
+	e.memo[0] = lo, e.memo[1] = flo, e.memo[2] = hi, e.memo[3] = fhi;
+	f.function = alpha_end_memo;
 	st = gsl_root_fsolver_set(rs, &f, lo, hi);
+	f.function = alpha_end;
+	/* Converged when the root's alpha is within alpha_end's own rounding
+	 * (ulp: a difference of terms of size V0 t; the root is then within
+	 * ulp / |alpha'| of the true one) and that is below END_DTOL dt at the
+	 * bracket's mean slope (not a grazing end, whose flat alpha locates
+	 * nothing: those close the bracket as before).  Below that level
+	 * alpha's values are noise (they wander by ~1e-11 d), which Brent
+	 * chased for six more steps to close the bracket to 1e-13 d. */
+	double slope = (flo - fhi) / (hi - lo);
+	int resid_ok = ulp <= END_DTOL * s->dt * slope;
 	for (int i = 0; !st && i < 100; i++) {
 		st = gsl_root_fsolver_iterate(rs);
 		d = gsl_root_fsolver_root(rs);
 		lo = gsl_root_fsolver_x_lower(rs);
 		hi = gsl_root_fsolver_x_upper(rs);
-		if (!st && gsl_root_test_interval(lo, hi, 1e-14 * s->dt, 1e-13) == GSL_SUCCESS)
+		if (st)
+			break;
+		if (resid_ok && d == e.last[0] && fabs(e.last[1]) <= ulp)
+			break;
+		if (gsl_root_test_interval(lo, hi, 1e-14 * s->dt, 1e-13) == GSL_SUCCESS)
 			break;
 	}
 	gsl_root_fsolver_free(rs);

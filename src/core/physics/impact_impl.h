@@ -154,7 +154,8 @@ struct ctx {
 
 /* The ramp responses off the grid that the far past needs at every
  * contact end of a pass: R(j dt + d_i), d_i = i dt/3 (i = 1, 2, 3; end_ctx_init),
- * for j < len, through ramp (r = 0) and ramp2 (r = 1).  Filled once per pass
+ * for IMPACT_END_NEAR <= j < len (the far past's lags), through ramp (r =
+ * 0) and ramp2 (r = 1).  Filled once per pass
  * as far as the latest end needs, so a contact end costs O(n) sums, not
  * O(n) ramp evaluations, and the repeated contacts of a thin plate reuse
  * them; the values are those each end computed for itself (same bits). */

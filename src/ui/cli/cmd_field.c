@@ -109,6 +109,20 @@ static int impact_field(struct fctx *c, const struct fargs *a)
 	struct anvil_scene fsc = c->sc;
 	fsc.effects.contact = ANVIL_CONTACT_PAPER;
 	int st = cli_run_model(s, &fsc, m, ANVIL_FIELD_NHIST, &c->r, &err);
+	if (st < 0 && c->sc.effects.contact != ANVIL_CONTACT_PAPER) {
+		/* the paper's contact has no answer (on a thin plate its r0 patch
+		 * can run away): the force of anvil run's row, the scene's own
+		 * contact, on the same patch */
+		char why[sizeof err.msg];
+		snprintf(why, sizeof why, "%s", err.msg[0] ? err.msg : anvil_strerror(st));
+		anvil_result_free(&c->r);
+		err = (struct anvil_err){0};
+		st = cli_run_model(s, &c->sc, m, ANVIL_FIELD_NHIST, &c->r, &err);
+		if (st >= 0)
+			cli_error("%s: the paper's contact gives no force (%s); anvil run's row, the %s "
+				  "contact's, loads the r0 patch instead", a->cmd, why,
+				  anvil_contact_name(c->r.contact));
+	}
 	cli_progress_done(&c->prog);
 	anvil_solver_free(s);
 	/* a missed accuracy target still gives values; a refusal gives none */
