@@ -79,7 +79,11 @@ static int long_contact_verdict(struct anvil_solver *s, const struct anvil_plan 
 		row = &r;
 	if (st >= 0) {
 		int vs = anvil_verdict_at(&pl->pb, row->Pmax.val, row->tmax.val, v);
-		v->qs_ratio = ratio;
+		/* the row's own contact time, once it is known, not the plan's
+		 * estimate (3e9 for 5.5e8 where a 1 kg mass comes to rest on
+		 * h = 0.02 r0) */
+		double tr = pl->fig[ANVIL_FIG_T_REFLECT];
+		v->qs_ratio = row->ts.val > 0 && tr > 0 ? row->ts.val / tr : ratio;
 		if (vs)
 			st = anvil_err_set(err, vs, "the layer row's P_max (%g N) gives no Hertz contact",
 					   row->Pmax.val);

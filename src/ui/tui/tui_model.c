@@ -280,9 +280,10 @@ static void verdict_update(struct tui_model *m)
 	if (anvil_verdict_at(pb, r->res.Pmax.val, r->res.tmax.val, &v) != ANVIL_OK)
 		return; /* the plan's verdict stays */
 	if (finite) {
-		double ratio = m->plan.row[ANVIL_MODEL_LAYER].job.ts / m->plan.fig[ANVIL_FIG_T_REFLECT];
-		if (ratio > ANVIL_VERDICT_QS_RATIO)
-			v.qs_ratio = ratio;
+		double tr = m->plan.fig[ANVIL_FIG_T_REFLECT];
+		double ratio = m->plan.row[ANVIL_MODEL_LAYER].job.ts / tr;
+		if (ratio > ANVIL_VERDICT_QS_RATIO) /* as anvil run: the plan decides, the row's t_s says */
+			v.qs_ratio = r->res.ts.val > 0 ? r->res.ts.val / tr : ratio;
 		anvil_verdict_bending(pb, &r->res.hist, &v);
 	}
 	m->verdict = v;
