@@ -405,8 +405,10 @@ static void test_cache(void)
 static void test_t_plate(void)
 {
 	struct anvil_green *a = make(0.5, 16.0 * 32.0, 2.0, 0, NULL);
-	struct anvil_green *b = make(2.0, 16.0 * 128.0, 2.0, 0, NULL);
+	struct anvil_green *b = make(2.0, 16.0 * 64.0, 2.0, 0, NULL);
+	struct anvil_green *b8 = make(8.0, 2.0 * 128.0, 2.0, 0, NULL);
 	struct anvil_green *c = make(0.5, 3.9 * 32.0, 2.0, 0, NULL);
+	struct anvil_green *c8 = make(8.0, 1.9 * 128.0, 2.0, 0, NULL);
 	struct anvil_green *d = make(0.5, 8.0 * 32.0, 2.0, 1, NULL);
 	struct anvil_green_settings gs;
 	struct anvil_err e;
@@ -414,12 +416,15 @@ static void test_t_plate(void)
 	gs.omega_max = 2.0;
 	struct anvil_green *hs = anvil_green_alloc(ANVIL_GREEN_HALFSPACE, 1.0, 0.3, 20.0, &gs, NULL,
 						   NULL, &e);
-	ok(a && b && c && d && hs && anvil_green_t_plate(a) == 32.0 &&
-		   anvil_green_t_plate(b) == 128.0 && isinf(anvil_green_t_plate(c)) &&
+	ok(a && b && b8 && c && c8 && d && hs && anvil_green_t_plate(a) == 32.0 &&
+		   anvil_green_t_plate(b) == 64.0 && anvil_green_t_plate(b8) == 128.0 &&
+		   isinf(anvil_green_t_plate(c)) && isinf(anvil_green_t_plate(c8)) &&
 		   isinf(anvil_green_t_plate(d)) && isinf(anvil_green_t_plate(hs)),
-	   "t_plate: 32 below h = r0, 64 h/r0 from there (32 at h = 0.5, 128 at h = 2); "
-	   "infinite for a window "
-	   "under 4 T1, no_plate and the half-space");
+	   "t_plate: 32 below h = r0, max(64, 16 h/r0) from there (32 at h = 0.5, 64 at h = 2, "
+	   "128 at h = 8); infinite for a window under 4 T1 (thin) or 2 T1 (from h = r0), "
+	   "no_plate and the half-space");
+	anvil_green_free(b8);
+	anvil_green_free(c8);
 	anvil_green_free(a);
 	anvil_green_free(b);
 	anvil_green_free(c);

@@ -134,11 +134,11 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val);
  * form's analytic one). */
 int anvil_green_step(const struct anvil_green *g, double tau, double *val);
 /* The tau from which the ramp is the plate's closed form (plate.h: the
- * inversion's window T1: 32 below h = r0, 64 h/r0 from there): smooth there, without the
+ * inversion's window T1: 32 below h = r0, max(64, 16 h/r0) from there): smooth there, without the
  * band limit's ringing (K's table is a C2 interpolant, within 3e-9 of
  * the plate at h = 0.02 r0 and closer on thicker plates); over [T1/2, T1]
  * the samples go from the inversion to it.  INFINITY when the response is
- * the inversion everywhere (a window shorter than 4 T1, the half-space
+ * the inversion everywhere (a window shorter than 4 T1, 2 T1 from h = r0, the half-space
  * mode, no_plate). */
 double anvil_green_t_plate(const struct anvil_green *g);
 /* The impulse response (the ramp's second derivative) in the closed form

@@ -14,15 +14,21 @@
 #include "plate.h"
 #include "status.h"
 
-/* T1 = 32 below hh = 1, 64 hh from there, whatever the window (the tail
- * is closed form; plate.h says why). */
+/* T1 = 32 below hh = 1, max(64, 16 hh) from there, whatever the window
+ * (the tail is closed form; plate.h says why and what it was measured
+ * against).  The tail takes over from a window of TAIL_FROM_THIN T1 below
+ * hh = 1, TAIL_FROM T1 from there. */
 #define T1_THIN 32.0
-#define T1_PER_H 64.0
+#define T1_THICK_MIN 64.0
+#define T1_PER_H 16.0
+#define TAIL_FROM_THIN 4.0
+#define TAIL_FROM 2.0
 
 double anvil_plate_t1(double hh, double tau_end)
 {
-	double t1 = hh < 1.0 ? T1_THIN : T1_PER_H * hh;
-	return tau_end >= 4.0 * t1 ? t1 : 0.0;
+	int thin = hh < 1.0;
+	double t1 = thin ? T1_THIN : fmax(T1_THICK_MIN, T1_PER_H * hh);
+	return tau_end >= (thin ? TAIL_FROM_THIN : TAIL_FROM) * t1 ? t1 : 0.0;
 }
 
 /* ---- K(t), the Kirchhoff plate under the patch ---- */
