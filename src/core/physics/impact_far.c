@@ -74,22 +74,15 @@ double impact_far_sum(const struct ctx *c, const struct frozen *f, double t)
 	return w;
 }
 
-/* The far field of f at the targets t_k = (u0 + k 2^lev) dt0, k0 <= k < C,
- * added to out[k].  It is as smooth in the target as in the source: over
- * a run of targets whose span is within 1/FAR_RHO of its distance from
- * the charges, its interpolant at FAR_P Chebyshev points of the targets
- * (the same error as the charges', the two ends' roles swapped), so a
- * chunk costs FAR_P far sums, not one per target. */
-void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
-		      double *out)
+/* The far field of f at the targets k0 .. k1 (t0, t1 the first and
+ * last), a run within 1/FAR_RHO of its distance from the charges: its
+ * interpolant at FAR_P Chebyshev points of the targets (the same error as
+ * the charges', the two ends' roles swapped), added to out[k]. */
+static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t k1,
+		    double *out)
 {
 	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
-	double t1 = (double)(u0 + ((C - 1) << c->lev)) * c->dt0;
-	if (C - k0 <= 2 * FAR_P || FAR_RHO * (t1 - t0) > t0 - f->tb) {
-		for (size_t k = k0; k < C; k++)
-			out[k] += impact_far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
-		return;
-	}
+	double t1 = (double)(u0 + (k1 << c->lev)) * c->dt0;
 	double F[FAR_P], xn[FAR_P], lam[FAR_P];
 	for (int j = 0; j < FAR_P; j++) {
 		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
@@ -97,7 +90,7 @@ void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, si
 		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
 		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
 	}
-	for (size_t k = k0; k < C; k++) {
+	for (size_t k = k0; k <= k1; k++) {
 		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
 		double num = 0, den = 0, hit = NAN;
 		for (int j = 0; j < FAR_P && isnan(hit); j++) {
@@ -107,6 +100,36 @@ void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, si
 			den += lam[j] / (x - xn[j]);
 		}
 		out[k] += isnan(hit) ? num / den : hit;
+	}
+}
+
+/* The far field of f at the targets t_k = (u0 + k 2^lev) dt0, k0 <= k < C,
+ * added to out[k].  It is as smooth in the target as in the source, so
+ * the targets go in runs, each within 1/FAR_RHO of its distance from the
+ * charges (far_run: FAR_P far sums, not one per target), a run of at most
+ * 2 FAR_P targets one by one.  A chunk whose targets are one such run is
+ * one run, as it was; the runs grow with the distance (by 1 + 1/FAR_RHO
+ * each), so a chunk that is not costs O(log) runs: such chunks, summed
+ * target by target, had been four fifths of the far sums on a thin plate
+ * (h = 0.02 r0, 100 kg at 10 m/s). */
+void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+		      double *out)
+{
+	double step = (double)((size_t)1 << c->lev) * c->dt0;
+	for (size_t k = k0; k < C;) {
+		double t0 = (double)(u0 + (k << c->lev)) * c->dt0;
+		double m = floor((t0 - f->tb) / (FAR_RHO * step));
+		size_t e = m >= (double)(C - 1 - k) ? C - 1 : k + (size_t)fmax(m, 0.0);
+		/* the test as far_run's contract states it, in the targets' own times */
+		while (e > k && FAR_RHO * ((double)(u0 + (e << c->lev)) * c->dt0 - t0) > t0 - f->tb)
+			e--;
+		if (e - k < 2 * FAR_P) {
+			for (; k <= e; k++)
+				out[k] += impact_far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
+			continue;
+		}
+		far_run(c, f, u0, k, e, out);
+		k = e + 1;
 	}
 }
 
