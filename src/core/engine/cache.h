@@ -54,7 +54,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 16 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 17 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -75,7 +75,9 @@ struct anvil_halfspace; /* halfspace.h */
 				 estimate; 15: the layer correction's tail kernel
 				 from its interpolant, green_tail.h; 16: T1 =
 				 max(64, 16 hh) from h = r0, the tail from a
-				 window of 2 T1 there, plate.h) */
+				 window of 2 T1 there, plate.h; 17: the tail's
+				 stored unit v the larger of the fit's misfit and
+				 its coefficients' spread, plate.h) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
