@@ -455,6 +455,44 @@ static void test_plate_window(void)
 	}
 }
 
+/* The tail's bound beyond T1 (anvil_green_abserr_at, plate.h) on the
+ * physical contact's point load (filtered, normal, band 2) at h = 0.7,
+ * 0.85, 0.95 r0, T1 = 32: the tailed response against one inversion over
+ * 8 T1, the difference at every tau within the two bounds' sum.  With
+ * the bound growing by the misfit times (x - 1) (before 2026-11, the
+ * brief "t1thin") the ratios were 0.95, 12.5 and 2.8 (the misfit small
+ * by chance; the true error grows like x log x); now 0.07, 0.34, 0.38. */
+static void test_plate_window_point(void)
+{
+	const double hs[] = { 0.7, 0.85, 0.95 };
+	for (int i = 0; i < 3; i++) {
+		double hh = hs[i], t1 = anvil_plate_t1(hh, INFINITY), tau_end = 8.0 * t1, ratio = 0;
+		struct anvil_green_settings gs;
+		struct anvil_err e;
+		anvil_green_settings(ANVIL_ACC_NORMAL, &gs);
+		gs.omega_max = 2.0;
+		gs.filter = 1;
+		struct anvil_green *ext = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh, 0.3,
+								   0.0, tau_end, &gs, NULL, NULL, &e);
+		gs.no_plate = 1;
+		struct anvil_green *full = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, hh,
+								    0.3, 0.0, tau_end, &gs, NULL,
+								    NULL, &e);
+		for (double t = t1; ext && full && t <= tau_end; t += t1 / 64.0) {
+			double a, b;
+			anvil_green_ramp(ext, t, &a);
+			anvil_green_ramp(full, t, &b);
+			ratio = fmax(ratio, fabs(a - b) / (anvil_green_abserr_at(ext, t) +
+							   anvil_green_abserr_at(full, t)));
+		}
+		ok(ext && full && anvil_green_t_plate(ext) == t1 && ratio <= 1.0,
+		   "h = %g r0, point load, band 2, filtered: beyond T1 = %g the tail is within its "
+		   "bound (true error over the bounds' sum %.3f at most)", hh, t1, ratio);
+		anvil_green_free(ext);
+		anvil_green_free(full);
+	}
+}
+
 /* The tail is the response's own patch's (plate.c, k_load): on a thin
  * plate the r0 patch's Kirchhoff response under a point load's or a small
  * patch's tail missed one inversion over the whole window by 4.3e-4 of
@@ -696,6 +734,7 @@ int main(void)
 	test_settings_agree();
 	test_plate_limit();
 	test_plate_window();
+	test_plate_window_point();
 	test_plate_patch();
 	test_plate_join();
 	test_plate_memo();

@@ -43,7 +43,7 @@ struct anvil_green {
 	double *coef;         /* per interval: its y, b, c, d (green_spline), owned */
 	int tailed;           /* 1: beyond tail.t1 the plate's closed form (plate.h) */
 	struct anvil_plate_tail tail; /* its arrays owned */
-	double abserr;        /* over [0, T1] when tailed (tail.v included) */
+	double abserr;        /* over [0, T1] when tailed (the tail's misfit included) */
 	size_t evals;
 	int filtered;         /* Vandeven's filter on the band (band_finish) */
 };
@@ -207,7 +207,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 						  g->ramp, g->tau_end, memo, &g->tail)))
 		return st;
 	/* the tail's bound grows with t (anvil_green_abserr_at): its value at T1 here */
-	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.v : 0.0);
+	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.misfit : 0.0);
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau;
 	return green_spline(g);
@@ -577,7 +577,7 @@ double anvil_green_abserr_at(const struct anvil_green *g, double tau)
 {
 	if (!g->tailed || !(tau > g->tail.t1))
 		return g->abserr;
-	return g->abserr + anvil_plate_tail_err(&g->tail, tau) - g->tail.v;
+	return g->abserr + anvil_plate_tail_err(&g->tail, tau);
 }
 
 double anvil_green_t_plate(const struct anvil_green *g)

@@ -159,9 +159,10 @@ double anvil_green_tau_end(const struct anvil_green *g);
  * with the extrapolation's length, and anvil_green_abserr_at gives it. */
 double anvil_green_abserr(const struct anvil_green *g);
 /* The bound at tau: anvil_green_abserr, and beyond t_plate = T1 that plus
- * v (tau/T1 - 1), v the plate fit's validation misfit (plate.h), which
- * tau_end no longer multiplies (a window 1e6 T1 long would have carried
- * 1e6 v at every tau). */
+ * v (x (1 + log x) - 1), x = tau/T1, v the plate fit's extrapolation unit
+ * (plate.h, anvil_plate_tail_err: the validation's misfit or the two
+ * fits' coefficients apart, the larger), which tau_end does not multiply
+ * (a window 1e6 T1 long would have carried 1e6 v at every tau). */
 double anvil_green_abserr_at(const struct anvil_green *g, double tau);
 /* Number of kernel evaluations spent (for benchmarks). */
 size_t anvil_green_evals(const struct anvil_green *g);

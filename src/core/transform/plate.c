@@ -564,7 +564,8 @@ double anvil_plate_tail_s(const struct anvil_plate_tail *tl, double t)
 
 double anvil_plate_tail_err(const struct anvil_plate_tail *tl, double t)
 {
-	return tl->v * fmax(1.0, t / tl->t1);
+	double x = fmax(1.0, t / tl->t1);
+	return tl->v * (x * (1.0 + log(x)) - 1.0);
 }
 
 /* Least squares (GSL's SVD-based multifit) of ramp - plate_part over the
@@ -658,7 +659,7 @@ int anvil_plate_tail_make(double hh, double nu, double patch, double dtau, size_
 			  double *ramp, double tau_end, struct anvil_plate_memo *memo,
 			  struct anvil_plate_tail *tl)
 {
-	double t1 = (double)(n1 - 2) * dtau, cv[3], v = 0;
+	double t1 = (double)(n1 - 2) * dtau, cv[3] = { 0, 0, 0 }, v = 0;
 	int st = tail_alloc(tl, hh, nu, patch, t1, anvil_plate_nodes(t1, tau_end));
 	if (!st)
 		st = nodes_get(memo, tl, tl->nk);
@@ -673,7 +674,12 @@ int anvil_plate_tail_make(double hh, double nu, double patch, double dtau, size_
 		st = fit(tl, ramp, dtau, t1 / 4.0, t1, tl->c);
 	if (!st)
 		blend(tl, dtau, n1, n, ramp);
-	tl->v = v;
+	/* the extrapolation's unit: the misfit, or the two fits' coefficients
+	 * apart where more (plate.h says why: the misfit alone can be small
+	 * by chance, and an error in c grows like x log x) */
+	double dc = fabs(tl->c[0] - cv[0]) + fabs(tl->c[1] - cv[1]) + fabs(tl->c[2] - cv[2]);
+	tl->misfit = v;
+	tl->v = st ? v : fmax(v, dc);
 	return st;
 }
 
