@@ -7,7 +7,7 @@
 . "$top_srcdir/tests/setup.sh"
 
 M=-mhertz,zener
-HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	reach_P_m	reach_bending_m	contact'
+HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	reach_P_m	reach_bending_m	contact	rest_Rf_max'
 
 # Conditions that take more than one command.
 lines() { wc -l <"$1" | tr -d ' '; }
@@ -71,8 +71,8 @@ check_exit 1 'missing scene file exits 1' "$ANVIL" run "$M" "$tmp/no-such.scene"
 check 'run -f tsv exits 0' "$ANVIL" run "$M" -f tsv
 assert 'tsv header is exactly the documented columns' [ "$(head -n 1 "$tmp/out")" = "$HEADER" ]
 assert 'one row per model, in order' [ "$(column1 "$tmp/out")" = 'model hertz zener ' ]
-assert 'tsv rows have 21 fields' \
-	awk -F '\t' 'NF != 21 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
+assert 'tsv rows have 22 fields' \
+	awk -F '\t' 'NF != 22 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
 assert 'hertz: t_s = 3.21807 T = 39.51 us, R_f = 1' \
 	awk -F '\t' 'NR == 2 { exit !($4 > 39.4 && $4 < 39.6 && $8 == 1) }' "$tmp/out"
 
@@ -84,8 +84,8 @@ assert 'h_r0 is inf for a half-space' awk -F '\t' 'NR == 2 { exit $2 != "inf" }'
 
 check 'run -f csv exits 0' "$ANVIL" run "$M" -f csv
 assert 'csv header' [ "$(head -n 1 "$tmp/out")" = "$(printf '%s' "$HEADER" | tr '\t' ',')" ]
-assert 'csv: 3 lines of 21 fields' \
-	awk -F , 'NF != 21 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
+assert 'csv: 3 lines of 22 fields' \
+	awk -F , 'NF != 22 { bad = 1 } END { exit bad || NR != 3 }' "$tmp/out"
 
 check 'run -f json exits 0' "$ANVIL" run "$M" -f json
 if command -v python3 >/dev/null 2>&1; then
@@ -476,5 +476,17 @@ assert '...says nothing on stderr (no verdict, plan warning or note)' [ ! -s "$t
 check 'run -q on a 1 nm layer' "$ANVIL" run -q -m zener -s layer.thickness=1e-9m
 assert '...still warns on the value (not chatter)' grep -q 'layer.thickness: 0.001 um is below 1 um' "$tmp/err"
 assert '...and says nothing else' [ "$(wc -l <"$tmp/err")" -eq 1 ]
+
+# ---- a row at rest on the plate: its bound in its own column ----
+check 'run: an impactor that comes to rest on the plate' "$ANVIL" run -q -m layer -f tsv \
+	-s solver.accuracy=draft -s impactor.material=steel -s layer.material=titanium \
+	-s layer.thickness=0.2933r0 -s impact.velocity=0.6047m/s -s impactor.mass=0.3101kg
+assert '...rest_Rf_max is the bound: R_f and its error its half' \
+	awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+		{ b = $c["rest_Rf_max"]; r = $c["Rf"]; e = $c["Rf_err"] }
+		END { exit !(b > 0 && b < 0.01 && r > 0 && r <= b && e > 0 && e <= b) }' "$tmp/out"
+check 'run: the default scene' "$ANVIL" run -q -m layer,hertz -f csv
+assert '...whose contacts end: rest_Rf_max nan' \
+	awk -F , 'NR > 1 && $22 != "nan" { bad = 1 } END { exit bad || NR != 4 }' "$tmp/out"
 
 done_testing

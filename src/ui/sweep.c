@@ -444,6 +444,7 @@ char *sweep_header(const struct sweep *sw, enum out_format fmt)
 		cell_text(&l, "", out_cols[i].name);
 		cell_text(&l, "", out_cols[i].err);
 	}
+	cell_text(&l, "", "rest_Rf_max");
 	return line_close(&l, 1);
 }
 
@@ -530,6 +531,10 @@ char *sweep_row(const struct sweep *sw, enum out_format fmt, size_t row, const s
 		cell_num(&l, out_cols[i].name, v);
 		cell_num(&l, out_cols[i].err, e);
 	}
+	/* the bound on R_f where the impactor came to rest on the plate (the
+	 * contact does not end: its t_s is when the bound was reached), as
+	 * anvil run's column; NaN where the contact ended */
+	cell_num(&l, "rest_Rf_max", res && res->status >= 0 && res->rest_bound > 0 ? res->rest_bound : NAN);
 	return line_close(&l, 1);
 }
 

@@ -426,6 +426,15 @@ static double contacts(const struct anvil_result *r)
 	return r->ncontacts ? (double)r->ncontacts : NAN;
 }
 
+/* The bound on R_f of a row whose impactor came to rest on the plate
+ * (result.h rest_bound: the contact does not end, its t_s is when the
+ * bound was reached), NaN where the contact ended: a table's reader can
+ * tell the two without parsing the note. */
+static double rest_max(const struct anvil_result *r)
+{
+	return r->rest_bound > 0 ? r->rest_bound : NAN;
+}
+
 static void machine_header(struct out_grid *g)
 {
 	out_grid_cell(g, "model");
@@ -441,6 +450,7 @@ static void machine_header(struct out_grid *g)
 	out_grid_cell(g, "reach_P_m");
 	out_grid_cell(g, "reach_bending_m");
 	out_grid_cell(g, "contact");
+	out_grid_cell(g, "rest_Rf_max");
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -460,6 +470,7 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", out_num(b, r->reach_p, NULL));
 	out_grid_cell(g, "%s", out_num(b, r->reach_bend, NULL));
 	out_grid_cell(g, "%s", contact_of(r));
+	out_grid_cell(g, "%s", out_num(b, rest_max(r), NULL));
 }
 
 static void table_header(struct out_grid *g)
@@ -578,8 +589,8 @@ static int results_grid(FILE *f, enum out_format fmt, const struct anvil_scene *
 {
 	/* model, h_r0, V0 and contact (not in the table: the row name says it),
 	 * values, errors, contacts, seconds, the reach (in the table a line
-	 * below) */
-	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 + 2 - 4 * (fmt == OUT_TABLE);
+	 * below), the rest's bound (in the table the note's) */
+	int ncol = 3 + NCOLUMNS + nerr() + 2 + 1 + 2 + 1 - 5 * (fmt == OUT_TABLE);
 	struct out_grid *g = out_grid_alloc(ncol);
 	if (!g)
 		return ANVIL_ENOMEM;
@@ -674,6 +685,8 @@ static void json_result(FILE *f, const struct anvil_scene *sc,
 	json_number(f, r->reach_p);
 	json_key(f, in, "reach_bending_m");
 	json_number(f, r->reach_bend);
+	json_key(f, in, "rest_Rf_max");
+	json_number(f, rest_max(r));
 	fputs("\n    }", f);
 }
 
