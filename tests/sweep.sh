@@ -143,17 +143,22 @@ head -n 4 long.tsv >cut.tsv
 printf '4\t32\t1.2' >>cut.tsv # a row cut short by a kill -9
 check "--resume after a kill mid-row" $ANVIL sweep $LONG -o cut.tsv --resume -q
 assert "...drops the cut row and completes the file" cmp -s cut.tsv long.tsv
+# Wait (at most 30 s) until the sweep PID has opened OUT's temporary file,
+# or ended.
+wait_started() {
+	local out=$1 pid=$2 n=0
+	while [ $n -lt 600 ] && [ -z "$(ls "$out".tmp* 2>/dev/null)" ] && kill -0 "$pid" 2>/dev/null; do
+		sleep 0.05
+		n=$((n + 1))
+	done
+}
 # A signal during a scene's layer row, with a model after it that still
 # finishes (the half-space): the scene is no result, not a row "failed:
 # cancelled" that --resume would then keep (qa5).
 SLOW="-m layer,halfspace -s impactor.mass=1kg layer.thickness=0.02r0 solver.accuracy=fine -j 1"
 $ANVIL sweep $SLOW -o slow.tsv -q 2>slow.err &
 pid=$!
-n=0
-while [ $n -lt 600 ] && [ -z "$(ls slow.tsv.tmp* 2>/dev/null)" ] && kill -0 $pid 2>/dev/null; do
-	sleep 0.05
-	n=$((n + 1))
-done
+wait_started slow.tsv $pid
 sleep 0.5 # into the layer row (about 2.5 s at fine; 1 s at normal, which ended first)
 sent=0
 kill -TERM $pid 2>/dev/null && sent=1
@@ -174,11 +179,7 @@ fi
 SLOW2="-m layer -s impactor.mass=1kg -s solver.accuracy=fine layer.thickness=0.02r0,0.03r0 -j 2"
 $ANVIL sweep $SLOW2 -o slow2.tsv -q 2>slow2.err &
 pid=$!
-n=0
-while [ $n -lt 600 ] && [ -z "$(ls slow2.tsv.tmp* 2>/dev/null)" ] && kill -0 $pid 2>/dev/null; do
-	sleep 0.05
-	n=$((n + 1))
-done
+wait_started slow2.tsv $pid
 sleep 1.2
 t0=$(date +%s%N)
 sent=0
