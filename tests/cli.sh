@@ -7,7 +7,7 @@
 . "$top_srcdir/tests/setup.sh"
 
 M=-mhertz,zener
-HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	reach_P_m	reach_bending_m	contact	rest_Rf_max'
+HEADER='model	h_r0	V0_m_s	ts_us	tmax_us	Pmax_kN	Vs_m_s	Rf	Ea_J	lambda_star	Rf_star	ts_err_us	tmax_err_us	Pmax_err_kN	Rf_err	Ea_err_J	contacts	time_s	reach_P_m	reach_bending_m	rest_Rf_max	contact'
 
 # Conditions that take more than one command.
 lines() { wc -l <"$1" | tr -d ' '; }
@@ -487,6 +487,6 @@ assert '...rest_Rf_max is the bound: R_f and its error its half' \
 		END { exit !(b > 0 && b < 0.01 && r > 0 && r <= b && e > 0 && e <= b) }' "$tmp/out"
 check 'run: the default scene' "$ANVIL" run -q -m layer,hertz -f csv
 assert '...whose contacts end: rest_Rf_max nan' \
-	awk -F , 'NR > 1 && $22 != "nan" { bad = 1 } END { exit bad || NR != 4 }' "$tmp/out"
+	awk -F , 'NR > 1 && $21 != "nan" { bad = 1 } END { exit bad || NR != 4 }' "$tmp/out"
 
 done_testing

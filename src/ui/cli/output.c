@@ -449,8 +449,8 @@ static void machine_header(struct out_grid *g)
 	out_grid_cell(g, "time_s");
 	out_grid_cell(g, "reach_P_m");
 	out_grid_cell(g, "reach_bending_m");
-	out_grid_cell(g, "contact");
 	out_grid_cell(g, "rest_Rf_max");
+	out_grid_cell(g, "contact"); /* last, as every table's (thickness, fit, histories) */
 }
 
 static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
@@ -469,8 +469,8 @@ static void machine_row(struct out_grid *g, const struct anvil_scene *sc,
 	out_grid_cell(g, "%s", out_num(b, r->seconds, NULL));
 	out_grid_cell(g, "%s", out_num(b, r->reach_p, NULL));
 	out_grid_cell(g, "%s", out_num(b, r->reach_bend, NULL));
-	out_grid_cell(g, "%s", contact_of(r));
 	out_grid_cell(g, "%s", out_num(b, rest_max(r), NULL));
+	out_grid_cell(g, "%s", contact_of(r));
 }
 
 static void table_header(struct out_grid *g)
