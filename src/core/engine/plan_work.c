@@ -268,9 +268,15 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * but 1.63 on h = r0, 1 kg at 10 m/s. */
 /* Long mode: the weights a level makes (impact_impl.h IMPACT_LONG_SEG,
  * both passes), and the far field's cost per grown node and frozen level
- * (its FAR_P sums, a chunk's share of them; impact_grow.c). */
+ * (its FAR_P sums, a chunk's share of them; impact_grow.c).  IMPACT_FAR
+ * was 1.0e-6 until a chunk's far targets went in interpolated runs
+ * (impact_far.c far_run) and the end's search took 5 evaluations
+ * (impact_end.c): then 13 of the grid's 195 rows of 0.1 s or more were
+ * priced 2.03-2.46 times their CPU, long-mode rows at 0.14-0.29 s; at
+ * 0.4e-6 all 195 are within 0.56-1.95 (median 1.12; the low end the
+ * band's doubling at lambda* ~ 9000, above). */
 #define IMPACT_LONG_W 4096.0
-#define IMPACT_FAR 1.0e-6
+#define IMPACT_FAR 0.4e-6
 #define IMPACT_GROWN 12.0
 #define IMPACT_HIST 3.5e-6
 #define IMPACT_TAB 1.6e-7
