@@ -144,7 +144,7 @@ struct anvil_plate_tail {
  * inversion) for j < n1, over the window [0, tau_end]: the fit of
  * a + b t + c t log t to g - (K - s_hs t) over [T1/4, T1] with
  * T1 = (n1 - 2) dtau; then ramp[j] for n1 <= j < n (n - n1 small: the
- * spline's pad) the model's values, and over [T1/2, T1] the blend from
+ * spline's pad) the model's values, and over [T1/4, T1] the blend from
  * the inversion to the model (plate.c says why).  tl->misfit: the same
  * fit made over [T1/8, T1/2] (the validation) misses the inversion over
  * [T1/2, T1] by it: the tail's error at T1.  Beyond, the error is the
