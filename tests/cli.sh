@@ -65,6 +65,8 @@ assert 'bad scene key: message has file:line' grep -q 'bad.scene:3:' "$tmp/err"
 check_exit 2 '-s without = exits 2' "$ANVIL" run "$M" -s layer.thickness
 check_exit 2 '-s unknown key exits 2' "$ANVIL" run "$M" -s layer.thicknes=2r0
 check_exit 2 '-s bad value exits 2' "$ANVIL" run "$M" -s impact.velocity=fast
+check_exit 2 '-s layer.thickness=0 exits 2' "$ANVIL" run "$M" -s layer.thickness=0
+assert '...says it must be > 0, not that 0 needs a unit' grep -q "layer.thickness: must be > 0, got '0' (or 'inf'" "$tmp/err"
 check_exit 1 'missing scene file exits 1' "$ANVIL" run "$M" "$tmp/no-such.scene"
 
 # ---- run: formats ----

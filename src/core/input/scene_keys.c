@@ -408,6 +408,9 @@ static int set_thickness(struct anvil_scene *sc, void *base, const struct key *k
 	} else if (anvil_units_parse(value, ANVIL_DIM_LENGTH, &v, NULL)) {
 		goto bad;
 	} else if (anvil_units_parse_with_unit(value, ANVIL_DIM_LENGTH, &v, err)) {
+		if (!(v > 0)) /* a bare 0 or less: no unit makes it a thickness */
+			return anvil_err_set(err, ANVIL_EPARSE, "must be > 0, got '%s' (or 'inf' "
+					     "for a half-space)", value);
 		return anvil_err_set(err, ANVIL_EPARSE, "'%s' needs a unit, e.g. %s mm or %s r0 "
 				     "(lengths: m, cm, mm, um; or 'inf')", value, value, value);
 	}
