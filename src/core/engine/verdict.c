@@ -271,9 +271,10 @@ void anvil_verdict_text_screen(const struct anvil_verdict *v, char *buf, size_t 
 		/* judged on the bending: it leads, as a screen line is cut */
 		char b[32];
 		stress_text(v->bend, b, sizeof b);
-		snprintf(buf, n, "layer %s (plate bending): %s at the far face, Y = %s, t = %.3g us "
+		snprintf(buf, n, "layer %s (plate bending): %s at the far face, %s%s, t = %.3g us "
 			 "(Kirchhoff plate, within %.0f %%); under the contact (%s) %s %s %s, t = %.3g us%s%s",
-			 fate_word(v->fate, v->known), b, l, v->bend_t * 1e6, 100 * v->bend_tol,
+			 fate_word(v->fate, v->known), b, v->brittle ? "tensile strength " : "Y = ", l,
+			 v->bend_t * 1e6, 100 * v->bend_tol,
 			 v->dynamic ? "the dynamic field" : "quasi-static Hertz", s,
 			 v->brittle ? "edge tension (1-2nu) p0/3" : "von Mises", where, v->t * 1e6,
 			 f[0] ? ";" : "", f);
