@@ -155,7 +155,7 @@ struct anvil_plate_tail {
  * misfit (x - 1) until 2026-11 (the brief "t1thin"): the misfit can be
  * small by chance (the two fits agreeing over [T1/2, T1] while their c
  * differ), and the true error at 8 T1 reached 12.7 times that bound
- * (h = 0.85 r0, a point load, band 2, filtered, normal: 39 of 144 cases
+ * (h = 0.85 r0, a point load, band 2, filtered, normal: 36 of 144 cases
  * over 1 at h = 0.3-1 r0, T1 = 32), growing like x log x, to 29 times at
  * 64 T1.  No T1 cured it: 12.7, 6.0, 12.7, 19.3, 2.6 at most at T1 = 32,
  * 48, 64, 96, 128 over the same cases, not monotone (figures in
