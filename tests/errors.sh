@@ -17,6 +17,10 @@ if [ -c /dev/full ]; then
 	check_exit 1 'run --history /dev/full: exit 1' "$ANVIL" run $M --history /dev/full -o "$K/r.tsv"
 	assert '...saying which file and why' grep -q '^anvil: /dev/full: write failed: No space left' "$tmp/err"
 	assert '...and the results file is not left behind' [ ! -e "$K/r.tsv" ]
+	check_exit 1 'run --history /dev/full, the table on standard output: exit 1' \
+		"$ANVIL" run -q $M --history /dev/full
+	assert '...one line, the history file (standard output was not written to)' \
+		sh -c '[ "$(wc -l <"$0")" -eq 1 ] && grep -q "^anvil: /dev/full: write failed" "$0"' "$tmp/err"
 	check_exit 1 'run -f json > /dev/full: exit 1' sh -c "\"\$ANVIL\" run $M -f json >/dev/full"
 	assert '...saying so' grep -q '^anvil: standard output: write failed: No space left' "$tmp/err"
 	# (qa7: "table: input/output error", "field: ...", "sweep: write failed")

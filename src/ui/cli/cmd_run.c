@@ -222,8 +222,7 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 static int run_fill(struct cli_out *o, const char *path, int st)
 {
 	if (st == ANVIL_EIO || (!st && (fflush(o->f) != 0 || ferror(o->f)))) {
-		cli_error("%s: write failed: %s", path && strcmp(path, "-") ? path : "standard output",
-			  strerror(errno));
+		cli_write_failed(path);
 		st = ANVIL_EIO;
 	}
 	return st;
@@ -244,10 +243,11 @@ static int run_write(const struct anvil_scene *sc, const struct run_opts *o,
 		st = run_fill(out, o->out, out_results(out->f, fmt, sc, res, n));
 	if (!st && o->history)
 		st = cli_out_commit(hist);
-	if (!st && !to_file && sc->output.table)
-		st = out_results(out->f, fmt, sc, res, n);
-	if (st == ANVIL_EIO && !to_file && errno != EPIPE) /* as cli_out_commit */
-		cli_error("standard output: write failed: %s", strerror(errno));
+	/* the table on standard output: its own write failure said here (a
+	 * history's was said by run_fill: not again as standard output's) */
+	if (!st && !to_file && sc->output.table &&
+	    (st = out_results(out->f, fmt, sc, res, n)) == ANVIL_EIO)
+		cli_write_failed(NULL);
 	if (!st)
 		st = cli_out_commit(out);
 	if (st) {
