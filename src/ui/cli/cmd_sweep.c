@@ -438,10 +438,7 @@ int anvil_cmd_sweep(int argc, char **argv)
 		code = sweep_build(&sw, &o);
 	if (code < 0)
 		code = sweep_go(&sw, &o);
-	/* interrupted (128 + signal): runs under way were left to end with the
-	 * process (sweep_run) and may still read the sweep: not freed */
-	if (code < 128)
-		sweep_free(&sw);
+	sweep_free(&sw);
 	cli_sets_free(&o.sets);
 	free(o.models);
 	free(o.axes);
