@@ -107,26 +107,26 @@ static void note_unphysical(struct anvil_result *r)
 			 "still moving in: re-contact not modelled");
 }
 
-static void run_scene(struct anvil_solver *s, const struct sweep *sw,
-		      const struct anvil_plan_share *share, size_t idx, struct sweep_done *d)
+/* Scene idx (sc, st and err from sweep_scene; err takes the plan's) into d. */
+static void run_scene(struct anvil_solver *s, const struct anvil_scene *sc, int st,
+		      struct anvil_err *err, const struct anvil_plan_share *share, size_t idx,
+		      struct sweep_done *d)
 {
-	struct anvil_scene sc;
-	struct anvil_err err = {0};
 	struct anvil_plan pl;
 	d->scene = idx;
-	d->st = sweep_scene(sw, idx, &sc, &err);
+	d->st = st;
 	if (!d->st)
-		d->st = cli_plan(&sc, anvil_solver_cache(s), &pl, &err);
+		d->st = cli_plan(sc, anvil_solver_cache(s), &pl, err);
 	if (!d->st && share)
 		anvil_plan_share_apply(&pl, share);
-	if (!d->st && !anvil_scene_models(&sc))
-		d->st = anvil_err_set(&err, ANVIL_EINVAL, "no model to run");
+	if (!d->st && !anvil_scene_models(sc))
+		d->st = anvil_err_set(err, ANVIL_EINVAL, "no model to run");
 	if (d->st) {
-		snprintf(d->why, sizeof d->why, "%s", err.msg[0] ? err.msg : anvil_strerror(d->st));
+		snprintf(d->why, sizeof d->why, "%s", err->msg[0] ? err->msg : anvil_strerror(d->st));
 		return;
 	}
 	struct sweep_rowkey k[SWEEP_MAXROWS];
-	int nk = sweep_scene_rows(&sc, k);
+	int nk = sweep_scene_rows(sc, k);
 	for (int i = 0; i < nk && k[i].model < ANVIL_MODEL_COUNT; i++) {
 		anvil_solver_run_contact(s, &pl, k[i].model, k[i].contact, 0, &d->r[d->n], NULL);
 		note_unphysical(&d->r[d->n]);
@@ -186,10 +186,16 @@ static void *worker(void *arg)
 	while (s && !halted(p) && pool_take(p, &u, &idx)) {
 		if (p->skip && p->skip[idx - p->s0])
 			continue;
+		/* the scene made under the lock: once halted, no worker reads
+		 * the sweep again (a signal leaves runs under way to end with
+		 * the process, and the caller frees the sweep: sweep_run) */
+		struct anvil_scene sc;
+		struct anvil_err err = {0};
+		int sst = sweep_scene(p->sw, idx, &sc, &err);
 		pthread_mutex_unlock(&p->mu);
 		struct sweep_done *d = calloc(1, sizeof *d);
 		if (d)
-			run_scene(s, p->sw, p->share ? &p->share[idx - p->s0] : NULL, idx, d);
+			run_scene(s, &sc, sst, &err, p->share ? &p->share[idx - p->s0] : NULL, idx, d);
 		pthread_mutex_lock(&p->mu);
 		if (!d)
 			p->halt = 1;
