@@ -75,6 +75,10 @@ check_exit 2 "thickness: a --range beyond what layer.thickness takes is refused 
 	$ANVIL thickness $D --range 1e-9..1e9 -o none.tsv
 assert "...naming the bounds, no file written" \
 	sh -c 'grep -q "layer.thickness takes 1e-06..1e+06 r0" "$0" && [ ! -e none.tsv ]' "$tmp/err"
+check_exit 2 "fit: a --range beyond what the key takes is refused at once" \
+	$ANVIL fit $D ts=40us --for impact.velocity --range 1e-9..10 -o none.tsv
+assert "...naming the key's bounds, no file written" \
+	sh -c 'grep -q "impact.velocity takes 1e-06..100000 m/s" "$0" && [ ! -e none.tsv ]' "$tmp/err"
 
 check "thickness --range 16..64 (an integer LO: not read as 16. and .64)" \
 	$ANVIL thickness $D -s effects.contact=paper --range 16..64 -f tsv -o r16.tsv

@@ -26,6 +26,7 @@
 #include "commands.h"
 #include "common.h"
 #include "output.h"
+#include "scene_keys.h"
 #include "units.h"
 
 #define FIT_STEPS 6      /* grid points a decade: 47 % apart */
@@ -34,16 +35,17 @@
 #define FIT_MAXITER 100
 
 /* The unknowns: key, SI unit for the scene, default range (SI; thickness
- * in r0), how to show it. */
+ * in r0), what the key takes (scene_keys.h: --range stays inside), how to
+ * show it. */
 struct fit_key {
 	const char *key, *unit;
-	double lo, hi;
+	double lo, hi, min, max;
 	enum anvil_dim dim;
 };
 static const struct fit_key fit_keys[] = {
-	{"layer.thickness", "r0", 0.25, 64, ANVIL_DIM_LENGTH},
-	{"layer.E", "Pa", 1e9, 1e12, ANVIL_DIM_PRESSURE},
-	{"impact.velocity", "m/s", 0.01, 100, ANVIL_DIM_VELOCITY},
+	{"layer.thickness", "r0", 0.25, 64, ANVIL_RANGE_H_R0, ANVIL_DIM_LENGTH},
+	{"layer.E", "Pa", 1e9, 1e12, ANVIL_RANGE_E, ANVIL_DIM_PRESSURE},
+	{"impact.velocity", "m/s", 0.01, 100, ANVIL_RANGE_VELOCITY, ANVIL_DIM_VELOCITY},
 };
 #define NKEYS ((int)(sizeof fit_keys / sizeof fit_keys[0]))
 
@@ -475,6 +477,9 @@ static int fit_parse(struct fit *f, int argc, char **argv)
 	if (range && fit_range(f, range))
 		return out_usage("fit", "--range %s: expected LO..HI in %s, e.g. %g..%g", range, f->k->unit,
 				 f->k->lo, f->k->hi);
+	if (f->lo < f->k->min || f->hi > f->k->max)
+		return out_usage("fit", "--range %s: %s takes %g..%g %s", range, f->k->key, f->k->min,
+				 f->k->max, f->k->unit);
 	f->format = out_format_pick(f->format, f->out);
 	return -1;
 }
