@@ -26,7 +26,9 @@ for args in "-s layer.thickness=1r0 -s impact.velocity=10m/s" \
 done
 # The physical row warm (its responses from the disk cache): the row's
 # impact and its error estimate's four run side by side on the threads
-# (solver_phys.c phys_rounds); cold, the error runs only after the row's own.
+# (solver_phys.c phys_rounds); cold, the error runs only after the row's own,
+# and warm too where the row will likely come to rest (the thin plate's
+# third case, at rest: its error runs stop at its rest time).
 # Every column but time_s, against a cold run, with 1 and 2 threads.
 physical() {
 	"$ANVIL" run -q -m layer -s effects.contact=physical --format tsv "$@" |
@@ -35,7 +37,8 @@ physical() {
 }
 export XDG_CACHE_HOME="$tmp/xdg"
 for args in "-s layer.thickness=1r0 -s impact.velocity=9.5m/s" \
-	"-s layer.thickness=0.25r0 -s impactor.mass=100g -s impact.velocity=10m/s"; do
+	"-s layer.thickness=0.25r0 -s impactor.mass=100g -s impact.velocity=10m/s" \
+	"-s layer.thickness=0.05r0 -s impactor.mass=10kg -s impact.velocity=0.01m/s"; do
 	# shellcheck disable=SC2086
 	ANVIL_NO_CACHE=1 physical $args >"$tmp/cold"
 	# shellcheck disable=SC2086
