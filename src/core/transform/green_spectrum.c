@@ -469,7 +469,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	 * pieces fell from 69 to 15 a k-integral (all evaluations 7.9 M to
 	 * 4.1 M). */
 	double w0 = hs ? 0.5 : anvil_kband_piece(hh, kband), w1 = hs ? 4.0 : ANVIL_KTAIL_PIECE;
-	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, kband);
+	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, q->nu, kband);
 	q->klift = q->lift > 0 ? kband : 0.0;
 	q->kband = kband;
 	if (q->lift > 0)
