@@ -48,7 +48,8 @@ static double refine(double hh, double tau_end, double omega)
  * 0.89-1.24 and 0.97-1.16 with this. */
 
 /* A term whose band is lifted off the real axis (kernel.h
- * anvil_kband_lift: below 0.9 of the first thickness resonance) has no
+ * anvil_kband_lift: below anvil_lift_cutoff, from 0.9 of the first
+ * thickness resonance to 0.8 of S1's cutoff) has no
  * poles to chase: its band's starting pieces (2 H wide) split LIFT_SPLIT
  * times over, and the refine() growth does not apply; its tail's pieces
  * LIFT_TAIL of the KTAIL_SPLIT guess.  Fitted on test_work's four samples
@@ -105,7 +106,7 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 			fits += stride * (GREEN_TAIL_DEG + 1) / 21.0 * green_tail_count(hh, kband, kend);
 			tail = 0;
 		}
-		double lift = anvil_kband_lift(om, hh, kband);
+		double lift = anvil_kband_lift(om, hh, nu, kband);
 		if (lift > 0)
 			lifted += stride * (LIFT_SPLIT * split_f *
 						    ceil(kband / anvil_kband_lift_piece(hh, kband, lift)) +

@@ -69,13 +69,17 @@ struct quad {
  * asks for them (gk21.c: always the same), emptied for the next s by a
  * new generation.  A value from it is the one the kernel would give: the
  * responses' bits do not depend on which others were computed with them.
+ * On the lifted band each node also keeps the contour's k and dk/dx (the
+ * same for the set's loads: one sincos a node, which the loads after the
+ * first took again on every memo hit).
  * Hand-written: GSL has no hash table. */
 #define GK_NODES 21
+#define KM_VALS 3 /* a node's W, k, dk/dx */
 
 struct kslot {
 	double a, b;
 	unsigned gen;
-	size_t at; /* its values: pool[at .. at + GK_NODES) */
+	size_t at; /* its values: pool[at .. at + KM_VALS GK_NODES) */
 };
 
 struct kmemo {
@@ -91,7 +95,7 @@ struct kmemo {
 static int kmemo_init(struct kmemo *m)
 {
 	*m = (struct kmemo){ calloc(KMEMO_CAP0, sizeof *m->s), KMEMO_CAP0, 0, 1,
-			     malloc(KMEMO_CAP0 / 2 * GK_NODES * sizeof *m->pool) };
+			     malloc(KMEMO_CAP0 / 2 * KM_VALS * GK_NODES * sizeof *m->pool) };
 	return m->s && m->pool;
 }
 
@@ -124,7 +128,7 @@ static void kmemo_next(struct kmemo *m)
 static void kmemo_grow(struct kmemo *m)
 {
 	struct kmemo b = { calloc(2 * m->cap, sizeof *b.s), 2 * m->cap, 0, m->gen,
-			   realloc(m->pool, m->cap * GK_NODES * sizeof *m->pool) };
+			   realloc(m->pool, m->cap * KM_VALS * GK_NODES * sizeof *m->pool) };
 	if (b.pool)
 		m->pool = b.pool;
 	if (!b.s || !b.pool) {
@@ -159,7 +163,7 @@ static void kmemo_piece(struct kmemo *m, double a, double b, struct quad *q)
 	}
 	if (2 * (m->n + 1) > m->cap)
 		return;
-	m->s[i] = (struct kslot){ a, b, m->gen, m->n * GK_NODES };
+	m->s[i] = (struct kslot){ a, b, m->gen, m->n * KM_VALS * GK_NODES };
 	q->seg = m->pool + m->s[i].at;
 	q->seg_hit = 0;
 	m->n++;
@@ -171,7 +175,7 @@ static cplx correction(struct quad *q, double x, cplx k)
 {
 	struct anvil_layer_bc bc;
 	if (q->seg && q->seg_hit)
-		return q->seg[q->seg_at++];
+		return q->seg[KM_VALS * q->seg_at++];
 	if (q->tail_on && x > q->kband)
 		return green_tail_w(&q->tail, x);
 	q->evals++;
@@ -181,7 +185,7 @@ static cplx correction(struct quad *q, double x, cplx k)
 		anvil_layer_bc_solve(x, q->s, q->kap2, q->hh, &bc);
 	cplx w = anvil_layer_bc_w_correction(&bc);
 	if (q->seg)
-		q->seg[q->seg_at++] = w;
+		q->seg[KM_VALS * q->seg_at++] = w;
 	return w;
 }
 
@@ -255,11 +259,25 @@ static cplx integrand(double x, void *vq)
 	if (x >= q->klift)
 		return correction(q, x, x) *
 		       (q->zh_on ? q->zh[q->zh_at++] : anvil_kernel_zhat(x * q->patch)) * x;
-	/* on the lifted contour k(x) = x + i lift sin(pi x/klift), times dk/dx */
-	double t = M_PI * x / q->klift;
-	cplx k = anvil_kernel_cmplx(x, q->lift * sin(t));
-	cplx dk = anvil_kernel_cmplx(1.0, q->lift * M_PI / q->klift * cos(t));
-	return correction(q, x, k) * anvil_kernel_zhat_c(k * q->patch) * k * dk;
+	/* on the lifted contour k(x) = x + i lift sin(pi x/klift), times dk/dx
+	 * (the node's three from the memo when it has them) */
+	cplx w, k, dk;
+	if (q->seg && q->seg_hit) {
+		const cplx *v = q->seg + KM_VALS * q->seg_at++;
+		w = v[0];
+		k = v[1];
+		dk = v[2];
+	} else {
+		double t = M_PI * x / q->klift;
+		k = anvil_kernel_cmplx(x, q->lift * sin(t));
+		dk = anvil_kernel_cmplx(1.0, q->lift * M_PI / q->klift * cos(t));
+		w = correction(q, x, k);
+		if (q->seg) {
+			q->seg[KM_VALS * (q->seg_at - 1) + 1] = k;
+			q->seg[KM_VALS * (q->seg_at - 1) + 2] = dk;
+		}
+	}
+	return w * anvil_kernel_zhat_c(k * q->patch) * k * dk;
 }
 
 /* Globally adaptive bisection (as QUADPACK's qag, which GSL offers for real
@@ -469,7 +487,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	 * pieces fell from 69 to 15 a k-integral (all evaluations 7.9 M to
 	 * 4.1 M). */
 	double w0 = hs ? 0.5 : anvil_kband_piece(hh, kband), w1 = hs ? 4.0 : ANVIL_KTAIL_PIECE;
-	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, kband);
+	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, q->nu, kband);
 	q->klift = q->lift > 0 ? kband : 0.0;
 	q->kband = kband;
 	if (q->lift > 0)

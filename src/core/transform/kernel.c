@@ -124,9 +124,15 @@ double anvil_kband_piece(double hh, double kband)
 	return fmin(2.0 / hh, fmin(4.0, fmax(1.0, kband / 32.0)));
 }
 
-double anvil_kband_lift(double omega, double hh, double kband)
+double anvil_lift_cutoff(double nu)
 {
-	if (!(isfinite(hh) && omega * hh < ANVIL_LIFT_CUTOFF * M_PI))
+	double c1 = sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)); /* c1/c2 */
+	return fmax(ANVIL_LIFT_CUTOFF, ANVIL_LIFT_S1 * fmin(c1, 2.0));
+}
+
+double anvil_kband_lift(double omega, double hh, double nu, double kband)
+{
+	if (!(isfinite(hh) && omega * hh < anvil_lift_cutoff(nu) * M_PI))
 		return 0.0;
 	return fmin(fmin(ANVIL_LIFT_MAX, 0.5 / hh), 0.5 * kband / M_PI);
 }

@@ -92,18 +92,31 @@ double anvil_kband_piece(double hh, double kband);
  * omega = pi c2/h) only A0 and S0 propagate, both forward; the first
  * quadrant holds only evanescent roots: A0's at 45 degrees or steeper
  * (Kirchhoff: k^4 = -s^2 rho h/D), and the complex modes at Im k >= 2.25/hh
- * (sin 2z + 2z = 0, z = k hh/2).  So H is taken where omega hh <
- * ANVIL_LIFT_CUTOFF pi, and at most 0.5 kband/pi (a slope of at most 0.5:
+ * (sin 2z + 2z = 0, z = k hh/2).  Above it A1 propagates, forward too,
+ * and the branches of the modes not yet cut on lie near Re k = 0, steeper
+ * than the contour; the first backward wave (pole above the axis) is
+ * S1's, between its zero-group-velocity point and its cutoff omega h =
+ * pi min(c1, 2 c2).  So H is taken where omega hh <
+ * anvil_lift_cutoff(nu) pi, and at most 0.5 kband/pi (a slope of at most 0.5:
  * below 27 degrees), 0.5/hh (a quarter of the complex modes' height) and
  * ANVIL_LIFT_MAX (zhat(k a) grows like exp(a H), a <= 1).  Off the real
  * axis the poles (c0/c_group below it) are H sin(...) further from the
  * path: the peaks the bisection chased are gone.  tests/test_lift.c checks
- * the two paths agree within their error estimates, and finds the first
- * disagreement (S1's backward wave, whose pole lies above the axis) at
- * omega hh/pi = 1.75 for nu = 0.3. */
+ * the two paths agree within their error estimates to past the cutoff,
+ * and finds the first disagreement (S1's backward wave, whose pole lies
+ * above the axis) at omega hh/pi = 1.75 for nu = 0.3; carried to 2.2 pi/hh
+ * (h = 0.05 r0, patch 0.5, T' = 64) at 0.93-0.97 of S1's cutoff over nu =
+ * 0-0.38 (nu = -0.5, 0.45, 0.49: none).  The cutoff is ANVIL_LIFT_S1 of
+ * S1's cutoff, at least ANVIL_LIFT_CUTOFF (the first thickness resonance's
+ * 0.9, where the lift stopped before: h = 0.02 r0 at 10 m/s spent 30 % of
+ * its evaluations on the terms above it). */
 #define ANVIL_LIFT_CUTOFF 0.9
+#define ANVIL_LIFT_S1 0.8
 #define ANVIL_LIFT_MAX 8.0
-double anvil_kband_lift(double omega, double hh, double kband);
+/* omega hh/pi below which the band is lifted: max(ANVIL_LIFT_CUTOFF,
+ * ANVIL_LIFT_S1 min(c1/c2, 2)) */
+double anvil_lift_cutoff(double nu);
+double anvil_kband_lift(double omega, double hh, double nu, double kband);
 
 /* The starting pieces of a band lifted by H = lift: as anvil_kband_piece,
  * and at least 2 H (at most kband) wide: the path is H from the poles. */
