@@ -90,16 +90,30 @@ static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size
 		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
 		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
 	}
+	/* lam_j F_j / (x - x_j) as the products lam_j F_j over x - x_j (the
+	 * same bits), the exact hit apart: a loop the compiler makes packed
+	 * (this loop was a third of the far field's cost, the far sums
+	 * the rest) */
+	double lf[FAR_P];
+	for (int j = 0; j < FAR_P; j++)
+		lf[j] = lam[j] * F[j];
 	for (size_t k = k0; k <= k1; k++) {
 		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
-		double num = 0, den = 0, hit = NAN;
-		for (int j = 0; j < FAR_P && isnan(hit); j++) {
-			if (x == xn[j])
-				hit = F[j];
-			num += lam[j] * F[j] / (x - xn[j]);
-			den += lam[j] / (x - xn[j]);
+		double d[FAR_P], num = 0, den = 0;
+		int hit = -1;
+		for (int j = 0; j < FAR_P; j++) {
+			d[j] = x - xn[j];
+			hit = d[j] == 0.0 && hit < 0 ? j : hit;
 		}
-		out[k] += isnan(hit) ? num / den : hit;
+		if (hit >= 0) {
+			out[k] += F[hit];
+			continue;
+		}
+		for (int j = 0; j < FAR_P; j++) {
+			num += lf[j] / d[j];
+			den += lam[j] / d[j];
+		}
+		out[k] += num / den;
 	}
 }
 
