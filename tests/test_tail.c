@@ -201,6 +201,52 @@ static void test_s_table_thin(void)
 	free(k);
 }
 
+/* The table's late nodes (plate.c, nodes_fill): beyond beta t = 4
+ * patch^2 three in four are the Lagrange interpolant of the quadratures
+ * about them.  Every node against its quadrature: the quadrature nodes
+ * its very bits, the filled ones within the quadrature's own tolerance,
+ * 1e-12 of K/t^2 and 1e-12/hh in S/t (measured: 1e-13 and 2e-15/hh); and
+ * a node does not depend on the window nor on the memo (a shorter
+ * window's table first, then this one from it: the same bits). */
+static void test_fill(double hh, double patch)
+{
+	double dtau = 0.25, tau_end = 1e5;
+	size_t n1 = 130, n = n1 + ANVIL_PLATE_PAD; /* T1 = (n1 - 2) dtau = 32 */
+	double *ramp = calloc(n, sizeof *ramp);
+	struct anvil_plate_tail tl, ts, tm;
+	struct anvil_plate_memo *m = anvil_plate_memo_alloc();
+	int st = !ramp || !m ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, NULL, &tl) ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, 4e3, m, &ts) ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, m, &tm);
+	double u0 = log(32.0 / 17.0), h = M_LN2 / ANVIL_PLATE_PER_OCTAVE, wk = 0, ws = 0;
+	size_t nq = 0, nf = 0, same = 0, memo_same = 1;
+	for (size_t i = 0; !st && i < tl.nk; i++) {
+		double q, qs, t = exp(u0 + (double)i * h);
+		st = anvil_plate_k(hh, 0.3, patch, t, &q) || anvil_plate_s(hh, 0.3, patch, t, &qs);
+		if (tl.k[i] == q && tl.shear[i] == qs) {
+			same++;
+			if (i % 4 == 0 || 4.0 * patch * patch / tl.beta > t)
+				nq++;
+		} else if (i % 4 != 0 && t >= 4.0 * patch * patch / tl.beta) {
+			nf++;
+		}
+		wk = fmax(wk, fabs(tl.k[i] - q) / q);
+		ws = fmax(ws, fabs(tl.shear[i] - qs) * hh);
+		memo_same &= tm.k[i] == tl.k[i] && tm.shear[i] == tl.shear[i];
+	}
+	ok(!st && same + nf == tl.nk && nf > tl.nk / 3 && wk < 1e-12 && ws < 1e-12,
+	   "h = %g r0, patch %g: %zu of %zu nodes filled, within %.1e of K/t^2 and %.1e/hh of S/t; "
+	   "the rest their quadratures' bits", hh, patch, nf, tl.nk, wk, ws);
+	ok(!st && memo_same && tm.nk == tl.nk,
+	   "  the same bits through the memo, from a shorter window's table (%zu nodes)", ts.nk);
+	anvil_plate_tail_free(&tl);
+	anvil_plate_tail_free(&ts);
+	anvil_plate_tail_free(&tm);
+	anvil_plate_memo_free(m);
+	free(ramp);
+}
+
 /* The closed form beyond T1 against the response before this change: the
  * same model sampled at the inversion's step dtau to the window's end and
  * interpolated by a natural cubic spline.  They differ by that spline's
@@ -450,6 +496,8 @@ int main(void)
 	test_k_quadrature();
 	test_s_coefficients();
 	test_s_table_thin();
+	test_fill(0.02, 0.5);
+	test_fill(0.1, 1.0);
 	test_long_window();
 	test_cache();
 	test_t_plate();

@@ -54,7 +54,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 18 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 19 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -79,7 +79,9 @@ struct anvil_halfspace; /* halfspace.h */
 				 K and S table by Gauss-Kronrod on fixed panels,
 				 plate.c panel_qk31: other bits; 18: the tail's
 				 stored unit v the larger of the fit's misfit and
-				 its coefficients' spread, plate.h) */
+				 its coefficients' spread, plate.h; 19: the
+				 table's late nodes (beta t >= 4 patch^2) three
+				 in four interpolated, plate.c nodes_fill) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
