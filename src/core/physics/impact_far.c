@@ -77,43 +77,37 @@ double impact_far_sum(const struct ctx *c, const struct frozen *f, double t)
 /* The far field of f at the targets k0 .. k1 (t0, t1 the first and
  * last), a run within 1/FAR_RHO of its distance from the charges: its
  * interpolant at FAR_P Chebyshev points of the targets (the same error as
- * the charges', the two ends' roles swapped), added to out[k]. */
+ * the charges', the two ends' roles swapped), added to out[k].  The
+ * interpolant as its Chebyshev series (the discrete cosine transform of
+ * the values, which the points of the first kind make exact) summed by
+ * Clenshaw's recurrence: 2 FAR_P multiplications a target where the
+ * barycentric form's 2 FAR_P divisions had been a third of the far
+ * field's cost (h = 0.02 r0, 1 kg at 10 m/s: 1.06e6 targets in 8180
+ * runs); both are backward stable, their values apart by rounding. */
 static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t k1,
 		    double *out)
 {
 	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
 	double t1 = (double)(u0 + (k1 << c->lev)) * c->dt0;
-	double F[FAR_P], xn[FAR_P], lam[FAR_P];
+	double F[FAR_P], a[FAR_P];
 	for (int j = 0; j < FAR_P; j++) {
-		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
-		xn[j] = cos(th);
-		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
-		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
+		double xn = cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
+		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn);
 	}
-	/* lam_j F_j / (x - x_j) as the products lam_j F_j over x - x_j (the
-	 * same bits), the exact hit apart: a loop the compiler makes packed
-	 * (this loop was a third of the far field's cost, the far sums
-	 * the rest) */
-	double lf[FAR_P];
-	for (int j = 0; j < FAR_P; j++)
-		lf[j] = lam[j] * F[j];
+	for (int m = 0; m < FAR_P; m++) {
+		double sum = 0;
+		for (int j = 0; j < FAR_P; j++)
+			sum += F[j] * cos(m * (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
+		a[m] = (m ? 2.0 : 1.0) * sum / FAR_P;
+	}
 	for (size_t k = k0; k <= k1; k++) {
 		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
-		double d[FAR_P], num = 0, den = 0;
-		int hit = -1;
-		for (int j = 0; j < FAR_P; j++) {
-			d[j] = x - xn[j];
-			hit = d[j] == 0.0 && hit < 0 ? j : hit;
+		double b1 = 0, b2 = 0;
+		for (int m = FAR_P - 1; m >= 1; m--) {
+			double b0 = 2.0 * x * b1 - b2 + a[m];
+			b2 = b1, b1 = b0;
 		}
-		if (hit >= 0) {
-			out[k] += F[hit];
-			continue;
-		}
-		for (int j = 0; j < FAR_P; j++) {
-			num += lf[j] / d[j];
-			den += lam[j] / d[j];
-		}
-		out[k] += num / den;
+		out[k] += x * b1 - b2 + a[0];
 	}
 }
 
