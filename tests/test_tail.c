@@ -247,6 +247,35 @@ static void test_fill(double hh, double patch)
 	free(ramp);
 }
 
+/* The impulse response (plate.c imp_coefs: the B-spline's segments as
+ * polynomials) against the step's derivative by a fourth-order central
+ * difference (delta = 1e-4 t, within a node interval mostly: its error
+ * is the rounding's, 1e-12 of the step over delta), on the thinnest
+ * plate with the paper's patch, where S is largest, and past its filled
+ * nodes: within 3e-8 of the impulse response's scale, 2 alpha* (measured
+ * 6e-9 and 1e-9; an S cubic coefficient off by a third: 1.1e-7); a wrong
+ * coefficient would be O(1) of a term. */
+static void test_impulse(double hh, double patch)
+{
+	double dtau = 0.25, tau_end = 1e4, worst = 0, scale = 2.0 / (8.0 * (hh / sqrt(4.2)) * hh);
+	size_t n1 = 130, n = n1 + ANVIL_PLATE_PAD;
+	double *ramp = calloc(n, sizeof *ramp);
+	struct anvil_plate_tail tl;
+	int st = !ramp || anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, NULL, &tl);
+	for (double u = log(4.0); !st && u < log(0.9 * tau_end); u += 0.0137) {
+		double t = exp(u), d = 1e-4 * t;
+		double ds = (8.0 * (anvil_plate_tail_step(&tl, t + d) - anvil_plate_tail_step(&tl, t - d)) -
+			     (anvil_plate_tail_step(&tl, t + 2 * d) - anvil_plate_tail_step(&tl, t - 2 * d))) /
+			    (12.0 * d);
+		worst = fmax(worst, fabs(anvil_plate_tail_impulse(&tl, t) - ds) / scale);
+	}
+	ok(!st && tl.shear_on && worst < 3e-8,
+	   "h = %g r0, patch %g: the tail's impulse response is its step's derivative to %.1e of 2 alpha*",
+	   hh, patch, worst);
+	anvil_plate_tail_free(&tl);
+	free(ramp);
+}
+
 /* The closed form beyond T1 against the response before this change: the
  * same model sampled at the inversion's step dtau to the window's end and
  * interpolated by a natural cubic spline.  They differ by that spline's
@@ -498,6 +527,8 @@ int main(void)
 	test_s_table_thin();
 	test_fill(0.02, 0.5);
 	test_fill(0.1, 1.0);
+	test_impulse(0.02, 1.0);
+	test_impulse(0.1, 0.5);
 	test_long_window();
 	test_cache();
 	test_t_plate();
