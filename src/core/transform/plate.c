@@ -576,27 +576,31 @@ static void qi_coefs(const double *k, size_t n, double *bc)
 		bc[i] = (k[i - 2] - 10.0 * k[i - 1] + 54.0 * k[i] - 10.0 * k[i + 1] + k[i + 2]) / 36.0;
 }
 
-/* The impulse response's part from the tables in interval j (tail_at)
- * as polynomials in f: K''(t) = 2 k + 3 k' + k'' (k = K/t^2, primes in
- * log t) a cubic, imp[IMP_N j ..], and t S''(t) = s' + s'' a quadratic
- * after it.  The far field evaluates the impulse response at every
- * target's charges (1.8e6 times on h = 0.02 r0, 1 kg at 10 m/s): summed
- * from these, not the B-spline's four terms three times over.  Their
- * rounding is the B-spline's: the second difference of the coefficients
- * over K_H^2 either way. */
-#define IMP_N 7
+/* The tables in interval j (tail_at) as polynomials in f, at imp[SEG_N
+ * j ..]: k = K/t^2 and s = S/t (cubics, the B-spline's segments), then
+ * the impulse response's part K''(t) = 2 k + 3 k' + k'' (primes in log t)
+ * a cubic and t S''(t) = s' + s'' a quadratic.  The far field evaluates
+ * the impulse response at every target's charges (1.8e6 times on h =
+ * 0.02 r0, 1 kg at 10 m/s), the weights the ramp at every lag: summed from
+ * these, not the B-spline's four terms (three times over for the
+ * impulse).  Their rounding is the B-spline's (for the impulse the
+ * second difference of the coefficients over K_H^2 either way). */
+#define SEG_N 15
 static void imp_coefs(struct anvil_plate_tail *tl)
 {
 	const double h = K_H;
 	for (size_t j = 3; j + 5 <= tl->nk; j++) {
 		const double *b = tl->bc + j - 1, *q = tl->shear_bc + j - 1;
-		double *a = tl->imp + IMP_N * j;
+		double *a = tl->imp + SEG_N * j + 8, *p = tl->imp + SEG_N * j;
 		/* the cubic B-spline's segment as c0 + c1 f + c2 f^2 + c3 f^3 */
 		double c0 = (b[0] + 4.0 * b[1] + b[2]) / 6.0, c1 = (b[2] - b[0]) / 2.0;
 		double c2 = (b[0] - 2.0 * b[1] + b[2]) / 2.0;
 		double c3 = (-b[0] + 3.0 * (b[1] - b[2]) + b[3]) / 6.0;
-		double s1 = (q[2] - q[0]) / 2.0, s2 = (q[0] - 2.0 * q[1] + q[2]) / 2.0;
+		double s0 = (q[0] + 4.0 * q[1] + q[2]) / 6.0, s1 = (q[2] - q[0]) / 2.0;
+		double s2 = (q[0] - 2.0 * q[1] + q[2]) / 2.0;
 		double s3 = (-q[0] + 3.0 * (q[1] - q[2]) + q[3]) / 6.0;
+		p[0] = c0, p[1] = c1, p[2] = c2, p[3] = c3;
+		p[4] = s0, p[5] = s1, p[6] = s2, p[7] = s3;
 		a[0] = 2.0 * c0 + 3.0 * c1 / h + 2.0 * c2 / (h * h);
 		a[1] = 2.0 * c1 + 6.0 * c2 / h + 6.0 * c3 / (h * h);
 		a[2] = 2.0 * c2 + 9.0 * c3 / h;
@@ -622,13 +626,18 @@ static void tail_coefs(struct anvil_plate_tail *tl)
 
 /* The interval j (its coefficients j-1 .. j+2 exist: 3 <= j <= nk - 5) and
  * the place f in it of u = log t. */
-static size_t tail_at(const struct anvil_plate_tail *tl, double t, double *f)
+static size_t tail_at_log(const struct anvil_plate_tail *tl, double lt, double *f)
 {
-	double x = (log(t) - tl->u0) / K_H, j = floor(x);
+	double x = (lt - tl->u0) / K_H, j = floor(x);
 	double jmax = (double)(tl->nk - 5);
 	j = j < 3.0 ? 3.0 : j > jmax ? jmax : j;
 	*f = x - j;
 	return (size_t)j;
+}
+
+static size_t tail_at(const struct anvil_plate_tail *tl, double t, double *f)
+{
+	return tail_at_log(tl, log(t), f);
 }
 
 /* The table of coefficients bc (K/t^2's or S/t's) in interval j at
@@ -657,12 +666,19 @@ static double qi_interp(const struct anvil_plate_tail *tl, const double *bc, dou
 /* ---- the model and its fit ---- */
 
 /* K + S - s_hs t at t: g less the part fitted */
-static double plate_part(const struct anvil_plate_tail *tl, double t)
+/* K + S - s_hs t at t, lt = log t (the segments' polynomials) */
+static double plate_part_log(const struct anvil_plate_tail *tl, double t, double lt)
 {
 	double f;
-	size_t j = tail_at(tl, t, &f);
-	double s = tl->shear_on ? qi_val(tl->shear_bc, j, f, NULL) : 0.0;
-	return t * t * qi_val(tl->bc, j, f, NULL) + t * s - tl->shs * t;
+	const double *p = tl->imp + SEG_N * tail_at_log(tl, lt, &f);
+	double k = ((p[3] * f + p[2]) * f + p[1]) * f + p[0];
+	double s = tl->shear_on ? ((p[7] * f + p[6]) * f + p[5]) * f + p[4] : 0.0;
+	return t * t * k + t * s - tl->shs * t;
+}
+
+static double plate_part(const struct anvil_plate_tail *tl, double t)
+{
+	return plate_part_log(tl, t, log(t));
 }
 
 static void basis(const struct anvil_plate_tail *tl, double t, double *b)
@@ -673,11 +689,11 @@ static void basis(const struct anvil_plate_tail *tl, double t, double *b)
 	b[2] = x * log(x);
 }
 
+/* The model at t: one logarithm for the table's place and x log x */
 static double model_at(const struct anvil_plate_tail *tl, const double c[3], double t)
 {
-	double b[3];
-	basis(tl, t, b);
-	return plate_part(tl, t) + c[0] * b[0] + c[1] * b[1] + c[2] * b[2];
+	double lt = log(t), x = t / tl->t1;
+	return plate_part_log(tl, t, lt) + c[0] + c[1] * x + c[2] * (x * (lt - tl->lt1));
 }
 
 double anvil_plate_tail_ramp(const struct anvil_plate_tail *tl, double t)
@@ -702,7 +718,7 @@ double anvil_plate_tail_impulse(const struct anvil_plate_tail *tl, double t)
 	 * a + b x + c x log x (x = t/T1) and -s_hs t leave c/(T1 t) */
 	double f;
 	size_t j = tail_at(tl, t, &f);
-	const double *a = tl->imp + IMP_N * j;
+	const double *a = tl->imp + SEG_N * j + 8;
 	double kpp = ((a[3] * f + a[2]) * f + a[1]) * f + a[0];
 	double spp = tl->shear_on ? ((a[6] * f + a[5]) * f + a[4]) / t : 0.0;
 	return kpp + tl->c[2] / (tl->t1 * t) + spp;
@@ -793,10 +809,10 @@ static int tail_alloc(struct anvil_plate_tail *tl, double hh, double nu, double 
 	*tl = (struct anvil_plate_tail){ .hh = hh, .nu = nu, .patch = patch, .t1 = t1, .nk = nk,
 					 .beta = plate_beta(hh, nu),
 					 .shs = 3.0 / (16.0 * (1.0 - anvil_kappa2(nu))),
-					 .u0 = node_u0(t1) };
+					 .u0 = node_u0(t1), .lt1 = log(t1) };
 	if (nk < 10)
 		return ANVIL_EINVAL;
-	tl->k = malloc((4 + IMP_N) * nk * sizeof *tl->k);
+	tl->k = malloc((4 + SEG_N) * nk * sizeof *tl->k);
 	if (!tl->k)
 		return ANVIL_ENOMEM;
 	tl->bc = tl->k + nk;

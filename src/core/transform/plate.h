@@ -139,9 +139,9 @@ struct anvil_plate_tail {
 	double *bc;   /* their B-spline coefficients (from k, the same bits) */
 	double *shear, *shear_bc; /* S(t)/t (the (kh)^2 term) at the nodes, and theirs */
 	int shear_on;             /* 0: S is 0 here (plate.c, shear_on): not evaluated */
-	double *imp;  /* the impulse response's polynomials in each interval
-			 (from bc and shear_bc; plate.c, imp_coefs) */
-	double beta, shs, u0;
+	double *imp;  /* the ramp's and the impulse response's polynomials in
+			 each interval (from bc and shear_bc; plate.c, imp_coefs) */
+	double beta, shs, u0, lt1; /* lt1 = log t1 */
 };
 
 /* The tail of the samples ramp[j] at tau_j = j dtau, known (from the
