@@ -80,8 +80,8 @@ struct anvil_halfspace; /* halfspace.h */
 				 plate.c panel_qk31: other bits; 18: the tail's
 				 stored unit v the larger of the fit's misfit and
 				 its coefficients' spread, plate.h; 19: the
-				 table's late nodes (beta t >= 4 patch^2) three
-				 in four interpolated, plate.c nodes_fill) */
+				 table's late nodes (beta t >= patch^2) in part
+				 interpolated, plate.c nodes_fill) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -403,43 +403,68 @@ static int shear_on(const struct anvil_plate_tail *tl)
 	return tl->patch > 0 && tl->patch * tl->patch / tl->beta >= tl->t1 / 16.0;
 }
 
-/* Late nodes from the quadratures at every FILL-th node.  Once beta t is
- * past the patch's transition (beta t >= FILL_C patch^2), K/t^2 and S/t
- * are smooth in log t on the scale of an octave (what is left of the
- * patch goes as patch^2/(beta t) and its log), and the nodes between
- * every FILL-th are its degree-7 Lagrange interpolant from the FILL_P
- * quadrature nodes about them (m - 3 .. m + 4 in FILL-th nodes: a fixed
- * stencil, so a node's value does not depend on the window, nor on the
- * memo).  Measured against the quadrature at the filled nodes (hh =
- * 0.02, 0.1, patches 0.5 and 1: the error is a function of beta
- * t/patch^2 alone): 1e-13 of K/t^2 and 2e-15/hh in S/t from beta t =
- * 4 patch^2 (2e-12 and 3e-13/hh from patch^2, 2e-11 from patch^2/4),
- * below the quadratures' own 1e-12 (tests/test_tail.c holds every node
- * of two tables to it: 1.2e-13 and 2.3e-13/hh at most, the quadratures'
- * scatter through the stencil).  On a thin plate most of the table lies there (h = 0.02
- * r0, 1 kg at 10 m/s: 824 nodes, 640 of them beyond 4 patch^2/beta): its
- * quadratures had been 9 % of the run. */
-#define FILL 4
+/* Late nodes from the quadratures at every F-th node.  Past the patch's
+ * transition (beta t ~ patch^2) K/t^2 and S/t are smooth in log t, on a
+ * scale that grows with beta t/patch^2 (what is left of the patch goes as
+ * patch^2/(beta t) and its log), and the nodes between every F-th are
+ * their degree-7 Lagrange interpolant from the FILL_P quadrature nodes
+ * about them (m - 3 .. m + 4 in F-th nodes: a fixed stencil, so a node's
+ * value depends on neither the window nor the memo).  F = 2 from beta t
+ * = patch^2, 4 from 4 patch^2, 8 from 256 patch^2 (fill_c, fill_f).
+ * Measured against the quadrature at the filled nodes (hh = 0.02, 0.1,
+ * patches 0.5 and 1: the error is a function of beta t/patch^2 alone,
+ * and the quadratures' own scatter through the stencil): every node of
+ * two tables within 3.8e-13 of K/t^2 and 2.4e-13/hh in S/t
+ * (tests/test_tail.c), below the quadratures' own 1e-12; F = 2 from
+ * patch^2/2 was 1.4e-12 (at 0.75 patch^2), F = 4 from patch^2 2e-12, F =
+ * 8 from 64 patch^2 1.3e-12.  On a thin plate most of the table lies
+ * there (h = 0.02 r0, 1 kg at 10 m/s: 824 nodes, 700 of them beyond
+ * patch^2/beta): its quadratures had been 9 % of the run. */
 #define FILL_P 8
-#define FILL_C 4.0
+#define FILL_L 3
+static const double fill_c[FILL_L] = { 1.0, 4.0, 256.0 };
+static const size_t fill_f[FILL_L] = { 2, 4, 8 };
 
-/* The first filled node's place (a multiple of FILL, with FILL_P/2 - 1
- * quadrature nodes below it for the stencil); SIZE_MAX for a point load
- * (its nodes are one value). */
-static size_t fill_from(const struct anvil_plate_tail *tl)
+/* Where each level begins (a multiple of its F, with FILL_P/2 - 1 of its
+ * nodes below it for the stencil; SIZE_MAX: nowhere, as for a point load,
+ * whose nodes are one value). */
+struct fill {
+	size_t i0[FILL_L];
+};
+
+static void fill_levels(const struct anvil_plate_tail *tl, struct fill *fl)
 {
-	if (tl->patch == 0.0)
-		return SIZE_MAX;
-	double x = ceil((log(FILL_C * tl->patch * tl->patch / tl->beta) - tl->u0) / (K_H * FILL));
-	double lo = FILL_P / 2 - 1;
-	if (!(x < 1e15)) /* no node there (or a patch past any window) */
-		return SIZE_MAX;
-	return (size_t)(x > lo ? x : lo) * FILL;
+	for (int l = 0; l < FILL_L; l++) {
+		double F = (double)fill_f[l];
+		double x = ceil((log(fill_c[l] * tl->patch * tl->patch / tl->beta) - tl->u0) / (K_H * F));
+		double lo = FILL_P / 2 - 1;
+		fl->i0[l] = tl->patch == 0.0 || !(x < 1e15) ? SIZE_MAX /* no node there */
+							     : (size_t)(x > lo ? x : lo) * fill_f[l];
+	}
 }
 
-static int node_quad(size_t i, size_t i0)
+/* Node i's level (-1: below the first) */
+static int fill_level(const struct fill *fl, size_t i)
 {
-	return i < i0 || i % FILL == 0;
+	int L = -1;
+	while (L + 1 < FILL_L && i >= fl->i0[L + 1])
+		L++;
+	return L;
+}
+
+/* Node i is a quadrature's: a multiple of its level's F, or of a lower
+ * level's within that level's stencils' reach (4 of its F past its end). */
+static int node_quad(const struct fill *fl, size_t i)
+{
+	int L = fill_level(fl, i);
+	if (L < 0 || i % fill_f[L] == 0)
+		return 1;
+	for (int l = L - 1; l >= -1; l--) {
+		size_t F = l < 0 ? 1 : fill_f[l];
+		if (i % F == 0 && i < fl->i0[l + 1] + (FILL_P / 2) * F)
+			return 1;
+	}
+	return 0;
 }
 
 /* K/t^2 into *k and (on) S/t into *s at node i by their quadratures. */
@@ -454,22 +479,25 @@ static int node_make(const struct anvil_plate_tail *tl, int on, size_t i, struct
 	return st;
 }
 
+/* The stencil's reach beyond n: the quadrature nodes of [n, FILL_EXT) */
+#define FILL_EXT (FILL_P / 2 * 8)
+
 /* The filled nodes in [from, n) from the quadrature nodes, those at n and
- * beyond in ek, es (from n, FILL_P/2 FILL of them). */
-static void nodes_fill(const struct anvil_plate_tail *tl, size_t i0, size_t from, size_t n,
-		       const double *ek, const double *es)
+ * beyond in ek, es (from n, FILL_EXT of them). */
+static void nodes_fill(const struct anvil_plate_tail *tl, const struct fill *fl, size_t from,
+		       size_t n, const double *ek, const double *es)
 {
-	for (size_t i = from > i0 ? from : i0; i < n; i++) {
-		if (node_quad(i, i0))
+	for (size_t i = from; i < n; i++) {
+		if (node_quad(fl, i))
 			continue;
-		size_t m = i / FILL;
-		double x = (double)(i % FILL) / FILL, vk = 0.0, vs = 0.0;
+		size_t F = fill_f[fill_level(fl, i)], m = i / F;
+		double x = (double)(i % F) / (double)F, vk = 0.0, vs = 0.0;
 		for (int a = 0; a < FILL_P; a++) {
 			double l = 1.0, xa = a - (FILL_P / 2 - 1);
 			for (int b = 0; b < FILL_P; b++)
 				if (b != a)
 					l *= (x - (b - (FILL_P / 2 - 1))) / (xa - (b - (FILL_P / 2 - 1)));
-			size_t j = (m + (size_t)a - (FILL_P / 2 - 1)) * FILL;
+			size_t j = (m + (size_t)a - (FILL_P / 2 - 1)) * F;
 			vk += l * (j < n ? tl->k[j] : ek[j - n]);
 			vs += l * (j < n ? tl->shear[j] : es[j - n]);
 		}
@@ -484,8 +512,10 @@ static int nodes_make(const struct anvil_plate_tail *tl, size_t from, size_t n)
 {
 	struct kwork kw;
 	int st = kwork_alloc(&kw), on = shear_on(tl);
-	size_t i0 = fill_from(tl), nfill = 0;
-	double ek[FILL_P / 2 * FILL], es[FILL_P / 2 * FILL];
+	size_t nfill = 0;
+	struct fill fl;
+	double ek[FILL_EXT], es[FILL_EXT];
+	fill_levels(tl, &fl);
 	for (size_t i = from; !st && i < n; i++) {
 		/* a point load's K/t^2 is one integral whatever t (its load
 		 * zhat(0) does not see t): the same bits at every node, once */
@@ -494,18 +524,19 @@ static int nodes_make(const struct anvil_plate_tail *tl, size_t from, size_t n)
 			tl->shear[i] = 0.0;
 			continue;
 		}
-		if (node_quad(i, i0))
+		if (node_quad(&fl, i))
 			st = node_make(tl, on, i, &kw, &tl->k[i], &tl->shear[i]);
 		else
 			nfill++;
 	}
-	/* the stencils' quadrature nodes beyond n */
-	size_t top = nfill ? ((n - 1) / FILL + FILL_P / 2) * FILL : 0;
+	/* the stencils' quadrature nodes beyond n (the last level's reach) */
+	size_t F = nfill ? fill_f[fill_level(&fl, n - 1)] : 0;
+	size_t top = nfill ? ((n - 1) / F + FILL_P / 2) * F : 0;
 	for (size_t j = n; !st && j <= top; j++)
-		if (node_quad(j, i0))
+		if (node_quad(&fl, j))
 			st = node_make(tl, on, j, &kw, &ek[j - n], &es[j - n]);
 	if (!st && nfill)
-		nodes_fill(tl, i0, from, n, ek, es);
+		nodes_fill(tl, &fl, from, n, ek, es);
 	kwork_free(&kw);
 	return st;
 }

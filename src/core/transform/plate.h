@@ -33,9 +33,10 @@
  *
  * K(t)/t^2 and S(t)/t are smooth and slowly varying in log t: each is
  * tabulated at ANVIL_PLATE_PER_OCTAVE nodes per octave from T1/17 to the
- * window's end (O(log tau_end) quadratures; beyond beta t = 4 patch^2
- * three nodes in four are the Lagrange interpolant of those about them,
- * to 1e-13: plate.c nodes_fill) and interpolated by a cubic
+ * window's end (O(log tau_end) quadratures; beyond beta t = patch^2
+ * one node in two, then three in four and seven in eight, are the
+ * Lagrange interpolant of those about them, to 4e-13: plate.c
+ * nodes_fill) and interpolated by a cubic
  * B-spline quasi-interpolant (C2, local: a value depends on the eight
  * nodes about it only, so that a longer window's table gives the same bits
  * where both are defined).  Its interpolation error, measured against the
