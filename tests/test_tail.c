@@ -201,6 +201,82 @@ static void test_s_table_thin(void)
 	free(k);
 }
 
+/* The table's late nodes (plate.c, nodes_fill): from beta t = patch^2
+ * on, one in two, then three in four and seven in eight are the Lagrange
+ * interpolant of the quadratures about them.  Every node against its
+ * quadrature: the filled ones within the quadrature's own tolerance,
+ * 1e-12 of K/t^2 and 1e-12/hh in S/t (measured: 3.8e-13 and 2.4e-13/hh),
+ * the rest, and all in the patch's transition below patch^2/(2 beta),
+ * its very bits; and a node depends on neither the window nor the memo
+ * (a shorter window's table first, then this one from it: the same
+ * bits). */
+static void test_fill(double hh, double patch)
+{
+	double dtau = 0.25, tau_end = 1e5;
+	size_t n1 = 130, n = n1 + ANVIL_PLATE_PAD; /* T1 = (n1 - 2) dtau = 32 */
+	double *ramp = calloc(n, sizeof *ramp);
+	struct anvil_plate_tail tl, ts, tm;
+	struct anvil_plate_memo *m = anvil_plate_memo_alloc();
+	int st = !ramp || !m ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, NULL, &tl) ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, 4e3, m, &ts) ||
+		 anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, m, &tm);
+	double u0 = log(32.0 / 17.0), h = M_LN2 / ANVIL_PLATE_PER_OCTAVE, wk = 0, ws = 0;
+	size_t nq = 0, nf = 0, same = 0, memo_same = 1;
+	for (size_t i = 0; !st && i < tl.nk; i++) {
+		double q, qs, t = exp(u0 + (double)i * h);
+		st = anvil_plate_k(hh, 0.3, patch, t, &q) || anvil_plate_s(hh, 0.3, patch, t, &qs);
+		if (tl.k[i] == q && tl.shear[i] == qs)
+			same++;
+		else if (t >= 0.5 * patch * patch / tl.beta)
+			nf++;
+		else
+			nq++; /* a transition's node not its quadrature's */
+		wk = fmax(wk, fabs(tl.k[i] - q) / q);
+		ws = fmax(ws, fabs(tl.shear[i] - qs) * hh);
+		memo_same &= tm.k[i] == tl.k[i] && tm.shear[i] == tl.shear[i];
+	}
+	ok(!st && same + nf == tl.nk && !nq && nf > tl.nk / 2 && wk < 1e-12 && ws < 1e-12,
+	   "h = %g r0, patch %g: %zu of %zu nodes filled, within %.1e of K/t^2 and %.1e/hh of S/t; "
+	   "the rest their quadratures' bits", hh, patch, nf, tl.nk, wk, ws);
+	ok(!st && memo_same && tm.nk == tl.nk,
+	   "  the same bits through the memo, from a shorter window's table (%zu nodes)", ts.nk);
+	anvil_plate_tail_free(&tl);
+	anvil_plate_tail_free(&ts);
+	anvil_plate_tail_free(&tm);
+	anvil_plate_memo_free(m);
+	free(ramp);
+}
+
+/* The impulse response (plate.c imp_coefs: the B-spline's segments as
+ * polynomials) against the step's derivative by a fourth-order central
+ * difference (delta = 1e-4 t, within a node interval mostly: its error
+ * is the rounding's, 1e-12 of the step over delta), on the thinnest
+ * plate with the paper's patch, where S is largest, and past its filled
+ * nodes: within 3e-8 of the impulse response's scale, 2 alpha* (measured
+ * 6e-9 and 1e-9; an S cubic coefficient off by a third: 1.1e-7); a wrong
+ * coefficient would be O(1) of a term. */
+static void test_impulse(double hh, double patch)
+{
+	double dtau = 0.25, tau_end = 1e4, worst = 0, scale = 2.0 / (8.0 * (hh / sqrt(4.2)) * hh);
+	size_t n1 = 130, n = n1 + ANVIL_PLATE_PAD;
+	double *ramp = calloc(n, sizeof *ramp);
+	struct anvil_plate_tail tl;
+	int st = !ramp || anvil_plate_tail_make(hh, 0.3, patch, dtau, n1, n, ramp, tau_end, NULL, &tl);
+	for (double u = log(4.0); !st && u < log(0.9 * tau_end); u += 0.0137) {
+		double t = exp(u), d = 1e-4 * t;
+		double ds = (8.0 * (anvil_plate_tail_step(&tl, t + d) - anvil_plate_tail_step(&tl, t - d)) -
+			     (anvil_plate_tail_step(&tl, t + 2 * d) - anvil_plate_tail_step(&tl, t - 2 * d))) /
+			    (12.0 * d);
+		worst = fmax(worst, fabs(anvil_plate_tail_impulse(&tl, t) - ds) / scale);
+	}
+	ok(!st && tl.shear_on && worst < 3e-8,
+	   "h = %g r0, patch %g: the tail's impulse response is its step's derivative to %.1e of 2 alpha*",
+	   hh, patch, worst);
+	anvil_plate_tail_free(&tl);
+	free(ramp);
+}
+
 /* The closed form beyond T1 against the response before this change: the
  * same model sampled at the inversion's step dtau to the window's end and
  * interpolated by a natural cubic spline.  They differ by that spline's
@@ -450,6 +526,10 @@ int main(void)
 	test_k_quadrature();
 	test_s_coefficients();
 	test_s_table_thin();
+	test_fill(0.02, 0.5);
+	test_fill(0.1, 1.0);
+	test_impulse(0.02, 1.0);
+	test_impulse(0.1, 0.5);
 	test_long_window();
 	test_cache();
 	test_t_plate();

@@ -54,7 +54,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 19 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 20 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -81,7 +81,10 @@ struct anvil_halfspace; /* halfspace.h */
 				 stored unit v the larger of the fit's misfit and
 				 its coefficients' spread, plate.h; 19: the
 				 band lifted to 0.8 of S1's cutoff, kernel.h
-				 anvil_lift_cutoff: other bits above 0.9 pi/hh) */
+				 anvil_lift_cutoff: other bits above 0.9 pi/hh;
+				 20: the plate tail's table's late nodes (beta t >=
+				 patch^2) in part interpolated, plate.c
+				 nodes_fill) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -77,29 +77,45 @@ double impact_far_sum(const struct ctx *c, const struct frozen *f, double t)
 /* The far field of f at the targets k0 .. k1 (t0, t1 the first and
  * last), a run within 1/FAR_RHO of its distance from the charges: its
  * interpolant at FAR_P Chebyshev points of the targets (the same error as
- * the charges', the two ends' roles swapped), added to out[k]. */
+ * the charges', the two ends' roles swapped), added to out[k].  The
+ * interpolant as its Chebyshev series (the discrete cosine transform of
+ * the values, which the points of the first kind make exact) summed by
+ * Clenshaw's recurrence: 2 FAR_P multiplications a target where the
+ * barycentric form's 2 FAR_P divisions had been a third of the far
+ * field's cost (h = 0.02 r0, 1 kg at 10 m/s: 1.06e6 targets in 8180
+ * runs); both are backward stable, their values apart by rounding. */
 static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t k1,
 		    double *out)
 {
 	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
 	double t1 = (double)(u0 + (k1 << c->lev)) * c->dt0;
-	double F[FAR_P], xn[FAR_P], lam[FAR_P];
+	double F[FAR_P], a[FAR_P], xn[FAR_P], T0[FAR_P], T1[FAR_P];
 	for (int j = 0; j < FAR_P; j++) {
-		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
-		xn[j] = cos(th);
-		lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
+		xn[j] = cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
 		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
+		T0[j] = 1.0, T1[j] = xn[j];
+	}
+	/* a_m = (2 - [m = 0]) sum_j F_j T_m(x_j) / FAR_P, T_m(x_j) = cos(m
+	 * theta_j) by the three-term recurrence (no cosines: 64 of them a run
+	 * were 10 % of the far field) */
+	for (int m = 0; m < FAR_P; m++) {
+		double sum = 0;
+		for (int j = 0; j < FAR_P; j++) {
+			double tm = m == 0 ? T0[j] : m == 1 ? T1[j] : 2.0 * xn[j] * T1[j] - T0[j];
+			if (m >= 2)
+				T0[j] = T1[j], T1[j] = tm;
+			sum += F[j] * tm;
+		}
+		a[m] = (m ? 2.0 : 1.0) * sum / FAR_P;
 	}
 	for (size_t k = k0; k <= k1; k++) {
 		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
-		double num = 0, den = 0, hit = NAN;
-		for (int j = 0; j < FAR_P && isnan(hit); j++) {
-			if (x == xn[j])
-				hit = F[j];
-			num += lam[j] * F[j] / (x - xn[j]);
-			den += lam[j] / (x - xn[j]);
+		double b1 = 0, b2 = 0;
+		for (int m = FAR_P - 1; m >= 1; m--) {
+			double b0 = 2.0 * x * b1 - b2 + a[m];
+			b2 = b1, b1 = b0;
 		}
-		out[k] += isnan(hit) ? num / den : hit;
+		out[k] += x * b1 - b2 + a[0];
 	}
 }
 

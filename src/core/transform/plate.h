@@ -33,7 +33,10 @@
  *
  * K(t)/t^2 and S(t)/t are smooth and slowly varying in log t: each is
  * tabulated at ANVIL_PLATE_PER_OCTAVE nodes per octave from T1/17 to the
- * window's end (O(log tau_end) quadratures) and interpolated by a cubic
+ * window's end (O(log tau_end) quadratures; beyond beta t = patch^2
+ * one node in two, then three in four and seven in eight, are the
+ * Lagrange interpolant of those about them, to 4e-13: plate.c
+ * nodes_fill) and interpolated by a cubic
  * B-spline quasi-interpolant (C2, local: a value depends on the eight
  * nodes about it only, so that a longer window's table gives the same bits
  * where both are defined).  Its interpolation error, measured against the
@@ -137,7 +140,9 @@ struct anvil_plate_tail {
 	double *bc;   /* their B-spline coefficients (from k, the same bits) */
 	double *shear, *shear_bc; /* S(t)/t (the (kh)^2 term) at the nodes, and theirs */
 	int shear_on;             /* 0: S is 0 here (plate.c, shear_on): not evaluated */
-	double beta, shs, u0;
+	double *imp;  /* the ramp's and the impulse response's polynomials in
+			 each interval (from bc and shear_bc; plate.c, imp_coefs) */
+	double beta, shs, u0, lt1; /* lt1 = log t1 */
 };
 
 /* The tail of the samples ramp[j] at tau_j = j dtau, known (from the
