@@ -604,6 +604,7 @@ static int rtabs_get(struct ctx *c, const struct anvil_impact_opts *o,
 		     struct anvil_ramp_share *own, double dt0, size_t n)
 {
 	struct anvil_ramp_share *sh = o->share ? o->share : own;
+	c->share = sh;
 	for (int r = 0; r < 1 + (c->ramp2 != NULL); r++) {
 		struct rtab_key k = { .p = c->p, .fn = r ? c->ramp2 : c->ramp, .dt0 = dt0, .n = n };
 		if (o->share)

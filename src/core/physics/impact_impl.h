@@ -30,6 +30,9 @@
  * first segment more than its weights): ANVIL_ETOL, t_s infinite. */
 #define IMPACT_NODES (-102)
 
+/* The off-grid ramp tables a ctx keeps at hand (impact_rtab_off): ramp
+ * and ramp2 at the two offsets of a segment's contact ends, and room. */
+#define IMPACT_OFF_TABS 8
 /* The most segments (levels of the step) a pass can have (impact_grow.c). */
 #define IMPACT_MAX_SEGS 64
 /* The largest FFT of the frozen past: 2^(HIST_FFT_MAX - 1). */
@@ -125,6 +128,15 @@ struct ctx {
 	double grow_eta;     /* the smoothness asked of P (impact.h) */
 	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
 	struct rtab *rt[2];  /* ramp and ramp2 at j dt0 as made (impact_rtab.c): j < nR0 in its table, beyond in its rows */
+	struct anvil_ramp_share *share; /* rt's, and the off-grid tables' */
+	/* the off-grid tables last used (impact_rtab_off), IMPACT_OFF_TABS of
+	 * them, the oldest replaced first */
+	struct {
+		struct rtab *t;
+		int r;
+		double d, dt0;
+	} off[IMPACT_OFF_TABS];
+	unsigned noff;
 	int rsh;             /* the pass's j is the table's j << rsh */
 	size_t nR;           /* the window's end, in dt0, plus one */
 	size_t nR0;          /* the table's reach (nR but in long mode) */
@@ -235,6 +247,7 @@ struct rtab_key {
 	double name[3];  /* the caller's name of the ramp (impact.h) */
 	double dt0;
 	size_t n;
+	double off; /* > 0: the values at j dt0 + off, all in the rows (n = 0) */
 };
 /* A row's block: 2^RTAB_BLK_LG entries; a row has RTAB_ROW_BLKS of them. */
 #define RTAB_BLK_LG 12
@@ -271,6 +284,11 @@ static inline double impact_rtab_raw(const struct ctx *c, int r, size_t u)
 		return atomic_load_explicit(&t->R[U], memory_order_relaxed);
 	return impact_rtab_make(c, r, u);
 }
+/* Ramp r at j dt0 + d (d > 0; the pass's dt0) into *val, the share's
+ * (same bits as the call: the kept value is the call's), or by the call,
+ * kept: the frozen past's hats at a contact end (impact_grow.c,
+ * impact_hist_at) read the same lags end after end.  The call's status. */
+int impact_rtab_off(const struct ctx *c, int r, size_t j, double d, double *val);
 /* R_r(u dt0) (r = 1: ramp2 - ramp): the table's, or by call beyond it
  * (the same bits: the table is made by the same call); NaN on failure. */
 double impact_rtab(const struct ctx *c, int r, size_t u);

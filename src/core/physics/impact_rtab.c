@@ -72,7 +72,7 @@ static int key_eq(const struct rtab_key *a, const struct rtab_key *b)
 {
 	return a->p == b->p && a->fn == b->fn && a->ctx == b->ctx && a->name[0] == b->name[0] &&
 	       a->name[1] == b->name[1] && a->name[2] == b->name[2] && a->dt0 == b->dt0 &&
-	       a->n == b->n;
+	       a->n == b->n && a->off == b->off;
 }
 
 /* A table of k->n entries and its rows' block pointers; NULL when out of
@@ -145,30 +145,70 @@ static void put(_Atomic double *R, _Atomic uint64_t *have, size_t i, double v)
  * rest_cloc). */
 #define ROW_MAX ((size_t)RTAB_ROW_BLKS << RTAB_BLK_LG)
 
-/* The ramp at u dt0 beyond the table: row z's, or by the call (kept).
- * There a value at U = (2 i + 1) 2^z (in the table's dt0) is kept in row
- * z at i: a level's lags fill its rows densely from 0, and the dt pass's
- * 2u lands where the dt/2 pass's u does, one row up. */
-static double rfar(const struct ctx *c, int r, size_t u)
+/* Table t's entry at U in its rows (U = (2 i + 1) 2^z kept in row z at
+ * i), its block made when missing; NULL for U = 0, past ROW_MAX, or out
+ * of memory (the value then not kept). */
+static struct rtab_blk *row_at(struct rtab *t, size_t U, size_t *k)
 {
-	struct rtab *t = c->rt[r];
-	size_t U = u << c->rsh, i;
 	int z = 0;
 	if (!t || !U)
-		return rcall(c, r, u); /* U = 0: 0 */
+		return NULL;
 	while (!(U >> z & 1))
 		z++;
-	i = U >> (z + 1);
+	size_t i = U >> (z + 1);
 	if (i >= ROW_MAX)
-		return rcall(c, r, u);
-	struct rtab_blk *b = row_blk(t, z, i >> RTAB_BLK_LG);
-	size_t k = i & (RTAB_BLK - 1);
+		return NULL;
+	*k = i & (RTAB_BLK - 1);
+	return row_blk(t, z, i >> RTAB_BLK_LG);
+}
+
+/* The ramp at u dt0 beyond the table: in its rows, or by the call (kept).
+ * A level's lags fill its rows densely from 0, and the dt pass's 2u lands
+ * where the dt/2 pass's u does, one row up. */
+static double rfar(const struct ctx *c, int r, size_t u)
+{
+	size_t k = 0;
+	struct rtab_blk *b = row_at(c->rt[r], u << c->rsh, &k);
 	if (b && (atomic_load_explicit(&b->have[k >> 6], memory_order_acquire) >> (k & 63) & 1))
 		return atomic_load_explicit(&b->v[k], memory_order_relaxed);
 	double v = rcall(c, r, u);
 	if (b && !isnan(v))
 		put(b->v, b->have, k, v);
 	return v;
+}
+
+/* The table of ramp r off the grid by d (at j dt0 + d, the pass's dt0):
+ * the ctx's cache's (the same few d's for every contact end of a
+ * segment), else the share's; NULL when out of memory. */
+static struct rtab *off_tab(const struct ctx *c, int r, double d)
+{
+	struct ctx *m = (struct ctx *)c; /* a cache: never a const object */
+	for (int i = 0; i < IMPACT_OFF_TABS; i++)
+		if (c->off[i].t && c->off[i].r == r && c->off[i].d == d && c->off[i].dt0 == c->dt0)
+			return c->off[i].t;
+	if (!c->share || !c->rt[r])
+		return NULL;
+	struct rtab_key k = c->rt[r]->key;
+	k.dt0 = c->dt0, k.n = 0, k.off = d;
+	struct rtab *t = impact_rtab_get(c->share, &k);
+	int i = m->noff++ % IMPACT_OFF_TABS;
+	m->off[i].t = t, m->off[i].r = r, m->off[i].d = d, m->off[i].dt0 = c->dt0;
+	return t;
+}
+
+int impact_rtab_off(const struct ctx *c, int r, size_t j, double d, double *val)
+{
+	size_t k = 0;
+	struct rtab_blk *b = row_at(off_tab(c, r, d), j, &k);
+	if (b && (atomic_load_explicit(&b->have[k >> 6], memory_order_acquire) >> (k & 63) & 1)) {
+		*val = atomic_load_explicit(&b->v[k], memory_order_relaxed);
+		return ANVIL_OK;
+	}
+	int st = impact_ramp_of(c, r ? c->ramp2 : c->ramp, r ? c->rctx2 : c->rctx,
+				(double)j * c->dt0 + d, val);
+	if (b && !st && !isnan(*val))
+		put(b->v, b->have, k, *val);
+	return st;
 }
 
 double impact_rtab_make(const struct ctx *c, int r, size_t u)
