@@ -83,7 +83,7 @@ struct phys_run {
 
 static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
 		      const struct anvil_wave_job *j, struct phys_rem rem, struct phys_load ld,
-		      size_t nhist, struct anvil_result *r)
+		      size_t nhist, struct anvil_ramp_share *share, struct anvil_result *r)
 {
 	memset(u, 0, sizeof *u);
 	u->ld = ld;
@@ -94,6 +94,7 @@ static void phys_init(struct phys_run *u, const struct anvil_problem *pb,
 					    .tau_lag = ld.tau_lag };
 	solver_merge_opts(&u->io, pb, j);
 	u->io.rest_at = ld.rest_at;
+	u->io.share = share;
 }
 
 /* Window `attempt` of run u: the plan's refusal rule, then the corrections
@@ -122,6 +123,11 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 	u->io.impulse = solver_response_impulse;
 	u->io.impulse_ctx = &u->rs;
 	u->io.impulse2 = NULL;
+	/* the ramps' names in the row's share: their responses' cache keys
+	 * (none, NaN, for the zero ramp of a window without corrections) */
+	double nm = u->corr ? ld.omega_idx : NAN;
+	memcpy(u->io.ramp_name, (double[3]){ nm, tau_idx, 0.0 }, sizeof u->io.ramp_name);
+	memcpy(u->io.ramp2_name, (double[3]){ nm, tau_idx, ld.patch }, sizeof u->io.ramp2_name);
 	if (!u->corr)
 		return ANVIL_OK;
 	u->rs.corr = physical_corr(s, pb, j->hh, 0.0, ld.omega_idx, tau_idx, &u->held, err);
@@ -180,6 +186,9 @@ struct phys_set {
 	struct anvil_err e[PHYS_RUNS];
 	int st[PHYS_RUNS], done[PHYS_RUNS];
 	struct held warm; /* the responses phys_at_hand found */
+	/* the ramps' values the runs share (impact.h; NULL: each its own):
+	 * four take the point load's as their ramp, two the patch's ramp2 */
+	struct anvil_ramp_share *share;
 };
 
 /* The loads: the row's, the patch below (the a^4 remainder), the lag's
@@ -195,11 +204,12 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
 		[PHYS_POINT] = { ld.omega_idx, 0.0, ld.tau_lag, ld.rest_at },
 		[PHYS_POINT_HALF] = { ld.omega_idx - ANVIL_CACHE_STEPS, 0.0, ld.tau_lag, ld.rest_at },
 	};
+	set->share = anvil_ramp_share_alloc();
 	for (int k = 0; k < PHYS_RUNS; k++) {
 		struct anvil_result *rk = k == PHYS_MAIN ? r : &set->q[k];
 		if (k != PHYS_MAIN)
 			anvil_result_init(rk, r->model);
-		phys_init(&set->u[k], pb, j, rem, lds[k], k == PHYS_MAIN ? nhist : 0, rk);
+		phys_init(&set->u[k], pb, j, rem, lds[k], k == PHYS_MAIN ? nhist : 0, set->share, rk);
 		set->e[k] = (struct anvil_err){ 0 };
 		set->st[k] = ANVIL_ETOL;
 		set->done[k] = 0;
@@ -222,7 +232,7 @@ static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
 		anvil_result_free(&set->q[k]);
 		anvil_result_init(&set->q[k], m);
 		ld.rest_at = rest_at;
-		phys_init(&set->u[k], pb, j, rem, ld, 0, &set->q[k]);
+		phys_init(&set->u[k], pb, j, rem, ld, 0, set->share, &set->q[k]);
 		set->e[k] = (struct anvil_err){ 0 };
 		set->st[k] = ANVIL_ETOL;
 		set->done[k] = 0;
@@ -231,6 +241,8 @@ static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
 
 static void phys_set_free(struct anvil_solver *s, struct phys_set *set)
 {
+	anvil_ramp_share_free(set->share);
+	set->share = NULL;
 	solver_held_release(s->cache, &set->warm);
 	for (int k = 0; k < PHYS_RUNS; k++) {
 		solver_held_release(s->cache, &set->u[k].held);

@@ -597,6 +597,26 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 	fill_contacts(r, p, a, b);
 }
 
+/* The ramps' tables of n entries at dt0 (ramp2's when given): from the
+ * caller's share by their names, else from own by their contexts.
+ * ANVIL_OK, or ANVIL_ENOMEM (own NULL: its allocation failed). */
+static int rtabs_get(struct ctx *c, const struct anvil_impact_opts *o,
+		     struct anvil_ramp_share *own, double dt0, size_t n)
+{
+	struct anvil_ramp_share *sh = o->share ? o->share : own;
+	c->share = sh;
+	for (int r = 0; r < 1 + (c->ramp2 != NULL); r++) {
+		struct rtab_key k = { .p = c->p, .fn = r ? c->ramp2 : c->ramp, .dt0 = dt0, .n = n };
+		if (o->share)
+			memcpy(k.name, r ? o->ramp2_name : o->ramp_name, sizeof k.name);
+		else
+			k.ctx = r ? c->rctx2 : c->rctx;
+		if (!sh || !(c->rt[r] = impact_rtab_get(sh, &k)))
+			return ANVIL_ENOMEM;
+	}
+	return ANVIL_OK;
+}
+
 int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rctx,
 		     double tau_avail, const struct anvil_impact_opts *o,
 		     struct anvil_result *r, struct anvil_err *err)
@@ -640,17 +660,17 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	struct anvil_fastconv_fft *fft =
 		anvil_fastconv_fft_alloc((size_t)(lng ? fmin(fcap, 2.0 * (double)o->max_steps) : fcap),
 					 o->direct_max);
-	/* the ramps' table, the dt/2 pass's first segment's reach (the dt
-	 * pass's lies within: its u is 2u there) */
-	struct rtab rt = {0};
+	/* the ramps' tables, the dt/2 pass's first segment's reach (the dt
+	 * pass's lies within: its u is 2u there): the caller's share's, or
+	 * this impact's own */
+	struct anvil_ramp_share *own = o->share ? NULL : anvil_ramp_share_alloc();
 	size_t fcp, fnodes, fnw;
 	pass_sizes(&c, 0.5 * dt, 1, &fcp, &fnodes, &fnw);
-	if (!(c.fft = fft) || (fcp >= 8 && impact_rtab_alloc(&rt, fnw + 1, c.ramp2 != NULL))) {
+	if (!(c.fft = fft) || (fcp >= 8 && rtabs_get(&c, o, own, 0.5 * dt, fnw + 1))) {
 		anvil_fastconv_fft_free(fft);
-		impact_rtab_free(&rt);
+		anvil_ramp_share_free(own);
 		return anvil_err_set(err, ANVIL_ENOMEM, "impact: %s", anvil_strerror(ANVIL_ENOMEM));
 	}
-	c.rt = &rt;
 	st = run_pass(&c, o->scheme, dt, o->direct_max, &a);
 	struct pass *last = &a; /* the pass that ran last, for the messages */
 	c.rest_stop = a.rest ? a.ts : c.rest_stop; /* the finer pass stops there too */
@@ -698,7 +718,7 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 	free(c.g);
 	anvil_fastconv_free(c.fc);
 	free(c.dg);
-	impact_rtab_free(&rt);
+	anvil_ramp_share_free(own);
 	impact_grow_free(&c);
 	impact_end_tab_free(&tab);
 	anvil_fastconv_fft_free(fft);

@@ -179,7 +179,25 @@ struct anvil_impact_opts {
 	 * a wide difference of the ramp (seven calls, impact_grow.c). */
 	anvil_ramp_fn impulse, impulse2;
 	void *impulse_ctx, *impulse2_ctx;
+	/* Optional: the ramps' values at the grid's times shared with the
+	 * caller's other impacts (anvil_ramp_share; NULL: this impact's own).
+	 * ramp_name and ramp2_name are then the caller's names of ramp and
+	 * ramp2 (for the physical row: its response's omega_idx, tau_idx,
+	 * patch): impacts of the same share, step and window whose ramps
+	 * have one name must have the same ramp (the same values), and
+	 * different ramps different names. */
+	struct anvil_ramp_share *share;
+	double ramp_name[3], ramp2_name[3];
 };
+
+/* The ramps' tables that impacts share (impact_rtab.c): a ramp's value
+ * at a time of the grid, made by one impact, is read by the others that
+ * have the same ramp and step (the same bits as their own call).  Impacts
+ * given one share may run side by side on threads.  NULL when out of
+ * memory; anvil_ramp_share_free(NULL) is a no-op. */
+struct anvil_ramp_share;
+struct anvil_ramp_share *anvil_ramp_share_alloc(void);
+void anvil_ramp_share_free(struct anvil_ramp_share *s);
 
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
  * contact outlasts it, ANVIL_ETOL is returned with r->ts.val = NaN so that the

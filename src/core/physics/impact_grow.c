@@ -400,8 +400,9 @@ static int rlag(const struct ctx *c, int r, size_t u, double d, size_t K, double
 {
 	anvil_ramp_fn fn = r ? c->ramp2 : c->ramp;
 	void *fx = r ? c->rctx2 : c->rctx;
-	return impact_ramp_of(c, fn, fx, u >= K ? (double)(u - K) * c->dt0 + d
-						: d - (double)(K - u) * c->dt0, val);
+	if (u >= K) /* kept: every contact end reads them again (impact_rtab.c) */
+		return impact_rtab_off(c, r, u - K, d, val);
+	return impact_ramp_of(c, fn, fx, d - (double)(K - u) * c->dt0, val);
 }
 
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val)

@@ -3,6 +3,7 @@
 #ifndef ANVIL_IMPACT_IMPL_H
 #define ANVIL_IMPACT_IMPL_H
 
+#include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -29,6 +30,9 @@
  * first segment more than its weights): ANVIL_ETOL, t_s infinite. */
 #define IMPACT_NODES (-102)
 
+/* The off-grid ramp tables a ctx keeps at hand (impact_rtab_off): ramp
+ * and ramp2 at the two offsets of a segment's contact ends, and room. */
+#define IMPACT_OFF_TABS 8
 /* The most segments (levels of the step) a pass can have (impact_grow.c). */
 #define IMPACT_MAX_SEGS 64
 /* The largest FFT of the frozen past: 2^(HIST_FFT_MAX - 1). */
@@ -123,7 +127,16 @@ struct ctx {
 	size_t grow_after;   /* nodes before the step may grow; 0: never */
 	double grow_eta;     /* the smoothness asked of P (impact.h) */
 	const struct pass *sched; /* the schedule to follow (the dt/2 pass), or NULL */
-	struct rtab *rt;     /* ramp and ramp2 at j dt0 as made (impact_wts.c): j < nR0 in its table, beyond in its rows */
+	struct rtab *rt[2];  /* ramp and ramp2 at j dt0 as made (impact_rtab.c): j < nR0 in its table, beyond in its rows */
+	struct anvil_ramp_share *share; /* rt's, and the off-grid tables' */
+	/* the off-grid tables last used (impact_rtab_off), IMPACT_OFF_TABS of
+	 * them, the oldest replaced first */
+	struct {
+		struct rtab *t;
+		int r;
+		double d, dt0;
+	} off[IMPACT_OFF_TABS];
+	unsigned noff;
 	int rsh;             /* the pass's j is the table's j << rsh */
 	size_t nR;           /* the window's end, in dt0, plus one */
 	size_t nR0;          /* the table's reach (nR but in long mode) */
@@ -219,31 +232,68 @@ void impact_grow_free(struct ctx *c);
  * (0 <= d <= its step), by direct sums over its hats (off the grid: the
  * contact end); v the current segment's view. */
 int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d, double *val);
-/* impact_wts.c: the ramps at the grid's times and the weights from them,
- * each made once, when first needed.
+/* impact_rtab.c: the ramp responses at the grid's times, made when first
+ * asked for and kept for every impact given the same share.
  *
- * The ramp responses at u dt0 of both passes of an impact, made when first
- * asked for and kept: in the dt/2 pass's dt0, where the dt pass's u is 2u
- * (the same double: (2u)(dt/2) and u dt are the one real product rounded,
- * so the same call's same bits).  A bit per entry says it is made. */
-struct rtab {
-	double *R[2];   /* ramp, ramp2 (NULL without it) */
-	uint64_t *have[2];
-	size_t n;       /* entries, in the dt/2 pass's dt0 */
-	/* beyond: U = (2 i + 1) 2^z kept in row z at i (impact_wts.c) */
-	struct rtab_row {
-		double *v;
-		uint64_t *have;
-		size_t cap;
-	} row[2][64];
+ * A table is one ramp's at U dt0 (dt0: the dt/2 pass's; the dt pass's u
+ * is U = 2u, the same double: (2u)(dt/2) and u dt are the one real
+ * product rounded, so the same call's same bits), for U < n in R, beyond
+ * in its rows.  A bit per entry says it is made (set after the value,
+ * with release order: impact_rtab.c). */
+struct rtab_key {
+	const struct anvil_params *p; /* the ramp's scaling (impact_ramp_of) */
+	anvil_ramp_fn fn;
+	const void *ctx; /* fn's context: the impact's own share; else NULL */
+	double name[3];  /* the caller's name of the ramp (impact.h) */
+	double dt0;
+	size_t n;
+	double off; /* > 0: the values at j dt0 + off, all in the rows (n = 0) */
 };
-/* A table of n entries (ramp2: with its second row); ANVIL_OK or
- * ANVIL_ENOMEM.  impact_rtab_free(NULL) is a no-op. */
-int impact_rtab_alloc(struct rtab *t, size_t n, int two);
-void impact_rtab_free(struct rtab *t);
+/* A row's block: 2^RTAB_BLK_LG entries; a row has RTAB_ROW_BLKS of them. */
+#define RTAB_BLK_LG 12
+#define RTAB_BLK ((size_t)1 << RTAB_BLK_LG)
+#define RTAB_ROW_BLKS 256
+struct rtab_blk {
+	_Atomic uint64_t have[RTAB_BLK / 64];
+	_Atomic double v[RTAB_BLK];
+};
+struct rtab {
+	struct rtab_key key;
+	_Atomic double *R; /* key.n entries */
+	_Atomic uint64_t *have;
+	/* beyond: U = (2 i + 1) 2^z kept in row z at i, the row's blocks
+	 * rows[z RTAB_ROW_BLKS + i / RTAB_BLK] (NULL until made) */
+	struct rtab_blk *_Atomic *rows;
+	struct rtab *next; /* the share's list */
+};
+/* The share's table of key k, found or added (NULL when out of memory). */
+struct rtab *impact_rtab_get(struct anvil_ramp_share *s, const struct rtab_key *k);
+/* ramp (r = 0) or ramp2 (r = 1) at u dt0 by the call, kept in the table
+ * (u < nR0) or its rows; NaN when the call fails.  impact_rtab_raw's
+ * way when the entry is not yet made. */
+double impact_rtab_make(const struct ctx *c, int r, size_t u);
+/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
+ * that makes it (the same bits); NaN when the call fails.  Inline: the
+ * weights are made from it (impact_wts.c). */
+static inline double impact_rtab_raw(const struct ctx *c, int r, size_t u)
+{
+	struct rtab *t = c->rt[r];
+	size_t U = u << c->rsh;
+	if (u < c->nR0 && t && U < t->key.n &&
+	    (atomic_load_explicit(&t->have[U >> 6], memory_order_acquire) >> (U & 63) & 1))
+		return atomic_load_explicit(&t->R[U], memory_order_relaxed);
+	return impact_rtab_make(c, r, u);
+}
+/* Ramp r at j dt0 + d (d > 0; the pass's dt0) into *val, the share's
+ * (same bits as the call: the kept value is the call's), or by the call,
+ * kept: the frozen past's hats at a contact end (impact_grow.c,
+ * impact_hist_at) read the same lags end after end.  The call's status. */
+int impact_rtab_off(const struct ctx *c, int r, size_t j, double d, double *val);
 /* R_r(u dt0) (r = 1: ramp2 - ramp): the table's, or by call beyond it
  * (the same bits: the table is made by the same call); NaN on failure. */
 double impact_rtab(const struct ctx *c, int r, size_t u);
+/* impact_wts.c: the weights from the ramps' tables, each made once, when
+ * first needed. */
 /* Level L's weights g_j (and dg_j) for *nf <= j < need, from the ramps at
  * j 2^L dt0 (as weights() makes level 0's); *nf = need.  ANVIL_ENUM when
  * one is not finite (a ramp call failed), else ANVIL_OK. */

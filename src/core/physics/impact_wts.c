@@ -1,5 +1,5 @@
-/* impact_wts.c: the ramp responses on the grid and the weights from them,
- * each made once, when first needed (issue 11, speed).
+/* impact_wts.c: the weights from the ramps at the grid's times, each
+ * made when first needed (issue 11, speed).
  *
  * The product integration's weights are second differences of the ramp
  * response at the lags j 2^L dt0 (impact.c weights(), impact_grow.c).
@@ -10,140 +10,19 @@
  * targets reach: on h = 0.05 r0, 10 g at 1 m/s the march ended at 27 % of
  * the window at level 7, so most of the table was never read.  So the
  * weights are made as the march asks (impact_g_need, frozen_chunk), each
- * ramp value at most once per impact (the table, rtab, shared by both
- * passes), from the same calls in the same order of operands: the same
- * bits as the whole table gave.
- *
- * Beyond the table (long mode: it covers the first segment's weights),
- * every level's weights are the same lags j 2^L dt0 from j = 0 again for
- * each segment a level makes (impact_grow.c: a full segment freezes and
- * the same step goes on), and the frozen segments' last hats ask for the
- * same lags target after target: on h = 0.05 r0, 10 kg at 1 m/s 3.7e6
- * ramp calls beyond it were at most 7e5 distinct values.  There a value
- * at U = (2 i + 1) 2^z (in the table's dt0) is kept in row z at i: a
- * level's lags fill its rows densely from 0, and the dt pass's 2u lands
- * where the dt/2 pass's u does, one row up. */
+ * ramp value at most once (the ramps' tables, impact_rtab.c, shared by
+ * both passes and by the impacts given the same share), from the same
+ * calls in the same order of operands: the same bits as the whole table
+ * gave. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "impact_impl.h"
 
-int impact_rtab_alloc(struct rtab *t, size_t n, int two)
-{
-	size_t nw = n / 64 + 1;
-	t->n = n;
-	for (int r = 0; r < 1 + !!two; r++) {
-		/* malloc and calloc: pages never asked for are never touched */
-		t->R[r] = malloc((n ? n : 1) * sizeof *t->R[r]);
-		t->have[r] = calloc(nw, sizeof *t->have[r]);
-		if (!t->R[r] || !t->have[r])
-			return ANVIL_ENOMEM;
-	}
-	return ANVIL_OK;
-}
-
-void impact_rtab_free(struct rtab *t)
-{
-	if (!t)
-		return;
-	for (int r = 0; r < 2; r++) {
-		free(t->R[r]);
-		free(t->have[r]);
-		t->R[r] = NULL, t->have[r] = NULL;
-		for (int z = 0; z < 64; z++) {
-			free(t->row[r][z].v);
-			free(t->row[r][z].have);
-			t->row[r][z] = (struct rtab_row){ 0 };
-		}
-	}
-	t->n = 0;
-}
-
-/* A row's entries at most (8 MB of values): beyond, the calls are made
- * every time (a far lag read once or twice: the nodes' own, rest_cloc). */
-#define ROW_MAX ((size_t)1 << 20)
-
-/* Row w with room for i; 0, or -1 when out of memory (or past ROW_MAX). */
-static int row_room(struct rtab_row *w, size_t i)
-{
-	if (i < w->cap)
-		return 0;
-	if (i >= ROW_MAX)
-		return -1;
-	size_t cap = w->cap ? w->cap : 1024;
-	while (cap <= i)
-		cap *= 2;
-	double *v = realloc(w->v, cap * sizeof *v);
-	if (v)
-		w->v = v;
-	uint64_t *h = v ? realloc(w->have, (cap / 64) * sizeof *h) : NULL;
-	if (!h)
-		return -1;
-	memset(h + w->cap / 64, 0, (cap - w->cap) / 64 * sizeof *h);
-	w->have = h, w->cap = cap;
-	return 0;
-}
-
-/* The ramp at u dt0 beyond the table: row z's, or by the call (kept). */
-static double rfar(const struct ctx *c, int r, size_t u)
-{
-	struct rtab *t = c->rt;
-	size_t U = u << c->rsh, i;
-	int z = 0;
-	double v;
-	if (t && U)
-		while (!(U >> z & 1))
-			z++;
-	i = U >> (z + 1);
-	struct rtab_row *w = t && U ? &t->row[r][z] : NULL;
-	if (w && i < w->cap && (w->have[i >> 6] >> (i & 63) & 1))
-		return w->v[i];
-	int st = r ? impact_ramp_of(c, c->ramp2, c->rctx2, (double)u * c->dt0, &v)
-		   : impact_ramp_at(c, (double)u * c->dt0, &v);
-	if (st)
-		return NAN;
-	if (w && !row_room(w, i)) {
-		w->v[i] = v;
-		w->have[i >> 6] |= (uint64_t)1 << (i & 63);
-	}
-	return v;
-}
-
-/* ramp (r = 0) or ramp2 (r = 1) at u dt0 by the call, kept in the table
- * when it is there (tab); NaN when the call fails.  Apart from rraw's
- * lookup, so that the lookup inlines where the weights are made. */
-static double rmake(const struct ctx *c, int r, size_t u, int tab)
-{
-	double v;
-	int st = r ? impact_ramp_of(c, c->ramp2, c->rctx2, (double)u * c->dt0, &v)
-		   : impact_ramp_at(c, (double)u * c->dt0, &v);
-	if (st)
-		return NAN;
-	if (tab) {
-		struct rtab *t = c->rt;
-		size_t U = u << c->rsh;
-		t->R[r][U] = v;
-		t->have[r][U >> 6] |= (uint64_t)1 << (U & 63);
-	}
-	return v;
-}
-
-/* ramp (r = 0) or ramp2 (r = 1) at u dt0: the table's, or by the call
- * that makes it (the same bits); NaN when the call fails. */
 static inline double rraw(const struct ctx *c, int r, size_t u)
 {
-	const struct rtab *t = c->rt;
-	size_t U = u << c->rsh;
-	int tab = u < c->nR0 && t && U < t->n && t->R[r];
-	if (tab && (t->have[r][U >> 6] >> (U & 63) & 1))
-		return t->R[r][U];
-	return tab || u < c->nR0 ? rmake(c, r, u, tab) : rfar(c, r, u);
-}
-
-double impact_rtab(const struct ctx *c, int r, size_t u)
-{
-	return r ? rraw(c, 1, u) - rraw(c, 0, u) : rraw(c, 0, u);
+	return impact_rtab_raw(c, r, u);
 }
 
 int impact_wts_fill(const struct ctx *c, int L, double *g, double *dg, size_t *nf, size_t need)
