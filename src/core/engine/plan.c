@@ -427,7 +427,7 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
 	struct anvil_wave_job j = *job;
 	j.patch = patch;
 	double corr = anvil_plan_phys_seconds(&j, e->p.nu, e->pb->accuracy, cache, where);
-	return COST_HALFSPACE + corr + PHYS_RUNS * anvil_plan_impact_cost(e->window_lay, j.dt, 1, j.nsteps);
+	return COST_HALFSPACE + corr + PHYS_RUNS * anvil_plan_impact_cost(e->window_lay, j.dt, 2, j.nsteps);
 }
 
 /* The physical row's band: the Hertz pulse's, as the paper's contact has

@@ -351,9 +351,10 @@ int anvil_plan_key_equal(const struct anvil_plan_key *a, const struct anvil_plan
  * (transform/plate.h), the plate's closed form beyond. */
 double anvil_plan_inversion_window(double hh, double tau_end);
 /* The seconds of one coupled run over a window of window_s seconds at
- * step dt (layer: on a layer response, the step growing past the level's
+ * step dt (layer 1: on a layer response, the step growing past the level's
  * ANVIL_GROW_AFTER pulses of nsteps steps, long mode beyond
- * ANVIL_MAX_STEPS; else the half-space or the static anvil). */
+ * ANVIL_MAX_STEPS; 2: the same, one of the physical row's impacts, which
+ * share their ramp tables; 0: the half-space or the static anvil). */
 double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps);
 /* The steps a coupled run over window_s at step dt marches (grows: the
  * step doubles past ANVIL_GROW_AFTER pulses of nsteps steps, and a long

@@ -287,19 +287,34 @@ double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
 	return grows && n > g ? fmin(n, g + IMPACT_GROWN * nsteps) : n;
 }
 
+/* The physical row's impacts (layer = 2) since their ramp tables are
+ * shared (impact_rtab.c), the rest check made once a node and the far
+ * field summed by Clenshaw (impact_rest.c, impact_far.c): per node, frozen
+ * node and far sum IMPACT_PHYS_SCALE_* of the units above.  Fitted (a grid
+ * of scale factors, the largest |log(price/CPU)| made smallest) on the
+ * issue's grid, 219 physical rows of 0.05 s or more: price/CPU 0.73-2.59
+ * with the units above (36 rows over 2, long thin-plate contacts priced
+ * 0.2 s of march for 0.03-0.1 s), 0.56-1.78 now (median 1.02).  The
+ * paper's contact keeps the units above: its march did not change. */
+#define IMPACT_PHYS_SCALE_NODE 0.5
+#define IMPACT_PHYS_SCALE_HIST 0.35
+#define IMPACT_PHYS_SCALE_FAR 0.7
 double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps)
 {
 	double n = window_s / dt, g = ANVIL_GROW_AFTER * nsteps;
 	if (!layer)
 		return IMPACT_LIN_HS * n + IMPACT_SQ_HS * n * n;
+	int phys = layer == 2;
 	double m = anvil_plan_marched(window_s, dt, nsteps, 1);
 	double l2 = log2(fmax(m, 2.0)), tab = n, far = 0.0;
 	if (n > ANVIL_MAX_STEPS) { /* long mode (impact.h t_smooth): no table to the window's
 				    * end; each level's weights, and the far field per node */
 		double levels = log2(n / fmax(g, 1.0));
 		tab = fmax(2.0 * g + 64.0, IMPACT_LONG_W) + levels * IMPACT_LONG_W;
-		far = (m - g) * levels * IMPACT_FAR;
+		far = (m - g) * levels * IMPACT_FAR * (phys ? IMPACT_PHYS_SCALE_FAR : 1.0);
 	}
-	return m * (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) +
-	       (m > g ? (m - g) * IMPACT_HIST + tab * IMPACT_TAB + far : 0.0);
+	double node = (IMPACT_LIN_LAYER + IMPACT_FFT_LAYER * l2 * l2) *
+		      (phys ? IMPACT_PHYS_SCALE_NODE : 1.0);
+	double hist = IMPACT_HIST * (phys ? IMPACT_PHYS_SCALE_HIST : 1.0);
+	return m * node + (m > g ? (m - g) * hist + tab * IMPACT_TAB + far : 0.0);
 }
