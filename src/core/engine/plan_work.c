@@ -293,7 +293,7 @@ double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
  * node and far sum IMPACT_PHYS_SCALE_* of the units above.  Fitted (a grid
  * of scale factors, the largest |log(price/CPU)| made smallest) on the
  * issue's grid, 219 physical rows of 0.05 s or more: price/CPU 0.73-2.59
- * with the units above (36 rows over 2, long thin-plate contacts priced
+ * with the units above (44 rows over 2, long thin-plate contacts priced
  * 0.2 s of march for 0.03-0.1 s), 0.56-1.78 now (median 1.02).  The
  * paper's contact keeps the units above: its march did not change. */
 #define IMPACT_PHYS_SCALE_NODE 0.5

@@ -218,9 +218,9 @@ static void phys_set_init(struct phys_set *set, const struct anvil_problem *pb,
 }
 
 /* A row at rest (impact.h, rest_at): its error runs are compared at its
- * rest time, so they are set up again to stop there (a warm row ran them
- * beside it before its rest was known; rare: only a run otherwise refused
- * comes to rest). */
+ * rest time, so they are set up again to stop there (a warm row not
+ * foreseen at rest, phys_rest_likely, ran them beside it before its rest
+ * was known: they run twice then). */
 static void phys_set_rest(struct anvil_solver *s, struct phys_set *set,
 			  const struct anvil_problem *pb, const struct anvil_wave_job *j,
 			  struct phys_rem rem, double rest_at)
