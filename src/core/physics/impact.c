@@ -160,8 +160,8 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 		}
 	}
 	/* at rest on the plate (impact_rest.c): no end; or in contact at the
-	 * last window's end after coming to rest */
-	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
+	 * last window's end after coming to rest, or chattering since */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && impact_rest_final(c, s, in) && impact_rest_fallback(s))) {
 		impact_peak(s);
 		return ANVIL_OK;
 	}
@@ -351,8 +351,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		}
 	}
 	/* at rest on the plate (impact_rest.c): no end; or in contact at the
-	 * last window's end after coming to rest */
-	if (s->rest || ((in || s->v[s->n - 1] >= 0) && c->rest_last && impact_rest_fallback(s))) {
+	 * last window's end after coming to rest, or chattering since */
+	if (s->rest || ((in || s->v[s->n - 1] >= 0) && impact_rest_final(c, s, in) && impact_rest_fallback(s))) {
 		impact_peak(s);
 		return ANVIL_OK;
 	}

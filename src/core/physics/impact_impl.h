@@ -198,6 +198,10 @@ double impact_rest_long(const struct anvil_params *p);
  * rest_stop: s ended as by impact_rest_fallback), 0 to go on.  Call once
  * per node, after the node's time and values are set. */
 int impact_rest_check(const struct ctx *c, struct pass *s, size_t n, int in);
+/* Whether a pass at its window's end in contact (in) or moving in falls
+ * back to its rest: the caller's last window (rest_last), the contact at
+ * rest held to here, or the impactor has chattered on the plate since. */
+int impact_rest_final(const struct ctx *c, const struct pass *s, int in);
 /* The pass ends at its first node at rest, if it had one (1; s->rest,
  * n, ncont, ts, Vs set: the contact goes on); else 0, s unchanged. */
 int impact_rest_fallback(struct pass *s);
