@@ -455,11 +455,12 @@ static int band_dominates(const struct anvil_result *r, const double before[3], 
 /* The coupled run of job j (the anvil's response: static, half-space, or
  * half-space plus layer correction), with the layer correction's error
  * estimate when it is used.  *march: the march's own part of P_max's
- * estimate (relative), without the band's. */
+ * estimate (relative), without the band's.  *round: the band's round to
+ * start from (0: the plan's band), then the one the result is of. */
 static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		     const struct anvil_wave_job *j, int method, size_t nhist,
 		     struct anvil_result *r, int *used_corr, double *band, double *march,
-		     struct anvil_err *err)
+		     int *round, struct anvil_err *err)
 {
 	struct waves wv = { .pb = pb, .job = j };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
@@ -477,7 +478,8 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	 * refine_max times): convergence in it is fast, the estimate
 	 * conservative. */
 	size_t n_err = method == ANVIL_METHOD_LAYER ? err_nhist(pb, j, nhist) : nhist;
-	for (int refine = 0; refine <= j->refine_max; refine++) {
+	for (int refine = *round; refine <= j->refine_max; refine++) {
+		*round = refine;
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = n_err;
@@ -599,7 +601,9 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 	if (row.contact == ANVIL_CONTACT_PHYSICAL)
 		return solver_run_physical(s, pl, planned, nhist, r, err);
 	double band = 0, march = 0, step = 1;
-	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, err);
+	int round = 0;
+	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, &round,
+			   err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
 	if (!st && row.fallback && !(r->ts.val < 2.0 * p->h / p->c1)) {
@@ -608,7 +612,9 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		row.exact = 1;
 		row.model_err = 0;
 		row.job = row.fallback_job;
-		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, err);
+		round = 0;
+		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, &round,
+			       err);
 	}
 	if (st)
 		return st;
@@ -616,11 +622,11 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		struct anvil_plan_row fine = row;
 		struct anvil_result prev = *r; /* it owns the history now */
 		struct anvil_err pe = err ? *err : (struct anvil_err){ 0 };
-		int c2 = 0;
+		int c2 = 0, r2 = round; /* from the band the first run reached */
 		double b2 = 0, m2 = 0;
 		fine.job.dt = STEP_RISE * r->tmax.val / row.job.nsteps;
 		anvil_result_init(r, prev.model);
-		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &c2, &b2, &m2, err);
+		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &c2, &b2, &m2, &r2, err);
 		if (s2 || !(r->Pmax.err < prev.Pmax.err)) {
 			anvil_result_free(r);
 			*r = prev;
