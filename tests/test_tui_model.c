@@ -431,11 +431,21 @@ static void test_edit(void)
 	for (int i = 0; i < 10; ++i)
 		tui_model_key(m, TUI_KEY_BACKSPACE);
 	type(m, "8");
-	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW && m->editing && m->msg_error &&
-		   strstr(m->msg, "needs a unit"),
-	   "a bare number is refused, as in scene files: %s", m->msg);
-	is_rel(anvil_scene_h(&m->sc), 4e-3, 1e-15, "the thickness is unchanged");
-	type(m, " mm");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE && !m->editing && !m->msg_error &&
+		   strstr(m->msg, "8 mm") && strstr(m->msg, "field's unit"),
+	   "a bare number is taken in the unit the field shows, and the message says so: %s",
+	   m->msg);
+	is_rel(anvil_scene_h(&m->sc), 8e-3, 1e-15, "8 mm");
+	m->sel = TUI_F_THICK_R0;
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	ok(type(m, "0.5\n") == TUI_ACT_RECOMPUTE && m->sc.thickness_per_r0 &&
+		   fabs(m->sc.thickness - 0.5) < 1e-15,
+	   "  on the r0 row, in r0: %s", m->msg);
+	m->sel = TUI_F_THICK_MM;
+	tui_model_key(m, TUI_KEY_ENTER);
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "8 mm");
 	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "with its unit it is taken");
 	is_rel(anvil_scene_h(&m->sc), 8e-3, 1e-15, "8 mm");
 	tui_model_key(m, TUI_KEY_ENTER);
@@ -536,9 +546,13 @@ static void test_geometry(void)
 	   "d opens the drop height ('%s', the velocity's)", m->edit);
 	tui_model_key(m, TUI_CTRL('u'));
 	type(m, "50");
-	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_REDRAW && m->editing && m->msg_error,
-	   "  a bare number is refused: %s", m->msg);
-	type(m, " mm");
+	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE && !m->editing &&
+		   strstr(m->msg, "50 m ("),
+	   "  a bare number in the unit it opened on (m): %s", m->msg);
+	is_rel(m->sc.velocity, sqrt(2 * ANVIL_G_STANDARD * 50), 1e-12, "  V0 = sqrt(2 g 50 m)");
+	tui_model_key(m, 'd');
+	tui_model_key(m, TUI_CTRL('u'));
+	type(m, "50 mm");
 	ok(tui_model_key(m, TUI_KEY_ENTER) == TUI_ACT_RECOMPUTE, "  50 mm is taken");
 	is_rel(m->sc.velocity, sqrt(2 * ANVIL_G_STANDARD * 0.05), 1e-12,
 	       "  V0 = sqrt(2 g H) = %.4g m/s", m->sc.velocity);

@@ -237,6 +237,31 @@ static enum tui_action commit_any(struct tui_model *m, char *text)
 	return apply(m, text, eq + 1);
 }
 
+/* A finite number with nothing after it ("0.1", "2e-3"; not "inf",
+ * which is a word the thickness takes as it is). */
+static int bare_number(const char *v)
+{
+	char *end;
+	double x = strtod(v, &end);
+	return end != v && *end == '\0' && isfinite(x);
+}
+
+/* A bare number typed into a numeric field: a scene file refuses it (a
+ * length in mm or in r0?), but the field shows its unit beside the value,
+ * so the number is taken in it, and the message line says so. */
+static enum tui_action apply_in_unit(struct tui_model *m, const char *v)
+{
+	char value[TUI_EDIT_MAX + 16];
+	/* "2.5r0" without a space: the thickness key reads the r0 suffix */
+	snprintf(value, sizeof value, "%s%s%s", v, strcmp(m->edit_unit, "r0") == 0 ? "" : " ",
+		 m->edit_unit);
+	enum tui_action a = apply(m, m->edit_key, value);
+	if (a == TUI_ACT_RECOMPUTE)
+		tui_model_message(m, 0, "%s = %s (a bare number is taken in the field's unit)",
+				  m->edit_key, value);
+	return a;
+}
+
 static enum tui_action edit_commit(struct tui_model *m)
 {
 	char v[TUI_EDIT_MAX + 8];
@@ -254,7 +279,9 @@ static enum tui_action edit_commit(struct tui_model *m)
 	else if (strcmp(m->edit_key, "impactor.material") == 0 ||
 		 strcmp(m->edit_key, "layer.material") == 0)
 		a = set_material(m, m->edit_key[0] == 'i', v);
-	else /* the line starts with the unit; a bare number is refused as in files */
+	else if (m->edit_unit[0] && bare_number(v)) /* in the unit the field shows */
+		a = apply_in_unit(m, v);
+	else
 		a = apply(m, m->edit_key, v);
 	/* on an error the field stays open, with the message, to be fixed */
 	if (a == TUI_ACT_RECOMPUTE)
