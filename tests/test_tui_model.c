@@ -846,7 +846,7 @@ static void test_effects_key(void)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(187);
+	plan(189);
 	test_canvas_braille();
 	test_canvas_ascii();
 	test_canvas_edges();
