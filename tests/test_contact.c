@@ -235,13 +235,20 @@ static void test_impact_route(void)
 		failed += anvil_impact_run(&p, ramp_jump, &xi, 2 * ts * p.c2 / p.r0, &o, &r, &e) !=
 			  ANVIL_OK;
 		/* the one-line reason finish_exact's failure gives the user */
-		said += strstr(e.msg, "ran away") && strstr(e.msg, "solver.accuracy") &&
+		said += ((strstr(e.msg, "ran away") && strstr(e.msg, "solver.accuracy")) ||
+			 strstr(e.msg, "outlasts")) &&
 			!strchr(e.msg, '\n');
+		diag("dt = ts/%d: %s", k, e.msg);
 		anvil_result_free(&r);
 	}
 	ok(failed == 4, "anvil_impact_run with the ramp -xi H(tau) fails at every step (%d of 4): "
 	   "the runaway the reduction of order avoids", failed);
-	ok(said == 4, "  each with a one-line reason: where it ran away and what to try (%d of 4)",
+	/* the march's Nyquist compliance (impact.c, nyq_eps) damps the
+	 * alternating mode such a ramp excites, not the ill-posed equation:
+	 * at ts/1600 it no longer runs away within the contact but never
+	 * ends it */
+	ok(said == 4,
+	   "  each with a one-line reason: where it ran away and what to try, or that the contact did not end (%d of 4)",
 	   said);
 }
 
