@@ -41,7 +41,10 @@ struct spectra {
 };
 
 /* Both paths' spectra of the layer correction on the line of half period
- * Tp, c0 = 10/Tp (the normal level's c0T), up to omega_max, with epsF. */
+ * Tp, c0 = 10/Tp (the normal level's c0T), up to omega_max, with epsF; the
+ * lifted one's contour for the widest patch wide (green.h lift_patch). */
+static double wide = 0.0;
+
 static int spectra_kt(struct spectra *r, double hh, double nu, double patch, double Tp,
 		      double omega_max, double epsF, const double ktail[2], const int no_lift[2])
 {
@@ -58,7 +61,8 @@ static int spectra_kt(struct spectra *r, double hh, double nu, double patch, dou
 			return -1;
 		struct green_spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = ktail[i],
 					     .epsF = epsF, .pl = &pl, .patch = patch,
-					     .no_lift = no_lift[i], .spec = r->F[i], .err = r->e[i] };
+					     .no_lift = no_lift[i], .lift_patch = wide,
+					     .spec = r->F[i], .err = r->e[i] };
 		r->st[i] = green_sample_spectra(ANVIL_GREEN_LAYER_CORRECTION, kap2, nu, hh, &sp, 1,
 						&r->evals[i]);
 	}
@@ -100,10 +104,11 @@ static void agree(double hh, double nu, double patch, double Tp)
 	}
 	ok(!st && (r.st[0] == ANVIL_OK || r.st[0] == ANVIL_ETOL) &&
 		   (r.st[1] == ANVIL_OK || r.st[1] == ANVIL_ETOL) && bad == 0,
-	   "h = %g r0, nu = %g, patch %g, T' = %g: lifted and real-axis band agree on %zu of %zu "
-	   "terms to %.3g pi/hh (worst %.2f of the allowance at omega = %.3g); evaluations %zu -> %zu",
-	   hh, nu, patch, Tp, r.M + 1 - bad, r.M + 1, top, worst, (double)wn * M_PI / Tp, r.evals[1],
-	   r.evals[0]);
+	   "h = %g r0, nu = %g, patch %g (contour for %g), T' = %g: lifted and real-axis band agree "
+	   "on %zu of %zu terms to %.3g pi/hh (worst %.2f of the allowance at omega = %.3g); "
+	   "evaluations %zu -> %zu",
+	   hh, nu, patch, green_lift_wide(wide), Tp, r.M + 1 - bad, r.M + 1, top, worst,
+	   (double)wn * M_PI / Tp, r.evals[1], r.evals[0]);
 	spectra_free(&r);
 }
 
@@ -138,8 +143,17 @@ static void tail_end(double hh, double patch, double Tp)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(12);
+	plan(15);
 	agree(0.02, 0.3, 0.0, 16.0);
+	/* the physical row's contours for its widest patch (green.h
+	 * lift_patch): as high as 0.5/hh for a point load and a small patch,
+	 * 8/patch for a larger one */
+	wide = 0.0625;
+	agree(0.02, 0.3, 0.0, 16.0);
+	agree(0.02, 0.3, 0.0625, 16.0);
+	wide = 0.5;
+	agree(0.02, 0.3, 0.5, 16.0);
+	wide = 0.0;
 	agree(0.05, 0.3, 0.5, 64.0);
 	agree(0.05, 0.45, 1.0, 64.0);
 	agree(0.1, 0.0, 1.0, 64.0);

@@ -44,6 +44,7 @@ struct quad {
 	double lift, klift; /* the band's contour (k_integral); klift 0: the real axis */
 	double kband;       /* the band's end: zhat_piece serves the tail beyond it */
 	int no_lift;        /* keep the band on the real axis (tests) */
+	double wide;        /* the widest patch the band's contour serves (anvil_kband_lift) */
 	int far_cut;        /* cut at the hard limit, not the budget's, and the tail's
 			     * kernel evaluated, not interpolated (tests) */
 	gsl_root_fsolver *root; /* the cut's (green_cut.h), one a thread */
@@ -487,7 +488,7 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	 * pieces fell from 69 to 15 a k-integral (all evaluations 7.9 M to
 	 * 4.1 M). */
 	double w0 = hs ? 0.5 : anvil_kband_piece(hh, kband), w1 = hs ? 4.0 : ANVIL_KTAIL_PIECE;
-	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, q->nu, kband);
+	q->lift = hs || q->no_lift ? 0.0 : anvil_kband_lift(omega, hh, q->nu, kband, q->wide);
 	q->klift = q->lift > 0 ? kband : 0.0;
 	q->kband = kband;
 	if (q->lift > 0)
@@ -557,6 +558,11 @@ static int spectrum_term(struct quad *q, struct heap *h, const struct green_spec
 	return qs;
 }
 
+double green_lift_wide(double lift_patch)
+{
+	return lift_patch > 0 ? fmin(lift_patch, 1.0) : 1.0;
+}
+
 /* The spectra sp[0..nsp-1] (one line: the same s at each n; their bands
  * may differ), term by term, each term's k-integrals one after another on
  * one thread with one kernel memo (kmemo) when there are several; evals[i]
@@ -567,7 +573,8 @@ int green_sample_spectra(enum anvil_green_mode mode, double kap2, double nu, dou
 			 const struct green_spectrum *sp, size_t nsp, size_t *evals)
 {
 	const struct quad q0 = { .mode = mode, .kap2 = kap2, .nu = nu, .hh = hh,
-				 .no_lift = sp[0].no_lift, .far_cut = sp[0].far_cut };
+				 .no_lift = sp[0].no_lift, .far_cut = sp[0].far_cut,
+				 .wide = green_lift_wide(sp[0].lift_patch) };
 	size_t M = 0, done = 0;
 	int st = ANVIL_OK, stop = 0;
 	for (size_t i = 0; i < nsp; i++) {

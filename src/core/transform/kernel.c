@@ -130,11 +130,11 @@ double anvil_lift_cutoff(double nu)
 	return fmax(ANVIL_LIFT_CUTOFF, ANVIL_LIFT_S1 * fmin(c1, 2.0));
 }
 
-double anvil_kband_lift(double omega, double hh, double nu, double kband)
+double anvil_kband_lift(double omega, double hh, double nu, double kband, double wide)
 {
 	if (!(isfinite(hh) && omega * hh < anvil_lift_cutoff(nu) * M_PI))
 		return 0.0;
-	return fmin(fmin(ANVIL_LIFT_MAX, 0.5 / hh), 0.5 * kband / M_PI);
+	return fmin(fmin(ANVIL_LIFT_MAX / wide, 0.5 / hh), 0.5 * kband / M_PI);
 }
 
 double anvil_kband_lift_piece(double hh, double kband, double lift)

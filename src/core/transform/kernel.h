@@ -99,7 +99,9 @@ double anvil_kband_piece(double hh, double kband);
  * pi min(c1, 2 c2).  So H is taken where omega hh <
  * anvil_lift_cutoff(nu) pi, and at most 0.5 kband/pi (a slope of at most 0.5:
  * below 27 degrees), 0.5/hh (a quarter of the complex modes' height) and
- * ANVIL_LIFT_MAX (zhat(k a) grows like exp(a H), a <= 1).  Off the real
+ * ANVIL_LIFT_MAX / wide (zhat(k a) grows like exp(a H): a H <= 8 for the
+ * widest patch a = wide the contour serves; wide = 1 for r0's, and a
+ * point load's integrand, zhat = 1/(2 pi), does not grow at all).  Off the real
  * axis the poles (c0/c_group below it) are H sin(...) further from the
  * path: the peaks the bisection chased are gone.  tests/test_lift.c checks
  * the two paths agree within their error estimates to past the cutoff,
@@ -116,7 +118,9 @@ double anvil_kband_piece(double hh, double kband);
 /* omega hh/pi below which the band is lifted: max(ANVIL_LIFT_CUTOFF,
  * ANVIL_LIFT_S1 min(c1/c2, 2)) */
 double anvil_lift_cutoff(double nu);
-double anvil_kband_lift(double omega, double hh, double nu, double kband);
+/* wide: the widest patch (r0 units, in (0, 1]) whose zhat the band's
+ * integrands carry on this contour: the loads of a set share it */
+double anvil_kband_lift(double omega, double hh, double nu, double kband, double wide);
 
 /* The starting pieces of a band lifted by H = lift: as anvil_kband_piece,
  * and at least 2 H (at most kband) wide: the path is H from the poles. */
