@@ -55,7 +55,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 21 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 22 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -88,7 +88,9 @@ struct anvil_halfspace; /* halfspace.h */
 				 nodes_fill; 21: the physical contact's band
 				 lifted up to 8 over the row's widest patch,
 				 kernel.h anvil_kband_lift, that patch in the
-				 key and the header, which grew to 184 bytes) */
+				 key and the header, which grew to 184 bytes;
+				 22: above the lift's cutoff the band lifted
+				 from k hh = 3 on, kernel.h ANVIL_LIFT_KS) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -108,11 +108,14 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 			fits += stride * (GREEN_TAIL_DEG + 1) / 21.0 * green_tail_count(hh, kband, kend);
 			tail = 0;
 		}
-		double lift = anvil_kband_lift(om, hh, nu, kband, wide);
+		double ks, lift = anvil_kband_lift(om, hh, nu, kband, wide, &ks);
 		if (lift > 0)
 			lifted += stride * (LIFT_SPLIT * split_f *
-						    ceil(kband / anvil_kband_lift_piece(hh, kband, lift)) +
-					    LIFT_TAIL * tail);
+						    ceil((kband - ks) /
+							 anvil_kband_lift_piece(hh, kband - ks, lift)) +
+					    LIFT_TAIL * tail) +
+				  stride * (1.0 + split_f * refine(hh, tau_end, omega)) *
+					  ceil(ks / anvil_kband_piece(hh, kband));
 		else
 			panels += stride * (ceil(kband / anvil_kband_piece(hh, kband)) + tail);
 	}
