@@ -22,6 +22,7 @@
 #include "field_kernel.h"
 #include "gk21.h"
 #include "green.h"
+#include "green_spectrum.h"
 #include "halfspace.h"
 #include "plate.h"
 #include "direct_bc.h"
@@ -631,15 +632,18 @@ static void test_plate_memo(void)
  * has alone, whatever the others in the set and their order, and costs
  * less: the physical contact's four (point and patch at the band, the
  * patch below, the point at half the band), on a thin plate with the
- * plate's continuation (window 8 T1) and a thick layer without it. */
+ * plate's continuation (window 8 T1) and a thick layer without it; and on
+ * a thinner plate whose band's contour (green.h lift_patch) is lifted for
+ * the widest patch, 0.25, higher than r0's would be. */
 static void test_set(void)
 {
-	static const double hhs[2] = { 0.25, 3.0 }, taus[2] = { 8.0 * 64.0, 60.0 };
-	for (int c = 0; c < 2; c++) {
+	static const double hhs[3] = { 0.25, 3.0, 0.05 }, taus[3] = { 8.0 * 64.0, 60.0, 4.0 * 32.0 };
+	for (int c = 0; c < 3; c++) {
 		struct anvil_green_settings gs;
 		struct anvil_err e;
 		anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
 		gs.filter = 1;
+		gs.lift_patch = c == 2 ? 0.25 : 0.0;
 		const struct anvil_green_load load[4] = {
 			{ 0.0, 4.0 }, { 0.25, 4.0 }, { 0.25 / sqrt(2.0), 4.0 }, { 0.0, 2.0 } };
 		struct anvil_green *set[4], *rev[2], *one[4];
@@ -659,9 +663,10 @@ static void test_set(void)
 		}
 		same = same && same_bits(rev[0], one[3]) && same_bits(rev[1], one[2]);
 		ok(same && 2 * shared < alone,
-		   "h = %g r0, window %g: four corrections made as a set have the bits of each made "
-		   "alone (also two in another order), with %zu kernel evaluations against %zu",
-		   hhs[c], taus[c], shared, alone);
+		   "h = %g r0, window %g, contour for %g: four corrections made as a set have the bits "
+		   "of each made alone (also two in another order), with %zu kernel evaluations "
+		   "against %zu",
+		   hhs[c], taus[c], green_lift_wide(gs.lift_patch), shared, alone);
 		for (int i = 0; i < 4; i++) {
 			anvil_green_free(one[i]);
 			if (!st)
@@ -674,10 +679,21 @@ static void test_set(void)
 	struct anvil_green *out[1];
 	const struct anvil_green_load bad = { 1.5, 4.0 };
 	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
-	ok(anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &bad, 1, NULL, NULL, out, NULL) ==
-		   ANVIL_EINVAL && !out[0] &&
+	const struct anvil_green_load wider = { 0.5, 4.0 };
+	int refused = anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &bad, 1, NULL, NULL, out, NULL) ==
+			      ANVIL_EINVAL && !out[0];
+	gs.lift_patch = 0.25;
+	refused = refused &&
+		  anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &wider, 1, NULL, NULL, out, NULL) ==
+			  ANVIL_EINVAL && !out[0];
+	gs.omega_max = 4.0;
+	struct anvil_green *alone = anvil_green_alloc_patch(ANVIL_GREEN_LAYER_CORRECTION, 1.0, 0.3,
+							    0.5, 10.0, &gs, NULL, NULL, NULL);
+	ok(refused && !alone &&
 	   anvil_green_alloc_set(1.0, 0.3, 10.0, &gs, &bad, 0, NULL, NULL, out, NULL) == ANVIL_EINVAL,
-	   "a set refuses a patch beyond r0 and an empty set");
+	   "a set refuses a patch beyond r0, or beyond the contour's widest, and an empty set; so "
+	   "does a patch alone beyond the contour's");
+	anvil_green_free(alone);
 }
 
 /* anvil_green_ramp evaluates the spline from its intervals' kept

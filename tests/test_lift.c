@@ -5,7 +5,7 @@
  * pole or branch point of W(k, s) lies between the two paths.  For each
  * case (thickness, Poisson's ratio, patch, line) the spectrum is computed
  * twice, on the lifted contour and on the real axis (green_spectrum.h
- * no_lift), at every term up to 1.05 times where the lift stops
+ * no_lift), at every term up to 1.05 times where the whole band's lift stops
  * (kernel.h anvil_lift_cutoff: 0.8 of S1's cutoff, past the A1 cutoff
  * omega = pi/hh; 0.9 of A1's before), and each term must agree within the two error
  * estimates plus ROUND of its size: the estimates of the lowest terms on
@@ -14,7 +14,10 @@
  * sum, 1e-14 of the value.  The check has teeth: with the lift carried to
  * 3 times the cutoff, terms at omega hh/pi = 1.75-1.81 (nu = 0.3, S1's
  * backward wave, whose pole lies above the axis) were off by 1e5-1e6
- * times their estimates.  A last test holds the rounding stop: the
+ * times their estimates.  Above the cutoff the band is lifted from
+ * k hh = ANVIL_LIFT_KS on, to omega hh = ANVIL_LIFT_TOP pi: there the
+ * terms are compared to 1.05 times that (from k hh = 0.3 the two paths
+ * were 3.5e6 times the allowance apart).  A last test holds the rounding stop: the
  * omega = 0 term of h = 0.02 r0 on a long line, whose tolerance is below
  * its rounding floor, took 343 056 evaluations (8191 pieces) to end where
  * it began. */
@@ -41,7 +44,10 @@ struct spectra {
 };
 
 /* Both paths' spectra of the layer correction on the line of half period
- * Tp, c0 = 10/Tp (the normal level's c0T), up to omega_max, with epsF. */
+ * Tp, c0 = 10/Tp (the normal level's c0T), up to omega_max, with epsF; the
+ * lifted one's contour for the widest patch wide (green.h lift_patch). */
+static double wide = 0.0;
+
 static int spectra_kt(struct spectra *r, double hh, double nu, double patch, double Tp,
 		      double omega_max, double epsF, const double ktail[2], const int no_lift[2])
 {
@@ -58,7 +64,8 @@ static int spectra_kt(struct spectra *r, double hh, double nu, double patch, dou
 			return -1;
 		struct green_spectrum sp = { .dl = &dl, .cr = sqrt(xr), .ktail = ktail[i],
 					     .epsF = epsF, .pl = &pl, .patch = patch,
-					     .no_lift = no_lift[i], .spec = r->F[i], .err = r->e[i] };
+					     .no_lift = no_lift[i], .lift_patch = wide,
+					     .spec = r->F[i], .err = r->e[i] };
 		r->st[i] = green_sample_spectra(ANVIL_GREEN_LAYER_CORRECTION, kap2, nu, hh, &sp, 1,
 						&r->evals[i]);
 	}
@@ -82,12 +89,14 @@ static void spectra_free(struct spectra *r)
 	}
 }
 
+/* The terms compared: to exp_top pi/hh (0: 1.05 times the cutoff) */
+static double exp_top = 0;
 static void agree(double hh, double nu, double patch, double Tp)
 {
 	struct spectra r = { 0 };
 	double worst = 0;
 	size_t wn = 0, bad = 0;
-	double top = 1.05 * anvil_lift_cutoff(nu);
+	double top = exp_top > 0 ? exp_top : 1.05 * anvil_lift_cutoff(nu);
 	int st = spectra(&r, hh, nu, patch, Tp, top * M_PI / hh, 1e-9);
 	for (size_t n = 0; !st && n <= r.M; n++) {
 		double d = cabs(r.F[0][n] - r.F[1][n]);
@@ -100,10 +109,11 @@ static void agree(double hh, double nu, double patch, double Tp)
 	}
 	ok(!st && (r.st[0] == ANVIL_OK || r.st[0] == ANVIL_ETOL) &&
 		   (r.st[1] == ANVIL_OK || r.st[1] == ANVIL_ETOL) && bad == 0,
-	   "h = %g r0, nu = %g, patch %g, T' = %g: lifted and real-axis band agree on %zu of %zu "
-	   "terms to %.3g pi/hh (worst %.2f of the allowance at omega = %.3g); evaluations %zu -> %zu",
-	   hh, nu, patch, Tp, r.M + 1 - bad, r.M + 1, top, worst, (double)wn * M_PI / Tp, r.evals[1],
-	   r.evals[0]);
+	   "h = %g r0, nu = %g, patch %g (contour for %g), T' = %g: lifted and real-axis band agree "
+	   "on %zu of %zu terms to %.3g pi/hh (worst %.2f of the allowance at omega = %.3g); "
+	   "evaluations %zu -> %zu",
+	   hh, nu, patch, green_lift_wide(wide), Tp, r.M + 1 - bad, r.M + 1, top, worst,
+	   (double)wn * M_PI / Tp, r.evals[1], r.evals[0]);
 	spectra_free(&r);
 }
 
@@ -138,8 +148,27 @@ static void tail_end(double hh, double patch, double Tp)
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(12);
+	plan(19);
 	agree(0.02, 0.3, 0.0, 16.0);
+	/* the physical row's contours for its widest patch (green.h
+	 * lift_patch): as high as 0.5/hh for a point load and a small patch,
+	 * 8/patch for a larger one */
+	wide = 0.0625;
+	agree(0.02, 0.3, 0.0, 16.0);
+	agree(0.02, 0.3, 0.0625, 16.0);
+	wide = 0.5;
+	agree(0.02, 0.3, 0.5, 16.0);
+	wide = 0.0;
+	/* above the cutoff, lifted from k hh = ANVIL_LIFT_KS (kernel.h), to
+	 * 1.05 times ANVIL_LIFT_TOP */
+	exp_top = 1.05 * ANVIL_LIFT_TOP;
+	agree(0.1, 0.3, 0.0, 32.0);
+	agree(0.05, 0.0, 0.0, 32.0);
+	agree(0.2, 0.45, 1.0, 32.0);
+	wide = 0.25;
+	agree(0.05, 0.22, 0.25, 32.0);
+	wide = 0.0;
+	exp_top = 0.0;
 	agree(0.05, 0.3, 0.5, 64.0);
 	agree(0.05, 0.45, 1.0, 64.0);
 	agree(0.1, 0.0, 1.0, 64.0);

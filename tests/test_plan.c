@@ -532,7 +532,7 @@ static void test_hold(void)
 	gs.omega_max = 2.0;
 	int added = 0, evicted_ok = 1;
 	for (int i = 0; i < ANVIL_CACHE_SLOTS + 6; i++) {
-		struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+		struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 		struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3,
 							  4.0, &gs, NULL, NULL, &e);
 		const struct anvil_green *k = anvil_cache_add(c, &key, g);
@@ -541,7 +541,7 @@ static void test_hold(void)
 		double v;
 		evicted_ok &= anvil_halfspace_ramp(hs, 1.0, &v, NULL) == ANVIL_OK && v > 0;
 	}
-	struct anvil_cache_key first = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key first = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	ok(added == ANVIL_CACHE_SLOTS + 6 && evicted_ok && anvil_cache_held(c) == 1 &&
 		   !anvil_cache_probe(c, &first) &&
 		   anvil_cache_halfspace(c, 0.3, 1e-6, &e) == hs,
@@ -551,11 +551,11 @@ static void test_hold(void)
 	anvil_cache_release(c, hs);
 	/* hold every slot: the next insertion is refused, nothing evicted */
 	for (int i = 0; i < ANVIL_CACHE_SLOTS; i++) {
-		struct anvil_cache_key key = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+		struct anvil_cache_key key = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, i, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 		anvil_cache_add(c, &key, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0, 0.3,
 							   4.0, &gs, NULL, NULL, &e));
 	}
-	struct anvil_cache_key more = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, 99, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key more = { 2.0, 0.3, ANVIL_ACC_DRAFT, 4, 99, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	ok(anvil_cache_held(c) == ANVIL_CACHE_SLOTS &&
 		   !anvil_cache_add(c, &more, anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 2.0,
 								0.3, 4.0, &gs, NULL, NULL, &e)),
@@ -676,7 +676,7 @@ static void test_disk(void)
 	struct anvil_green_settings gs;
 	struct anvil_green_samples x, y;
 	struct anvil_err e;
-	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 3, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key key = { 3.0, 0.3, ANVIL_ACC_DRAFT, 4, 3, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	anvil_green_settings(ANVIL_ACC_DRAFT, &gs);
 	gs.omega_max = anvil_cache_grid(key.omega_idx);
 	struct anvil_green *g = anvil_green_alloc(ANVIL_GREEN_LAYER_CORRECTION, 3.0, 0.3, 20.0, &gs,

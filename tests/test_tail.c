@@ -416,7 +416,7 @@ static void test_cache(void)
 {
 	double hh = 0.1, t1 = t1_of(hh);
 	char dir[] = "/tmp/anvil-test-tail-XXXXXX", path[4096];
-	struct anvil_cache_key key = { hh, 0.3, ANVIL_ACC_DRAFT, 4, 40, 0, ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key key = { hh, 0.3, ANVIL_ACC_DRAFT, 4, 40, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	struct anvil_err e;
 	struct anvil_green *g = make(hh, anvil_cache_grid(key.tau_idx), anvil_cache_grid(key.omega_idx),
 				     0, NULL);

@@ -240,6 +240,7 @@ static int corr_set(const char *const *kv, const char *what, double *q, int *sam
 	struct anvil_green *g[4];
 	anvil_green_settings(pl.pb.accuracy, &gs);
 	gs.filter = 1;
+	gs.lift_patch = j->patch; /* as the solver's (solver_phys.c) */
 	for (int k = 0; k < 4; k++)
 		set[k] = (struct anvil_green_load){ load[k].patch, anvil_cache_grid(load[k].oi) };
 	if (anvil_green_alloc_set(j->hh, pl.pb.p.nu, anvil_cache_grid(tau_idx), &gs, set, 4, NULL,

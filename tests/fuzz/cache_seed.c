@@ -12,7 +12,7 @@ int main(int argc, char **argv)
 {
 	struct anvil_green_settings gs;
 	struct anvil_err err;
-	struct anvil_cache_key key = {1.0, 0.3, ANVIL_ACC_DRAFT, 0, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0};
+	struct anvil_cache_key key = {1.0, 0.3, ANVIL_ACC_DRAFT, 0, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0};
 	char tmp[] = "/tmp/anvil-cache-seed-XXXXXX";
 	if (argc != 2) {
 		fprintf(stderr, "usage: cache_seed FILE\n");

@@ -28,7 +28,7 @@ static uint64_t fnv1a(uint64_t h, const unsigned char *p, size_t n)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	static char path[64];
-	struct anvil_cache_key key = {1.0, 0.3, ANVIL_ACC_DRAFT, 0, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0};
+	struct anvil_cache_key key = {1.0, 0.3, ANVIL_ACC_DRAFT, 0, 0, 0, ANVIL_CACHE_LOAD_R0, 0.0, 0.0};
 	struct anvil_err err;
 	unsigned char *bytes;
 	int fix = size > 0 && (data[0] & 1);

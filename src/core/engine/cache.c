@@ -226,7 +226,7 @@ static int same_key(const struct anvil_cache_key *a, const struct anvil_cache_ke
 {
 	return a->hh == b->hh && a->nu == b->nu && a->acc == b->acc &&
 	       a->omega_idx == b->omega_idx && a->tau_idx == b->tau_idx && a->twin == b->twin &&
-	       a->load == b->load && a->patch == b->patch;
+	       a->load == b->load && a->patch == b->patch && a->lift_patch == b->lift_patch;
 }
 
 /* The memory slot of key: the same window and bandwidth exactly, so that
@@ -280,6 +280,7 @@ int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *b
 	if (key->load) { /* the physical contact's: its own prefix, the patch hashed */
 		h = fnv1a(h, &key->load, sizeof key->load);
 		h = fnv1a(h, &key->patch, sizeof key->patch);
+		h = fnv1a(h, &key->lift_patch, sizeof key->lift_patch);
 	}
 	int len = snprintf(buf, n, "%s/%s-%s-%016llx.bin", dir, key->load ? "phys" : "corr",
 			   anvil_accuracy_name(key->acc), (unsigned long long)h);
@@ -319,6 +320,7 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->tau_idx = key->tau_idx;
 	hd->load = (uint32_t)key->load;
 	hd->patch = key->patch;
+	hd->lift_patch = key->lift_patch;
 	hd->hh = key->hh;
 	hd->nu = key->nu;
 	hd->omega = anvil_cache_grid(key->omega_idx);
@@ -419,7 +421,7 @@ static int header_match(const struct anvil_cache_header *hd, const char *path,
 	if (hd->hh != key->hh || hd->nu != key->nu || hd->acc != (uint32_t)key->acc ||
 	    hd->omega_idx != key->omega_idx || hd->tau_idx != key->tau_idx || hd->mode != ANVIL_GREEN_LAYER_CORRECTION ||
 	    hd->twin != (uint16_t)(key->twin != 0) || hd->load != (uint32_t)key->load ||
-	    hd->patch != key->patch || hd->filtered > 1)
+	    hd->patch != key->patch || hd->lift_patch != key->lift_patch || hd->filtered > 1)
 		return anvil_err_set(err, ANVIL_EPARSE, "%s: holds another response", path);
 	return ANVIL_OK;
 }

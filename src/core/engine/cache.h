@@ -28,14 +28,15 @@
  *           replaced; one from another format or anvil version is ignored
  *           quietly and replaced.
  *
- * The file: a 176-byte header (struct below: magic "ANVILRSP", format
+ * The file: a 184-byte header (struct below: magic "ANVILRSP", format
  * version, byte-order mark, anvil version, the mode and twin flag, the key h/r0, nu, level, omega
  * and its grid index, the window's grid index, the load and patch radius (format 4:
  * the physical contact's corrections are kept too; a file of format 3 or older
  * is ignored quietly and replaced), the window tau_end, the sample step, the error
  * estimate, the plate's tail (format 8: its T1, the fit's error unit and
  * coefficients; 0 without), the sample count, the tail's K-table node count
- * and an FNV-1a 64-bit checksum of header, samples and nodes), then the
+ * an FNV-1a 64-bit checksum of header, samples and nodes, and the
+ * key's widest patch of the row, format 21), then the
  * ramp samples and the K table (green.h anvil_green_samples) as native
  * doubles.  A file is only read on a machine with the same byte order and
  * double format.
@@ -54,7 +55,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 20 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 22 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -84,7 +85,12 @@ struct anvil_halfspace; /* halfspace.h */
 				 anvil_lift_cutoff: other bits above 0.9 pi/hh;
 				 20: the plate tail's table's late nodes (beta t >=
 				 patch^2) in part interpolated, plate.c
-				 nodes_fill) */
+				 nodes_fill; 21: the physical contact's band
+				 lifted up to 8 over the row's widest patch,
+				 kernel.h anvil_kband_lift, that patch in the
+				 key and the header, which grew to 184 bytes;
+				 22: above the lift's cutoff the band lifted
+				 from k hh = 3 on, kernel.h ANVIL_LIFT_KS) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -108,6 +114,10 @@ struct anvil_cache_key {
 				    (green.h anvil_green_alloc_patch; 0 a point load),
 				    no twin (twin 0) */
 	double patch;            /* LOAD_PATCH: the radius / r0, in [0, 1]; else 0 */
+	double lift_patch;       /* LOAD_PATCH: the row's widest patch, whose
+				    lifted contour its loads share (green.h
+				    anvil_green_settings; the point load's bits
+				    depend on it); else 0 */
 };
 
 enum { ANVIL_CACHE_LOAD_R0 = 0, ANVIL_CACHE_LOAD_PATCH = 1 };
@@ -194,8 +204,9 @@ struct anvil_cache_header {
 	double hh, nu, patch, omega, tau_end, dtau, abserr;
 	double t1, tail_v, tail_c[3]; /* the plate's tail (format 8); t1 = 0: none */
 	uint64_t n, nk, checksum;
+	double lift_patch; /* the key's (format 21) */
 };
-_Static_assert(sizeof(struct anvil_cache_header) == 176, "cache header has padding");
+_Static_assert(sizeof(struct anvil_cache_header) == 184, "cache header has padding");
 
 /* The file for key in dir ("DIR/corr-LEVEL-HASH.bin", "DIR/phys-..." for
  * the physical contact's) into buf; ANVIL_EINVAL

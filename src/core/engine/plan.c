@@ -231,9 +231,9 @@ static double layer_cost(const struct est *e, const struct anvil_cache *cache,
 	/* the response and its coarse twin (half the bandwidth, solver.c), made
 	 * together from one spectrum: the main one's evaluations pay for both */
 	struct anvil_cache_key key = { e->lay.hh, p->nu, acc, e->lay.omega_idx, tau_idx, 0,
-				       ANVIL_CACHE_LOAD_R0, 0.0 };
+				       ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	struct anvil_cache_key twin = { e->lay.hh, p->nu, acc, e->lay.twin_idx, tau_idx, 1,
-					ANVIL_CACHE_LOAD_R0, 0.0 };
+					ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	enum anvil_cache_where wm = ANVIL_CACHE_NONE, wt = ANVIL_CACHE_NONE;
 	if (cache) {
 		wm = anvil_cache_probe(cache, &key);

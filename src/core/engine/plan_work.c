@@ -6,13 +6,14 @@
 #include "cache.h"
 #include "durbin.h"
 #include "green.h"
+#include "green_spectrum.h"
 #include "green_tail.h"
 #include "kernel.h"
 #include "plan.h"
 #include "plate.h"
 
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc, double split_f);
+			 enum anvil_accuracy acc, double split_f, double wide);
 
 /* The adaptive splitting's work over the starting panels: it bisects
  * towards each Lamb-mode pole until the pieces are as narrow as the poles'
@@ -72,7 +73,7 @@ double anvil_plan_corr_evals(double hh, double nu, double omega, double tau_end,
 	double xr;
 	if (anvil_rayleigh_x(anvil_kappa2(nu), &xr, NULL))
 		return NAN;
-	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc, 1.0);
+	return corr_evals(hh, nu, sqrt(xr), omega, tau_end, acc, 1.0, 1.0);
 }
 
 double anvil_plan_inversion_window(double hh, double tau_end)
@@ -82,9 +83,10 @@ double anvil_plan_inversion_window(double hh, double tau_end)
 	return t1 > 0 ? t1 : tau_end;
 }
 
-/* split_f: the splitting's share times this (PHYS_EVAL_F, a point load's) */
+/* split_f: the splitting's share times this (PHYS_EVAL_F, a point load's);
+ * wide: the contour's widest patch (anvil_kband_lift) */
 static double corr_evals(double hh, double nu, double cr, double omega, double tau_end,
-			 enum anvil_accuracy acc, double split_f)
+			 enum anvil_accuracy acc, double split_f, double wide)
 {
 	struct anvil_green_settings gs;
 	double t1 = anvil_plate_t1(hh, tau_end);
@@ -106,11 +108,14 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 			fits += stride * (GREEN_TAIL_DEG + 1) / 21.0 * green_tail_count(hh, kband, kend);
 			tail = 0;
 		}
-		double lift = anvil_kband_lift(om, hh, nu, kband);
+		double ks, lift = anvil_kband_lift(om, hh, nu, kband, wide, &ks);
 		if (lift > 0)
 			lifted += stride * (LIFT_SPLIT * split_f *
-						    ceil(kband / anvil_kband_lift_piece(hh, kband, lift)) +
-					    LIFT_TAIL * tail);
+						    ceil((kband - ks) /
+							 anvil_kband_lift_piece(hh, kband - ks, lift)) +
+					    LIFT_TAIL * tail) +
+				  stride * (1.0 + split_f * refine(hh, tau_end, omega)) *
+					  ceil(ks / anvil_kband_piece(hh, kband));
 		else
 			panels += stride * (ceil(kband / anvil_kband_piece(hh, kband)) + tail);
 	}
@@ -199,11 +204,12 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 		return NAN;
 	for (int i = 0; i < 4; i++) {
 		struct anvil_cache_key key = { j->hh, nu, acc, load[i].omega_idx, tau_idx, 0,
-					       ANVIL_CACHE_LOAD_PATCH, load[i].patch };
+					       ANVIL_CACHE_LOAD_PATCH, load[i].patch, j->patch };
 		enum anvil_cache_where w = cache ? anvil_cache_probe(cache, &key) : ANVIL_CACHE_NONE;
 		if (w == ANVIL_CACHE_NONE) {
 			double om = anvil_cache_grid(load[i].omega_idx);
-			double e = corr_evals(j->hh, nu, sqrt(xr), om, tq, acc, PHYS_EVAL_F);
+			double e = corr_evals(j->hh, nu, sqrt(xr), om, tq, acc, PHYS_EVAL_F,
+					      green_lift_wide(j->patch));
 			sum += e;
 			widest = fmax(widest, e);
 			/* the plate's nodes once: the solver keeps its K(t) table

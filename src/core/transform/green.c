@@ -287,6 +287,7 @@ static int spectrum_init(struct green_spectrum *sp, struct anvil_durbin *dl, con
 	double amp = exp(dl->c0 * t_inv) / Tp;
 	*sp = (struct green_spectrum){ .dl = dl, .cr = cr, .ktail = gs->ktail,
 				 .epsF = gs->tol * scale / (amp * (double)(M + 1)), .pl = pl,
+				 .lift_patch = gs->lift_patch,
 				 .progress = progress, .ctx = ctx, .patch = g->patch,
 				 .spec = malloc((M + 1) * sizeof(cplx)),
 				 .err = malloc((M + 1) * sizeof(double)) };
@@ -399,7 +400,7 @@ int anvil_green_alloc_set(double hh, double nu, double tau_end,
 	    !isfinite(tau_end) || !(hh > 0 && isfinite(hh)))
 		st = ANVIL_EINVAL;
 	for (size_t i = 0; !st && i < n; i++)
-		if (!(load[i].patch >= 0 && load[i].patch <= 1))
+		if (!(load[i].patch >= 0 && load[i].patch <= green_lift_wide(gs->lift_patch)))
 			st = ANVIL_EINVAL;
 	if (st)
 		return anvil_err_set(err, st, "layer responses: bad parameters (h/r0 = %g, nu = %g, window %g, %zu loads)",
@@ -471,9 +472,10 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
 	if (twin)
 		*twin = NULL;
 	if (!(nu > -1 && nu < 0.5) || !(tau_end > 0) || !isfinite(tau_end) ||
-	    (mode == ANVIL_GREEN_LAYER_CORRECTION && !(hh > 0 && isfinite(hh)))) {
-		anvil_err_set(err, ANVIL_EINVAL, "layer response: bad parameters (h/r0 = %g, nu = %g, window %g)",
-			      hh, nu, tau_end);
+	    (mode == ANVIL_GREEN_LAYER_CORRECTION && !(hh > 0 && isfinite(hh))) ||
+	    !(patch <= green_lift_wide(gs->lift_patch))) {
+		anvil_err_set(err, ANVIL_EINVAL, "layer response: bad parameters (h/r0 = %g, nu = %g, window %g, patch %g over the contour's %g)",
+			      hh, nu, tau_end, patch, green_lift_wide(gs->lift_patch));
 		return NULL;
 	}
 	struct anvil_green *g = green_new(mode, hh, nu, patch, tau_end);

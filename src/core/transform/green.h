@@ -55,6 +55,13 @@ struct anvil_green_settings {
 	struct anvil_plate_memo *plate; /* the plate's K(t) table kept from one
 			   response to the next (plate.h; borrowed, NULL: kept for a
 			   response and its twin only) */
+	double lift_patch; /* the widest patch (r0 units, in (0, 1]) whose zhat the
+			   band's lifted contour must carry (kernel.h anvil_kband_lift:
+			   at most 8/lift_patch above the axis); 0: r0's (1).  The
+			   physical contact's point and patch loads share the row's
+			   widest patch, hence one contour and the kernel's values
+			   (anvil_green_alloc_set): a small patch lifts the band
+			   higher, in fewer pieces.  A load's patch must not exceed it. */
 };
 
 void anvil_green_settings(enum anvil_accuracy acc, struct anvil_green_settings *gs);

@@ -36,6 +36,9 @@ struct green_spectrum {
 		      * for tests; a set's is sp[0]'s */
 	int far_cut; /* each k-integral to its hard limit (ktail), not where the budget
 		      * allows: a reference for tests; a set's is sp[0]'s */
+	double lift_patch; /* the widest patch (r0 units) the band's lifted contour
+			    * serves, at least patch (green.h anvil_green_settings);
+			    * 0: r0's; a set's is sp[0]'s */
 	double complex *spec;
 	double *err;
 };
@@ -46,6 +49,8 @@ struct green_spectrum {
  * ANVIL_OK, ANVIL_ETOL (a k-integral missed its share: it is in err),
  * ANVIL_ENUM, ANVIL_ENOMEM, ANVIL_ECANCEL (sp[0]'s progress callback). */
 #define GREEN_SPECTRA_MAX 8
+/* lift_patch as anvil_kband_lift's wide: 0 (unset) is r0's, 1 */
+double green_lift_wide(double lift_patch);
 int green_sample_spectra(enum anvil_green_mode mode, double kap2, double nu, double hh,
 			 const struct green_spectrum *sp, size_t nsp, size_t *evals);
 

@@ -130,11 +130,21 @@ double anvil_lift_cutoff(double nu)
 	return fmax(ANVIL_LIFT_CUTOFF, ANVIL_LIFT_S1 * fmin(c1, 2.0));
 }
 
-double anvil_kband_lift(double omega, double hh, double nu, double kband)
+double anvil_kband_lift(double omega, double hh, double nu, double kband, double wide,
+			double *kstart)
 {
-	if (!(isfinite(hh) && omega * hh < anvil_lift_cutoff(nu) * M_PI))
+	*kstart = 0.0;
+	if (!isfinite(hh))
 		return 0.0;
-	return fmin(fmin(ANVIL_LIFT_MAX, 0.5 / hh), 0.5 * kband / M_PI);
+	if (omega * hh < anvil_lift_cutoff(nu) * M_PI)
+		return fmin(fmin(ANVIL_LIFT_MAX / wide, 0.5 / hh), 0.5 * kband / M_PI);
+	double ks = ANVIL_LIFT_KS / hh;
+	double H = fmin(fmin(ANVIL_LIFT_MAX / wide, 0.5 / hh), 0.5 * (kband - ks) / M_PI);
+	if (!(omega * hh < ANVIL_LIFT_TOP * M_PI && kband - ks > 4.0 / hh &&
+	      2.0 * H > anvil_kband_piece(hh, kband)))
+		return 0.0;
+	*kstart = ks;
+	return H;
 }
 
 double anvil_kband_lift_piece(double hh, double kband, double lift)

@@ -82,7 +82,8 @@ double anvil_kband(double omega, double wabs, double nu, double hh, double cr);
 double anvil_kband_piece(double hh, double kband);
 
 /* The layer correction's band [0, kband] is integrated on the contour
- * k(x) = x + i H sin(pi x/kband), x in [0, kband] (green_spectrum.c), where
+ * k(x) = x + i H sin(pi x/kband), x in [0, kband] (green_spectrum.c; above
+ * the cutoff, below: x + i H sin(pi (x - ks)/(kband - ks)) on [ks, kband]), where
  * this returns H > 0; 0: on the real axis.  Exact by Cauchy's theorem when
  * no pole or branch point of W(k, s) lies between the two paths.  For
  * s = c0 + i omega, omega >= 0, a forward mode's pole (group velocity > 0)
@@ -99,7 +100,9 @@ double anvil_kband_piece(double hh, double kband);
  * pi min(c1, 2 c2).  So H is taken where omega hh <
  * anvil_lift_cutoff(nu) pi, and at most 0.5 kband/pi (a slope of at most 0.5:
  * below 27 degrees), 0.5/hh (a quarter of the complex modes' height) and
- * ANVIL_LIFT_MAX (zhat(k a) grows like exp(a H), a <= 1).  Off the real
+ * ANVIL_LIFT_MAX / wide (zhat(k a) grows like exp(a H): a H <= 8 for the
+ * widest patch a = wide the contour serves; wide = 1 for r0's, and a
+ * point load's integrand, zhat = 1/(2 pi), does not grow at all).  Off the real
  * axis the poles (c0/c_group below it) are H sin(...) further from the
  * path: the peaks the bisection chased are gone.  tests/test_lift.c checks
  * the two paths agree within their error estimates to past the cutoff,
@@ -109,14 +112,34 @@ double anvil_kband_piece(double hh, double kband);
  * 0-0.38 (nu = -0.5, 0.45, 0.49: none).  The cutoff is ANVIL_LIFT_S1 of
  * S1's cutoff, at least ANVIL_LIFT_CUTOFF (the first thickness resonance's
  * 0.9, where the lift stopped before: h = 0.02 r0 at 10 m/s spent 30 % of
- * its evaluations on the terms above it). */
+ * its evaluations on the terms above it).
+ * Above the cutoff the backward waves' poles (S1's, and the higher modes'
+ * between their zero-group-velocity points and their cutoffs) lie above
+ * the axis, but at Re k below those points, k hh of order 1-2: so the band
+ * is lifted from ANVIL_LIFT_KS/hh on (its kstart; the real axis before,
+ * in the real band's pieces), where omega hh < ANVIL_LIFT_TOP pi, the
+ * lifted part is at least 4/hh long and its pieces (2 H) are wider than
+ * the real band's (anvil_kband_piece): on a thick layer the lift is
+ * small (0.5/hh) and its complex kernel dearer than the real one for the
+ * same evaluations (h = 100 r0, 100 kg at 1 m/s: 0.43 -> 0.50 s).  tests/test_lift.c: from k hh = 0.3 and
+ * 1 the two paths disagree by up to 3.5e6 times the allowance (S1's
+ * backward wave, nu = 0 and 0.3), from 2 they agree to 12 pi/hh, from 3
+ * within 0.01 of the allowance to 6 pi/hh and 0.3 to 12 pi/hh (nu 0-0.45,
+ * h = 0.02-0.5 r0), with 2-4 times fewer evaluations (h = 0.1 r0, 0.1 g
+ * at 100 m/s: the band to 2.4 pi/hh). */
 #define ANVIL_LIFT_CUTOFF 0.9
 #define ANVIL_LIFT_S1 0.8
 #define ANVIL_LIFT_MAX 8.0
+#define ANVIL_LIFT_KS 3.0
+#define ANVIL_LIFT_TOP 6.0
 /* omega hh/pi below which the band is lifted: max(ANVIL_LIFT_CUTOFF,
  * ANVIL_LIFT_S1 min(c1/c2, 2)) */
 double anvil_lift_cutoff(double nu);
-double anvil_kband_lift(double omega, double hh, double nu, double kband);
+/* wide: the widest patch (r0 units, in (0, 1]) whose zhat the band's
+ * integrands carry on this contour: the loads of a set share it.  The
+ * contour is lifted on [*kstart, kband] (0 below the cutoff). */
+double anvil_kband_lift(double omega, double hh, double nu, double kband, double wide,
+			double *kstart);
 
 /* The starting pieces of a band lifted by H = lift: as anvil_kband_piece,
  * and at least 2 H (at most kband) wide: the path is H from the poles. */
