@@ -169,7 +169,7 @@ static int pass_implicit(struct ctx *c, struct pass *s)
 			return st;
 		/* the Nyquist compliance, on the segment's own steps */
 		double eps = i >= 2 ? nyq_eps(c, dl, s->P[n - 1]) : 0.0;
-		double epast = eps * (s->P[n - 2] - 2.0 * s->P[n - 1]);
+		double epast = eps > 0 ? eps * (s->P[n - 2] - 2.0 * s->P[n - 1]) : 0.0;
 		double A = p->V0 * (c->T0 + tn) - dt / p->m1 * (tn * S0 - S1) - conv - hw - mh / p->m1 - epast;
 		double P = 0;
 		st = impact_contact_state(c, s, n, A, a_prev, amax, impulse, &in, &ioff);
