@@ -147,7 +147,7 @@ assert '...saying how much work, and what judges it instead' \
 assert '...and nothing on stdout' [ ! -s "$tmp/out" ]
 
 # A thin plate where the paper's contact runs away (its r0 patch on an 80 um
-# plate: "the contact's end is lost") while `anvil run` answers: the
+# plate chatters: the plan refuses it, plan_paper.c) while `anvil run` answers: the
 # impactor comes to rest on the plate (t_s = 14.7 s).  field takes run's
 # row, says so, and refuses that load's window (5.5e8 times 2h/c1) in one
 # line that names it, with run's own t_s: the same impact.
@@ -156,7 +156,7 @@ check 'the thin plate: anvil run answers' "$ANVIL" run -q -m layer $T --format t
 ts_run=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "ts_us") c = i; next } { print $c }' "$tmp/out")
 check_exit 1 'the thin plate: field refuses the window, exit 1' "$ANVIL" field -q --at 0,0.05mm $T
 assert "...saying the paper's contact failed and run's row (physical) loads the patch" \
-	grep -q "^anvil: field: the paper's contact gives no force (impact: the contact's end near .* is lost .*); anvil run's row, the physical contact's, loads the r0 patch instead$" "$tmp/err"
+	grep -q "^anvil: field: the paper's contact gives no force (layer: the paper's contact chatters on this plate .*); anvil run's row, the physical contact's, loads the r0 patch instead$" "$tmp/err"
 assert '...then why not, in one line: the window against 2h/c1' \
 	grep -q "^anvil: field: the load lasts [0-9.e+]* ms, [0-9.e+]* times 2h/c1: its window needs more Fourier terms than the bound of [0-9]*; anvil run judges such a contact by quasi-static Hertz$" "$tmp/err"
 # (the load ends one of its 2000 history steps after t_s, printed to 4 digits)

@@ -557,9 +557,31 @@ static void halfspace_row(const struct anvil_problem *pb, const struct est *e,
 	}
 }
 
+/* The paper's contact's price of a wave row (HALFSPACE or LAYER: what
+ * the solver runs, plan_paper.c) and of the layer model's full job. */
+static void paper_price(const struct est *e, const struct anvil_cache *cache, enum anvil_model m,
+			struct anvil_plan_row *r)
+{
+	struct anvil_paper_work w;
+	if (r->method != ANVIL_METHOD_HALFSPACE && r->method != ANVIL_METHOD_LAYER)
+		return;
+	anvil_plan_paper_work(e->pb, r, cache, &w);
+	r->cost = r->status ? 0.0 : w.seconds; /* refused: nothing runs */
+	if (m != ANVIL_MODEL_LAYER || r->method == ANVIL_METHOD_LAYER || !isfinite(e->p.h)) {
+		r->cost_full = w.seconds;
+		return;
+	}
+	struct anvil_plan_row full = { .method = ANVIL_METHOD_LAYER, .job = e->lay };
+	anvil_plan_paper_work(e->pb, &full, cache, &w);
+	r->cost_full = w.seconds;
+}
+
 /* What the solver runs for a wave row: the job of its method, the
- * fallback of a half-space taken on causality, and the refusal. */
-static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_row *r)
+ * fallback of a half-space taken on causality, the refusal, and the
+ * paper's contact's price (every wave row here is the paper's: the
+ * physical rows replace them after, contact_rows). */
+static void row_job(const struct est *e, const struct anvil_cache *cache, enum anvil_model m,
+		    struct anvil_plan_row *r)
 {
 	struct anvil_err err;
 	if (r->method == ANVIL_METHOD_HERTZ || r->method == ANVIL_METHOD_ZENER)
@@ -572,8 +594,11 @@ static void row_job(const struct est *e, enum anvil_model m, struct anvil_plan_r
 		r->fallback_job = e->lay;
 	r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job, anvil_wave_window(&r->job, 0),
 				      r->job.omega, &err);
+	if (!r->status && r->method == ANVIL_METHOD_LAYER)
+		r->status = anvil_plan_paper_refuse(&e->p, m, &r->job, &err);
 	if (r->status)
 		snprintf(r->refusal, sizeof r->refusal, "%s", err.msg);
+	paper_price(e, cache, m, r);
 }
 
 /* --- contactB: the physical contact's rows (issue 10) --- */
@@ -739,7 +764,7 @@ static void rows(const struct anvil_problem *pb, const struct est *e,
 			layer_row(pb, e, cache, r);
 		else
 			halfspace_row(pb, e, r);
-		row_job(e, (enum anvil_model)m, r);
+		row_job(e, cache, (enum anvil_model)m, r);
 		if (m <= ANVIL_MODEL_ZENER)
 			r->cost_full = r->cost;
 		if (r->run)

@@ -385,6 +385,28 @@ double anvil_plan_phys_seconds(const struct anvil_wave_job *j, double nu, enum a
  * hh, bandwidth omega and window tau_end (tests/test_work.c holds it to
  * green.c's count). */
 double anvil_plan_corr_samples(double hh, double omega, double tau_end);
+/* The seconds of one layer correction beyond its kernel evaluations: its
+ * time samples and the plate's nodes (the physical row's unit costs). */
+double anvil_plan_corr_fixed(double hh, double omega, double tau_end);
+/* The work of a wave row r of the paper's contact (plan_paper.c): what the
+ * solver runs for it, in counts the solver reports or a test can check,
+ * and the seconds the planner prices.  Rounds and the step's rerun are
+ * the grid's expected shares (not whole). */
+struct anvil_paper_work {
+	int windows;      /* windows an impact tries (the last holds the contact) */
+	double rounds;    /* band rounds expected (1: the plan's band alone) */
+	double impacts;   /* coupled runs (mains, twins, the rerun's share) */
+	double responses; /* layer corrections computed (each with its twin) */
+	double evals;     /* their kernel evaluations */
+	double seconds;
+};
+void anvil_plan_paper_work(const struct anvil_problem *pb, const struct anvil_plan_row *r,
+			   const struct anvil_cache *cache, struct anvil_paper_work *w);
+/* The paper's contact refused before any work where it chatters on a thin
+ * plate over a long-mode window (plan_paper.c: measured on the grid);
+ * ANVIL_OK otherwise. */
+int anvil_plan_paper_refuse(const struct anvil_params *p, enum anvil_model m,
+			    const struct anvil_wave_job *j, struct anvil_err *err);
 /* Fraction of the impact energy radiated into an elastic half-space during
  * a Hertz impact (derivation in plan_est.c); NaN for bad parameters. */
 double anvil_plan_radiated(const struct anvil_params *p);

@@ -226,6 +226,12 @@ static double phys_work(const struct anvil_wave_job *j, double nu, enum anvil_ac
 	return widest;
 }
 
+double anvil_plan_corr_fixed(double hh, double omega, double tau_end)
+{
+	return anvil_plan_corr_samples(hh, omega, tau_end) * PHYS_COST_SAMPLE +
+	       plate_nodes(hh, tau_end) * PHYS_COST_NODE;
+}
+
 double anvil_plan_phys_evals(const struct anvil_wave_job *j, double nu, enum anvil_accuracy acc,
 			     const struct anvil_cache *cache, enum anvil_cache_where *where)
 {

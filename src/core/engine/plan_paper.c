@@ -1,0 +1,239 @@
+/* plan_paper.c: the work and price of the paper's contact rows (plan.h,
+ * anvil_plan_paper_work), and the refusal of the thin-plate rows whose
+ * paper contact chatters (anvil_plan_paper_refuse).
+ *
+ * What runs (solver.c run_anvil, run_waves, waves_impact): per band round
+ * a main impact and its twin at half the band, each trying the windows
+ * anvil_wave_window(j, 0), (j, 1), ... until the contact ends inside one
+ * (both from window 0); every window with the bottom reflection inside it
+ * needs a layer correction at the round's band, made with its twin from
+ * one spectrum (the twin of round r is the main of round r - 1: found in
+ * the cache); a round doubles the band while the target is missed and the
+ * band's part dominates; then, once, a rerun at a finer step.  The rounds
+ * and the rerun depend on the computed error estimates: their expected
+ * counts are measured (below), the rest is counted as the solver does it.
+ * Fitted on the issue's grid (copper on steel, h = 0.02 r0 - inf, 0.1 g -
+ * 100 kg, 1 mm/s - 1 km/s, normal) with the solver instrumented per impact
+ * and per response. */
+#include <math.h>
+
+#include "cache.h"
+#include "hertz.h"
+#include "plan.h"
+
+/* The paper's contact lasts at least the quasi-static anvil's time (Hertz
+ * plus the patch's static compliance, anvil_plan_static): on thick layers
+ * and the half-space at 100 m/s - 1 km/s, 1.45-1.9 times Hertz's, past
+ * the first window (1.4 times the estimate), measured 1.43-1.92.  So the
+ * windows an impact tries run to the first beyond the larger of the job's
+ * estimate and that.  On thin plates (h <= 0.05 r0 under 0.1 g) the
+ * contact chatters on to 2-8 times Zener's: not foreseen (10 of the grid's
+ * 630 paper rows, 0.1-1.6 s).  The margin: a contact just past the first
+ * window (aluminium on pmma at 483 m/s, 1.0004 times its end) is counted
+ * two windows, the dearer side (the second window's correction there made
+ * 3.8 times the first's evaluations). */
+#define PAPER_TS_MARGIN 1.05
+static int paper_windows(const struct anvil_params *p, const struct anvil_wave_job *j)
+{
+	double ts_static = 0, pmax;
+	if (anvil_plan_static(p, &ts_static, &pmax))
+		ts_static = 0;
+	double tau_c = PAPER_TS_MARGIN * fmax(j->ts, ts_static) * p->c2 / p->r0;
+	int k = 0;
+	while (k + 1 < j->attempts && !(anvil_wave_window(j, k) > tau_c))
+		k++;
+	return k + 1;
+}
+
+/* The band rounds a thin plate's long contact takes (1 + the doublings):
+ * the grid's running paper rows at h <= r0 by the first window's steps n
+ * (a decade's half each) averaged 1.07, 1.25, 1.47, 1.62, 1.77, 2.1, 1.7,
+ * 1.9 at n ~ 10^3 ... 10^6.5 (each row 1, 2 or 3: the error estimate
+ * decides), those at h = r0 alone 1.18 (43 of 49 one round); thicker
+ * layers 1.0-1.1.  Their trend below r0, at most refine_max + 1. */
+static double paper_rounds(const struct anvil_wave_job *j, double n0)
+{
+	if (!(j->hh < 1.0) || j->refine_max < 1 || !(n0 > 0))
+		return 1.0;
+	double e = 1.0 + 0.5 * (log10(n0) - 3.25);
+	return fmax(1.0, fmin(e, fmin(2.0, (double)j->refine_max + 1)));
+}
+
+/* The step's rerun (solver.c step_too_coarse: the force peaked within
+ * nsteps/16 steps, P_max missed by the march) cannot be told from the
+ * plan's estimates (Zener's t_max does not separate the rows, solver.c):
+ * on the grid it ran on 0 of 289 rows with a first window under 10^5.5
+ * steps, 0.14, 0.67, 0.88, 0.67 of those at 10^5.5, 10^6, 10^6.5, 10^7,
+ * each rerun two impacts (a round at the finer step) of about the first
+ * run's.  Its expected share, 0.7 beyond PAPER_RERUN_N, on thin plates. */
+#define PAPER_RERUN_N 5.6e5
+#define PAPER_RERUN_SHARE 0.7
+
+/* One impact of the paper's contact on the layer response over a window
+ * of n steps, seconds: the march's cost did not follow the generic model
+ * (plan_work.c, anvil_plan_impact_cost: fitted on the physical contact's
+ * march): per impact on the grid's 630 rows, 0.3-0.5 of it at 10^4 steps
+ * and 4-17 times it in long mode (10^6-10^8 steps), where the paper's
+ * rough force grows the step later and rests only at 0.15-0.3 of the
+ * window.  Measured (one core, cold): about PAPER_IMP_S (n / 10^5)^0.58
+ * up to 10^6 steps, then slower, (n / 10^6)^0.24, in the level's steps
+ * (ANVIL_GROW_AFTER nsteps pulses: the normal level's 400 fitted, others
+ * scaled by it: only normal was measured); no dearer than the generic
+ * model on windows the step does not grow in (all of it marched).  Where
+ * the contact chatters (PAPER_CHATTER_X below, 12 to 64 contacts, each
+ * end a search over the past, no growth after the first), 2.7-8 times
+ * more: (X / 11)^0.7, at most PAPER_CHATTER_MAX (the
+ * most measured; beyond, the solver's budget of contacts ends the run:
+ * rows at X = 111-440 refused after 0.09-0.8 s, where others at X = 175
+ * ran 1.5-4.8 s, not foreseen). */
+#define PAPER_CHATTER_MAX 8.0
+#define PAPER_IMP_S 0.065
+#define PAPER_IMP_P1 0.58
+#define PAPER_IMP_P2 0.24
+static double paper_impact(double window_s, const struct anvil_wave_job *j, double chatter)
+{
+	double n = window_s / j->dt, lvl = j->nsteps / 400.0, m = n / lvl;
+	double c = m <= 1e6 ? PAPER_IMP_S * pow(m / 1e5, PAPER_IMP_P1)
+			    : PAPER_IMP_S * pow(10.0, PAPER_IMP_P1) * pow(m / 1e6, PAPER_IMP_P2);
+	if (n <= ANVIL_GROW_AFTER * j->nsteps) /* no step grows: all of it marched */
+		c = fmin(c, anvil_plan_impact_cost(window_s, j->dt, 1, j->nsteps) / lvl);
+	return chatter * lvl * c;
+}
+
+/* The contact's chatter measure X = a r0 / h^2 (a: Hertz's contact radius,
+ * the plan's figure; the paper's contact on a plate thinner than the
+ * patch): on the grid every running paper row with X >= 44 and a first
+ * window within ANVIL_MAX_STEPS chattered (12-64 contacts; the one long-
+ * mode row that ran there, h = 0.1 r0, 100 kg at 1 m/s, did not). */
+#define PAPER_CHATTER_X 35.0
+/* The refusal (anvil_plan_paper_refuse): of the grid's long-mode rows
+ * (first window over ANVIL_MAX_STEPS steps) with X >= 69.8, every one (66)
+ * was refused by the solver after 0.03-0.8 s (the force too rough to grow
+ * the step past 10^6 nodes, or over 64 contacts); at X = 44 one ran (the
+ * row above, 4.5 s, since the implicit march's damping, fc5fcb4: refused
+ * before it) and 7 were refused; at X <= 28 rows ran (0.9-6.5 s) beside 10
+ * refused at the same X (h = 0.02-0.2 r0): those are not foreseen, nor the
+ * 5 short-window rows refused at X = 111-440 (the budget of contacts)
+ * where others at X = 175 ran.  The threshold sits between 44 and 69.8
+ * (the grid's X steps by 1.58): an empirical rule on copper on steel, not
+ * derived; a change of the march can move its edge. */
+#define PAPER_REFUSE_X 55.0
+static double chatter_x(const struct anvil_params *p)
+{
+	double a = sqrt(p->r0 * anvil_hertz_alpha_max() * p->T * p->V0);
+	return isfinite(p->h) && p->h > 0 ? a * p->r0 / (p->h * p->h) : 0.0;
+}
+
+/* Unit costs (one core, cold): a kernel evaluation of the paper's r0
+ * response, 0.17-0.3 us on the responses of over 10^5 evaluations (0.35
+ * us over all 671, small ones carrying their fixed part), and that fixed
+ * part, the time samples and the plate's nodes (plan_work.c,
+ * anvil_plan_corr_fixed). */
+#define PAPER_COST_EVAL 2.3e-7
+#define PAPER_COST_HALFSPACE 1.0e-4
+
+/* The correction of band index oi over window tau_end: its evaluations
+ * when the cache lacks it or its twin, else 0. */
+static double corr_needed(const struct anvil_params *p, const struct anvil_problem *pb,
+			  const struct anvil_wave_job *j, int oi, double tau_end,
+			  const struct anvil_cache *cache, double *fixed)
+{
+	int ti = anvil_wave_tau_idx(j, tau_end);
+	struct anvil_cache_key key = { j->hh, p->nu, pb->accuracy, oi, ti, 0,
+				       ANVIL_CACHE_LOAD_R0, 0.0 };
+	struct anvil_cache_key twin = key;
+	twin.omega_idx = oi - ANVIL_CACHE_STEPS;
+	twin.twin = 1;
+	*fixed = 0;
+	if (cache && anvil_cache_probe(cache, &key) != ANVIL_CACHE_NONE &&
+	    anvil_cache_probe(cache, &twin) != ANVIL_CACHE_NONE)
+		return 0.0;
+	double om = anvil_cache_grid(oi), tq = anvil_cache_grid(ti);
+	*fixed = anvil_plan_corr_fixed(j->hh, om, tq);
+	return anvil_plan_corr_evals(j->hh, p->nu, om, tq, pb->accuracy);
+}
+
+/* The work of job j (a wave run of the paper's contact) added to w. */
+static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job *j,
+		     int layer_resp, const struct anvil_cache *cache, struct anvil_paper_work *w)
+{
+	const struct anvil_params *p = &pb->p;
+	int nw = paper_windows(p, j);
+	double n0 = anvil_wave_window(j, 0) * p->r0 / p->c2 / j->dt;
+	double x = chatter_x(p);
+	double chat = x >= PAPER_CHATTER_X && n0 <= ANVIL_MAX_STEPS
+			      ? fmin(PAPER_CHATTER_MAX, pow(x / 11.0, 0.7))
+			      : 1.0;
+	int corr = 0;
+	for (int k = 0; k < nw; k++)
+		corr |= layer_resp && anvil_wave_needs_corr(p, j, anvil_wave_window(j, k));
+	double rounds = corr ? paper_rounds(j, n0) : 1.0;
+	double sec = 0, imp = 0;
+	w->windows = nw;
+	w->rounds = rounds;
+	/* each round's main and (with a correction) twin try every window up
+	 * to the one that holds the contact, marching each to its end but the
+	 * last */
+	for (int k = 0; k < nw; k++) {
+		double win = anvil_wave_window(j, k) * p->r0 / p->c2;
+		imp += paper_impact(win, j, chat);
+	}
+	double per_round = corr ? 2.0 : 1.0;
+	double rerun = corr && j->hh < 1.0 && n0 > PAPER_RERUN_N ? PAPER_RERUN_SHARE : 0.0;
+	w->impacts += nw * per_round * (rounds + rerun);
+	sec += imp * per_round * (rounds + rerun);
+	/* round r's responses (a share of the last, rounds not whole) */
+	for (int r = 0; corr && r <= j->refine_max; r++) {
+		double share = fmin(1.0, rounds - r);
+		if (!(share > 0))
+			break;
+		for (int k = 0; k < nw; k++) {
+			double tau_end = anvil_wave_window(j, k), fixed;
+			if (!anvil_wave_needs_corr(p, j, tau_end))
+				continue;
+			double ev = corr_needed(p, pb, j, j->omega_idx + r * ANVIL_CACHE_STEPS,
+						tau_end, cache, &fixed);
+			if (ev > 0 || fixed > 0)
+				w->responses += share;
+			w->evals += share * ev;
+			sec += share * (ev * PAPER_COST_EVAL + fixed);
+		}
+	}
+	w->seconds += sec + PAPER_COST_HALFSPACE;
+}
+
+void anvil_plan_paper_work(const struct anvil_problem *pb, const struct anvil_plan_row *r,
+			   const struct anvil_cache *cache, struct anvil_paper_work *w)
+{
+	*w = (struct anvil_paper_work){ 0 };
+	job_work(pb, &r->job, r->method == ANVIL_METHOD_LAYER, cache, w);
+	/* the fallback (a late reflection: the half-space's contact outlasting
+	 * 2h/c1) when the contact the windows were chosen for reaches it */
+	if (r->fallback) {
+		double ts_static = 0, pmax;
+		if (anvil_plan_static(&pb->p, &ts_static, &pmax))
+			ts_static = 0;
+		if (fmax(r->job.ts, ts_static) >= 2.0 * pb->p.h / pb->p.c1) {
+			struct anvil_paper_work f;
+			anvil_plan_paper_work(pb, &(struct anvil_plan_row){ .method = ANVIL_METHOD_LAYER,
+									   .job = r->fallback_job },
+					      cache, &f);
+			w->impacts += f.impacts;
+			w->responses += f.responses;
+			w->evals += f.evals;
+			w->seconds += f.seconds;
+		}
+	}
+}
+
+int anvil_plan_paper_refuse(const struct anvil_params *p, enum anvil_model m,
+			    const struct anvil_wave_job *j, struct anvil_err *err)
+{
+	double n0 = anvil_wave_window(j, 0) * p->r0 / p->c2 / j->dt, x = chatter_x(p);
+	if (!j->grows || !(n0 > ANVIL_MAX_STEPS) || !(x >= PAPER_REFUSE_X))
+		return ANVIL_OK;
+	return anvil_err_set(err, ANVIL_ETOL,
+			     "%s: the paper's contact chatters on this plate (Hertz's contact radius a = %.3g mm, a r0 / h^2 = %.3g) over more than %d steps: the step cannot grow; the thin-plate model 'zener' or the physical contact applies here",
+			     anvil_model_name(m), sqrt(p->r0 * anvil_hertz_alpha_max() * p->T * p->V0) * 1e3,
+			     x, ANVIL_MAX_STEPS);
+}

@@ -1,0 +1,171 @@
+/* test_paper_work.c: the planner's work of the paper's contact rows
+ * (plan.h anvil_plan_paper_work, issue 11) against what the solver does.
+ *
+ * For a seeded random sample of scenes with the paper's contact (h/r0
+ * 0.05-1000 and the half-space, V0 1 mm/s - 1 km/s, m 0.1 g - 100 kg, the
+ * built-in material pairs, draft and normal), the layer model's row (its
+ * method as planned: half-space or layer) is run on a fresh solver with
+ * the cache in memory, and the plan's predicted counts are held to the
+ * solver's: deterministic counts, not seconds (scripts/bench compares
+ * seconds):
+ *   windows: the windows the main impact tried, from the contact's end
+ *     (the first anvil_wave_window beyond t_s; rows that came to rest are
+ *     left out of this one: their t_s is the rest's, not an end);
+ *   responses: the layer corrections computed (anvil_solver_stats), one
+ *     per (band round, window) with the reflection inside it;
+ *   evaluations: their kernel evaluations.
+ * Each within a factor of 2 of the solver's (the rounds are the grid's
+ * expected shares, plan_paper.c: a row of 1 or 3 rounds is within 2x of
+ * 1.5-2), on layers of h >= r0 and the half-space.  On thinner plates the
+ * paper's contact may outlast Zener's estimate by several windows (it
+ * chatters, or comes to rest only where a later window would be refused):
+ * not foreseen (plan_paper.c), their tally is printed, not held (here 3-4
+ * of 66 miss 2x; with ANVIL_TEST_N=2000 ANVIL_TEST_PMAX=0.05, 12 of 990
+ * rows, all h = 0.06-0.8 r0).  The rounds (on plates below r0 only) are
+ * thus not held either.
+ * Scenes the plan prices over PRICE_MAX seconds are left out to keep make
+ * check short (ANVIL_TEST_N, ANVIL_TEST_PMAX widen it; ANVIL_TEST_DUMP
+ * prints every row). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "plan.h"
+#include "scene_run.h"
+#include "solver.h"
+#include "tap.h"
+
+#define NSCENES (getenv("ANVIL_TEST_N") ? atoi(getenv("ANVIL_TEST_N")) : 1500)
+#define PRICE_MAX (getenv("ANVIL_TEST_PMAX") ? atof(getenv("ANVIL_TEST_PMAX")) : 0.03)
+
+/* A deterministic generator (a 64-bit LCG, Knuth's MMIX constants). */
+static double uniform(unsigned long long *x)
+{
+	*x = *x * 6364136223846793005ull + 1442695040888963407ull;
+	return (double)(*x >> 11) / 9007199254740992.0;
+}
+
+static const char *const materials[] = { "steel", "copper", "aluminium", "glass", "titanium",
+					 "tungsten-carbide", "pmma" };
+static const char *const levels[] = { "draft", "normal" };
+
+static int sample_scene(unsigned long long *seed, struct anvil_scene *sc, char *what, size_t n)
+{
+	char h[32], v[32], m[32];
+	struct anvil_err e;
+	double u = uniform(seed);
+	double hh = exp(log(0.05) + uniform(seed) * log(2e4));
+	double v0 = exp(log(1e-3) + uniform(seed) * log(1e6));
+	double m1 = exp(log(1e-4) + uniform(seed) * log(1e6));
+	const char *mi = materials[(int)(uniform(seed) * 7)], *ml = materials[(int)(uniform(seed) * 7)];
+	const char *lv = levels[(int)(uniform(seed) * 2)];
+	if (u < 0.05)
+		snprintf(h, sizeof h, "inf");
+	else
+		snprintf(h, sizeof h, "%.4gr0", hh);
+	snprintf(v, sizeof v, "%.4g m/s", v0);
+	snprintf(m, sizeof m, "%.4g kg", m1);
+	snprintf(what, n, "%s on %s, h %s, V0 %s, m %s, %s", mi, ml, h, v, m, lv);
+	anvil_scene_default(sc);
+	const char *kv[] = { "layer.thickness", h, "impact.velocity", v, "impactor.mass", m,
+			     "impactor.material", mi, "layer.material", ml, "solver.accuracy", lv,
+			     "effects.contact", "paper", NULL };
+	for (int i = 0; kv[i]; i += 2)
+		if (anvil_scene_set(sc, kv[i], kv[i + 1], "test", 0, &e))
+			return -1;
+	return 0;
+}
+
+struct tally {
+	const char *name;
+	int n, within;
+	double lo, hi;
+	char worst[300];
+};
+
+static void tally_add(struct tally *t, double pred, double got, const char *what)
+{
+	double q = got > 0 ? pred / got : pred > 0 ? INFINITY : 1.0;
+	t->n++;
+	t->within += q >= 0.5 && q <= 2.0;
+	if (t->n == 1 || q < t->lo || q > t->hi)
+		snprintf(t->worst, sizeof t->worst, "%s: predicted %.3g, did %.3g", what, pred, got);
+	t->lo = t->n == 1 ? q : fmin(t->lo, q);
+	t->hi = t->n == 1 ? q : fmax(t->hi, q);
+}
+
+/* The windows the main impact tried: the first whose end is beyond the
+ * contact's (its t_s in tau). */
+static int windows_tried(const struct anvil_wave_job *j, double tau_s)
+{
+	int k = 0;
+	while (k + 1 < j->attempts && !(anvil_wave_window(j, k) > tau_s))
+		k++;
+	return k + 1;
+}
+
+int main(void)
+{
+	unsigned long long seed = 2024;
+	struct tally win = { .name = "windows" }, resp = { .name = "responses" },
+		     ev = { .name = "evaluations" }, thin[3] = { { .name = "thin: windows" },
+								 { .name = "thin: responses" },
+								 { .name = "thin: evaluations" } };
+	int dump = getenv("ANVIL_TEST_DUMP") != NULL, ran = 0, corr = 0;
+	plan(4);
+	for (int i = 0; i < NSCENES; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		struct anvil_err e;
+		char what[200];
+		if (sample_scene(&seed, &sc, what, sizeof what) || scene_plan(&sc, &pl, &e))
+			continue;
+		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+		if (r->status || !r->run ||
+		    (r->method != ANVIL_METHOD_LAYER && r->method != ANVIL_METHOD_HALFSPACE) ||
+		    !(r->cost <= PRICE_MAX))
+			continue;
+		struct anvil_paper_work w;
+		anvil_plan_paper_work(&pl.pb, r, NULL, &w);
+		struct anvil_solver *s = anvil_solver_alloc();
+		struct anvil_result res;
+		struct anvil_solver_stats ss;
+		anvil_solver_set_cache_dir(s, NULL, NULL);
+		int st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &res, &e);
+		anvil_solver_stats(s, &ss);
+		anvil_solver_free(s);
+		if (st < 0) { /* refused by a check only a computed result allows */
+			if (dump)
+				diag("%s: %s", what, e.msg);
+			anvil_result_free(&res);
+			continue;
+		}
+		ran++;
+		double tau_s = res.ts.val * pl.pb.p.c2 / pl.pb.p.r0;
+		int plate = pl.pb.p.h < pl.pb.p.r0;
+		if (!(res.rest_bound > 0) && r->method == ANVIL_METHOD_LAYER)
+			tally_add(plate ? &thin[0] : &win, w.windows, windows_tried(&r->job, tau_s),
+				  what);
+		tally_add(plate ? &thin[1] : &resp, w.responses, (double)ss.layer_computed, what);
+		if (ss.layer_evals > 0 || w.evals > 0) {
+			corr += !plate;
+			tally_add(plate ? &thin[2] : &ev, w.evals, (double)ss.layer_evals, what);
+		}
+		if (dump)
+			diag("%s: windows %d (t_s %.4g, rest %d), responses %.2f/%lu, evals %.4g/%zu, price %.3g s",
+			     what, w.windows, tau_s, res.rest_bound > 0, w.responses,
+			     ss.layer_computed, w.evals, ss.layer_evals, w.seconds);
+		anvil_result_free(&res);
+	}
+	const struct tally *t[6] = { &win, &resp, &ev, &thin[0], &thin[1], &thin[2] };
+	for (int i = 0; i < 6; i++)
+		diag("%s: %d rows, predicted/actual %.2f-%.2f, %d within 2x; worst: %s", t[i]->name,
+		     t[i]->n, t[i]->lo, t[i]->hi, t[i]->within, t[i]->worst);
+	ok(resp.n >= 300 && corr >= 100,
+	   "%d paper rows run (%d on h >= r0, %d of them with a layer correction)", ran, resp.n,
+	   corr);
+	for (int i = 0; i < 3; i++)
+		ok(t[i]->within == t[i]->n, "the plan's %s within 2x of the solver's on %d of %d rows",
+		   t[i]->name, t[i]->within, t[i]->n);
+	return done_testing();
+}
