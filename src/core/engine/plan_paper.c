@@ -140,7 +140,7 @@ static double corr_needed(const struct anvil_params *p, const struct anvil_probl
 {
 	int ti = anvil_wave_tau_idx(j, tau_end);
 	struct anvil_cache_key key = { j->hh, p->nu, pb->accuracy, oi, ti, 0,
-				       ANVIL_CACHE_LOAD_R0, 0.0 };
+				       ANVIL_CACHE_LOAD_R0, 0.0, 0.0 };
 	struct anvil_cache_key twin = key;
 	twin.omega_idx = oi - ANVIL_CACHE_STEPS;
 	twin.twin = 1;
