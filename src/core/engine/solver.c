@@ -322,10 +322,9 @@ int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err)
 {
 	double tgt = anvil_accuracy_target(acc);
-	/* at rest (impact_rest.c) t_s is when the rebound's bound fell within
-	 * the target, known to the bound's halving time, not a contact's end */
-	double e_p = r->Pmax.err / r->Pmax.val, e_t = r->rest_bound > 0 ? 0.0 : r->ts.err / r->ts.val;
-	double e_r = r->Rf.err / fmax(fabs(r->Rf.val), 0.1);
+	double e[3];
+	solver_target_errs(r, e);
+	double e_p = e[0], e_t = e[1], e_r = e[2];
 	if (!isfinite(r->ts.val) || !isfinite(r->Pmax.val) || !isfinite(r->Rf.val) || !(r->ts.val > 0) ||
 	    !(r->Pmax.val > 0) || r->Rf.val > 1.0 + fmax(10.0 * r->Rf.err, 1e-6))
 		return anvil_err_set(err, ANVIL_ENUM,
@@ -427,10 +426,10 @@ void solver_merge_opts(struct anvil_impact_opts *io, const struct anvil_problem 
 }
 
 
-/* The estimates of P_max, t_s and R_f (as solver_check_target weighs
- * them), e[3]. */
-static void target_errs(const struct anvil_result *r, double e[3])
+void solver_target_errs(const struct anvil_result *r, double e[3])
 {
+	/* at rest (impact_rest.c) t_s is when the rebound's bound fell within
+	 * the target, known to the bound's halving time, not a contact's end */
 	e[0] = r->Pmax.err / r->Pmax.val;
 	e[1] = r->rest_bound > 0 ? 0.0 : r->ts.err / r->ts.val;
 	e[2] = r->Rf.err / fmax(fabs(r->Rf.val), 0.1);
@@ -445,7 +444,7 @@ static void target_errs(const struct anvil_result *r, double e[3])
 static int band_dominates(const struct anvil_result *r, const double before[3], double tgt)
 {
 	double e[3];
-	target_errs(r, e);
+	solver_target_errs(r, e);
 	for (int i = 0; i < 3; i++)
 		if (e[i] > tgt && e[i] - before[i] > 0.5 * e[i])
 			return 1;
@@ -488,7 +487,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		*used_corr = wv.rs.corr != NULL;
 		*band = *used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
 		double before[3];
-		target_errs(r, before);
+		solver_target_errs(r, before);
 		*march = before[0];
 		if (st || !wv.rs.corr)
 			break;

@@ -61,6 +61,9 @@ int solver_response_impulse(void *ctx, double tau, double *val);
  * the estimate says why in err), ANVIL_ENUM (unphysical). */
 int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err);
+/* The relative estimates of P_max, t_s and R_f as solver_check_target
+ * weighs them against the target, e[3]. */
+void solver_target_errs(const struct anvil_result *r, double e[3]);
 /* The growing step's options (impact.h) for job j. */
 void solver_grow_opts(struct anvil_impact_opts *io, const struct anvil_problem *pb,
 		      const struct anvil_wave_job *j);
