@@ -437,6 +437,19 @@ static void test_warnings(void)
 	sc = scene((const char *[]){ "layer.thickness", "0.05 r0", "solver.scheme", "paper", NULL });
 	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_REFUSE), "h = 0.05 r0, the paper's scheme: the layer solver will refuse");
+	/* the warning is of the rows that run: the paper's contact refuses
+	 * this scene, the physical one (the default) answers it */
+	const char *wc[] = { "layer.thickness", "0.1 r0", "impactor.mass", "100 kg", "impact.velocity",
+			     "100 m/s", "impactor.material", "tungsten-carbide", "effects.contact",
+			     "physical", NULL };
+	sc = scene(wc);
+	scene_plan(&sc, &pl, NULL);
+	ok(!has_warning(&pl, ANVIL_WARN_REFUSE) && pl.row[ANVIL_MODEL_LAYER].status == ANVIL_OK,
+	   "carbide, 100 kg at 100 m/s on 0.1 r0, physical contact: runs, no refusal warning");
+	wc[9] = "paper";
+	sc = scene(wc);
+	scene_plan(&sc, &pl, NULL);
+	ok(has_warning(&pl, ANVIL_WARN_REFUSE), "  the paper's contact: refused, said so");
 	sc = scene((const char *[]){ "effects.waves", "halfspace", NULL });
 	scene_plan(&sc, &pl, NULL);
 	ok(has_warning(&pl, ANVIL_WARN_NOT_EXACT) && !pl.row[2].exact,
