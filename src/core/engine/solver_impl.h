@@ -48,7 +48,14 @@ struct response {
 	const struct anvil_halfspace *hs;
 	const struct anvil_green *corr;
 	double stat;
+	/* the correction's start (solver_start.c): below t1 (0: none) its
+	 * ramp is 0 before t0, then c2 x^2 + c3 x^3 in x = tau - t0 */
+	double t0, t1, c2, c3;
 };
+
+/* The correction's start in rs (solver_start.c) for a band omega
+ * (r0/c2 units) on the layer of p: ANVIL_OK or the ramp's error. */
+int solver_start_set(struct response *rs, double omega, const struct anvil_params *p);
 
 /* The impact's ramp callback (impact.h) over a struct response. */
 int solver_response_ramp(void *ctx, double tau, double *val);
