@@ -95,6 +95,10 @@ struct frozen {
 	size_t n0;
 	double t_far, tb; /* tb: its last charge's time */
 	double tc[FAR_P], Wx[FAR_P], Wz[FAR_P];
+	/* its hats' FFT (x's, then z's) at the size 2^xlg of the last chunk
+	 * (frozen_chunk): the same for every chunk of that size */
+	double *xf;
+	int xlg;
 };
 
 struct ctx {
@@ -163,6 +167,10 @@ struct ctx {
 	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
 	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
 	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
+	/* frozen_chunk's arrays, kept for the next chunk (a fresh calloc of
+	 * that size is fresh pages: a fault each 4 kB) */
+	double *hwk;
+	size_t hwcap;
 };
 
 /* The ramp responses off the grid that the far past needs at every
