@@ -111,9 +111,9 @@ static int level_weights(struct ctx *c, int L, size_t capn)
 	return impact_g_need(c, 2);
 }
 
-/* At the freeze of f (long mode): its charges and where the far field
- * starts (impact_far.c), and its weights out to there (the near targets'
- * exact sums). */
+/* At the freeze of f (t_smooth > 0): its charges and where the far field
+ * starts (impact_far.c), and (long mode) its weights out to there (the
+ * near targets' exact sums; a window that fits has them already). */
 static int far_setup(struct ctx *c, struct frozen *f, const double *tn, double dp, double dn)
 {
 	impact_far_charges(c, f, tn, dp, dn);
@@ -157,7 +157,7 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 					   .Qb = c->dg ? s->Q[ns] : 0.0, .n0 = c->seg0,
 					   .t_far = INFINITY };
 	c->g = c->dg = NULL;
-	if (c->lng) {
+	if (c->t_smooth > 0) { /* the far field (long mode, or where the caller asks) */
 		int st = far_setup(c, &c->fz[c->nfz - 1], s->t + c->seg0, dp, dn);
 		if (st)
 			return st;
