@@ -176,7 +176,7 @@ struct anvil_impact_opts {
 	 * (impact_far.c, FAR_MIN_FIT): a saving, the results within its
 	 * small error of the weights' sums. */
 	double t_smooth;
-	/* Optional (long mode): the ramps' second derivatives, the impulse
+	/* Optional (the far field, t_smooth): the ramps' second derivatives, the impulse
 	 * responses (dimensionless, as the ramps), for the far field beyond
 	 * t_smooth; a call that fails (or none given) leaves the far field to
 	 * a wide difference of the ramp (seven calls, impact_grow.c). */
