@@ -138,7 +138,15 @@ static int phys_window(struct anvil_solver *s, const struct anvil_problem *pb,
 					    anvil_cache_grid(ld.omega_idx), NULL);
 	u->corr = isfinite(j->hh) && anvil_wave_needs_corr(p, j, u->tau_end);
 	u->io.alpha_ref = 0;
-	u->io.t_smooth = anvil_wave_t_smooth(p, j, u->tau_end);
+	/* the far field of the frozen past (impact.h t_smooth) wherever the
+	 * step grows and the plate's tail makes the ramps smooth: in a long
+	 * window anvil_wave_t_smooth's, which the refusal rule reads; in one
+	 * that fits, the same time, the far field then a saving (impact_far.c,
+	 * FAR_MIN_FIT) where the weights out to the window's end had been the
+	 * march's largest cost */
+	u->io.t_smooth = j->grows && u->corr
+				 ? anvil_plate_t1(j->hh, anvil_cache_grid(tau_idx)) * p->r0 / p->c2
+				 : 0.0;
 	u->io.impulse = solver_response_impulse;
 	u->io.impulse_ctx = &u->rs;
 	u->io.impulse2 = NULL;

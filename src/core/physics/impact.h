@@ -171,9 +171,12 @@ struct anvil_impact_opts {
 	 * as fine-grid weights out to the window's end, and a window of more
 	 * than max_steps steps at dt runs (long mode): max_steps then bounds
 	 * the nodes the grown march makes (ANVIL_ETOL when it needs more).
-	 * 0: never (such a window is refused before any work). */
+	 * 0: never (such a window is refused before any work).  In a window
+	 * that fits, > 0 asks for the far field too, from further out
+	 * (impact_far.c, FAR_MIN_FIT): a saving, the results within its
+	 * small error of the weights' sums. */
 	double t_smooth;
-	/* Optional (long mode): the ramps' second derivatives, the impulse
+	/* Optional (the far field, t_smooth): the ramps' second derivatives, the impulse
 	 * responses (dimensionless, as the ramps), for the far field beyond
 	 * t_smooth; a call that fails (or none given) leaves the far field to
 	 * a wide difference of the ramp (seven calls, impact_grow.c). */

@@ -1,5 +1,5 @@
-/* impact_far.c: the far field of the frozen past (long mode, impact.h
- * t_smooth; impact_grow.c freezes the segments).
+/* impact_far.c: the far field of the frozen past (impact.h t_smooth;
+ * impact_grow.c freezes the segments).
  *
  * A frozen segment's hats at lags many times its span enter as charges:
  * sum_m c_m H(t - t_m), c_m = P_m times the hat's area at its centroid
@@ -30,6 +30,20 @@
 #define FAR_RHO 4.0
 #define FAR_MIN 1024.0
 #define FAR_H 32.0
+/* Where the window fits (not long mode) the fine grid's weights reach the
+ * window's end and the far field is a saving, not a need: it starts
+ * FAR_MIN_FIT widths out.  There it departs from the exact sums they
+ * gave by H's own error (its table: the far sum against the weights'
+ * sums measured 1e-9 to 2e-8 of a segment's deflection, which is the
+ * weights' rounding eps (Lambda/w)^2 as much as H's), and a grazing end
+ * follows such a perturbation: at FAR_MIN widths one (1 kg at 1000 m/s
+ * on h = r0, R_f 3e-6) fell to the rest state at 5848 us from its end at
+ * 8630 +- 6 us; at 16384 widths the grid's largest move was 0.78 of its
+ * estimate, at 32768 widths 0.044.  It then spares the weights out to
+ * the window's end (a ramp call each, at every dt0 of a segment at
+ * level 0) and their FFT sums: h = 0.5 r0, 100 kg at 1 cm/s 0.31 ->
+ * 0.16 s CPU, h = 0.02 r0, 0.1 g at 10 m/s 0.53 -> 0.45 s. */
+#define FAR_MIN_FIT 32768.0
 
 double impact_far_h(const struct ctx *c, int r, double t)
 {
@@ -74,22 +88,19 @@ double impact_far_sum(const struct ctx *c, const struct frozen *f, double t)
 	return w;
 }
 
-/* The far field of f at the targets k0 .. k1 (t0, t1 the first and
- * last), a run within 1/FAR_RHO of its distance from the charges: its
- * interpolant at FAR_P Chebyshev points of the targets (the same error as
- * the charges', the two ends' roles swapped), added to out[k].  The
+/* f's run over [t0, t1], within 1/FAR_RHO of its distance from the
+ * charges: the far field's interpolant at FAR_P Chebyshev points (the
+ * same error as the charges', the two ends' roles swapped), kept in f
+ * for every target that falls in it, this chunk's or a later one's.  The
  * interpolant as its Chebyshev series (the discrete cosine transform of
  * the values, which the points of the first kind make exact) summed by
- * Clenshaw's recurrence: 2 FAR_P multiplications a target where the
- * barycentric form's 2 FAR_P divisions had been a third of the far
- * field's cost (h = 0.02 r0, 1 kg at 10 m/s: 1.06e6 targets in 8180
+ * Clenshaw's recurrence (far_run_at): 2 FAR_P multiplications a target
+ * where the barycentric form's 2 FAR_P divisions had been a third of the
+ * far field's cost (h = 0.02 r0, 1 kg at 10 m/s: 1.06e6 targets in 8180
  * runs); both are backward stable, their values apart by rounding. */
-static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t k1,
-		    double *out)
+static void far_run(const struct ctx *c, struct frozen *f, double t0, double t1)
 {
-	double t0 = (double)(u0 + (k0 << c->lev)) * c->dt0;
-	double t1 = (double)(u0 + (k1 << c->lev)) * c->dt0;
-	double F[FAR_P], a[FAR_P], xn[FAR_P], T0[FAR_P], T1[FAR_P];
+	double F[FAR_P], xn[FAR_P], T0[FAR_P], T1[FAR_P];
 	for (int j = 0; j < FAR_P; j++) {
 		xn[j] = cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
 		F[j] = impact_far_sum(c, f, 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * xn[j]);
@@ -106,62 +117,87 @@ static void far_run(const struct ctx *c, const struct frozen *f, size_t u0, size
 				T0[j] = T1[j], T1[j] = tm;
 			sum += F[j] * tm;
 		}
-		a[m] = (m ? 2.0 : 1.0) * sum / FAR_P;
+		f->ra[m] = (m ? 2.0 : 1.0) * sum / FAR_P;
 	}
-	for (size_t k = k0; k <= k1; k++) {
-		double t = (double)(u0 + (k << c->lev)) * c->dt0, x = (2.0 * t - t0 - t1) / (t1 - t0);
-		double b1 = 0, b2 = 0;
-		for (int m = FAR_P - 1; m >= 1; m--) {
-			double b0 = 2.0 * x * b1 - b2 + a[m];
-			b2 = b1, b1 = b0;
-		}
-		out[k] += x * b1 - b2 + a[0];
+	f->rt0 = t0, f->rt1 = t1;
+}
+
+/* f's kept run at t (rt0 <= t <= rt1) */
+static double far_run_at(const struct frozen *f, double t)
+{
+	double x = (2.0 * t - f->rt0 - f->rt1) / (f->rt1 - f->rt0), b1 = 0, b2 = 0;
+	for (int m = FAR_P - 1; m >= 1; m--) {
+		double b0 = 2.0 * x * b1 - b2 + f->ra[m];
+		b2 = b1, b1 = b0;
 	}
+	return x * b1 - b2 + f->ra[0];
 }
 
 /* The far field of f at the targets t_k = (u0 + k 2^lev) dt0, k0 <= k < C,
  * added to out[k].  It is as smooth in the target as in the source, so
  * the targets go in runs, each within 1/FAR_RHO of its distance from the
- * charges (far_run: FAR_P far sums, not one per target), a run of at most
- * 2 FAR_P targets one by one.  A chunk whose targets are one such run is
- * one run, as it was; the runs grow with the distance (by 1 + 1/FAR_RHO
- * each), so a chunk that is not costs O(log) runs: such chunks, summed
- * target by target, had been four fifths of the far sums on a thin plate
- * (h = 0.02 r0, 100 kg at 10 m/s). */
-void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+ * charges (far_run: FAR_P far sums, not one per target); where a run
+ * would hold at most FAR_P targets of the current step they go one by one
+ * (as many far sums or fewer).  A run spans its whole reach, not just the
+ * chunk's targets, and is kept for the next chunk's (the window's end
+ * bounds it): cut at the chunk's end, as they had been, half of the runs
+ * ended there and the next chunk began a new one (h = 0.02 r0, 100 kg at
+ * 10 m/s: 9298 of 17007), and runs of 2 FAR_P targets or fewer went one
+ * by one (1.1e5 targets beside 9232 runs).  The runs grow with the
+ * distance (by 1 + 1/FAR_RHO each), so a pass makes O(log) of them: a
+ * chunk's targets summed one by one had been four fifths of the far sums
+ * on a thin plate (h = 0.02 r0, 100 kg at 10 m/s). */
+void impact_far_chunk(const struct ctx *c, struct frozen *f, size_t u0, size_t k0, size_t C,
 		      double *out)
 {
-	double step = (double)((size_t)1 << c->lev) * c->dt0;
+	double step = (double)((size_t)1 << c->lev) * c->dt0, tw = (double)(c->nR - 1) * c->dt0;
 	for (size_t k = k0; k < C;) {
-		double t0 = (double)(u0 + (k << c->lev)) * c->dt0;
-		double m = floor((t0 - f->tb) / (FAR_RHO * step));
-		size_t e = m >= (double)(C - 1 - k) ? C - 1 : k + (size_t)fmax(m, 0.0);
-		/* the test as far_run's contract states it, in the targets' own times */
-		while (e > k && FAR_RHO * ((double)(u0 + (e << c->lev)) * c->dt0 - t0) > t0 - f->tb)
-			e--;
-		if (e - k < 2 * FAR_P) {
-			for (; k <= e; k++)
+		double t = (double)(u0 + (k << c->lev)) * c->dt0;
+		if (f->rt1 > f->rt0 && t >= f->rt0 && t <= f->rt1) {
+			out[k++] += far_run_at(f, t);
+			continue;
+		}
+		double te = fmin(t + (t - f->tb) / FAR_RHO, tw);
+		double nt = floor((te - t) / step) + 1.0; /* its targets at this step */
+		if (nt <= FAR_P) {
+			for (size_t e = k + (size_t)fmax(nt, 1.0); k < e && k < C; k++)
 				out[k] += impact_far_sum(c, f, (double)(u0 + (k << c->lev)) * c->dt0);
 			continue;
 		}
-		far_run(c, f, u0, k, e, out);
-		k = e + 1;
+		far_run(c, f, t, te);
+	}
+}
+
+/* The Chebyshev points of the first kind on [-1, 1] and their
+ * barycentric weights (the same cosines and sines for every charge: taken
+ * once a freeze, where each charge took them again, FAR_P sincos a
+ * charge: 1 % of h = 0.02 r0's slowest scenes). */
+struct far_nodes {
+	double x[FAR_P], lam[FAR_P];
+};
+
+static void far_nodes_make(struct far_nodes *nd)
+{
+	for (int j = 0; j < FAR_P; j++) {
+		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P);
+		nd->x[j] = cos(th);
+		nd->lam[j] = (j % 2 ? -1.0 : 1.0) * sin(th);
 	}
 }
 
 /* Add the charge (cx, cz) at time t to f's Chebyshev weights over [a, b]
- * (barycentric Lagrange basis at the points of the first kind). */
-static void far_add(struct frozen *f, double a, double b, double t, double cx, double cz)
+ * (barycentric Lagrange basis at the points of the first kind, nd). */
+static void far_add(struct frozen *f, const struct far_nodes *nd, double a, double b, double t,
+		    double cx, double cz)
 {
 	double x = b > a ? (2.0 * t - a - b) / (b - a) : 0.0, l[FAR_P], sum = 0;
 	for (int j = 0; j < FAR_P; j++) {
-		double th = (2.0 * j + 1.0) * M_PI / (2.0 * FAR_P), d = x - cos(th);
-		double lam = (j % 2 ? -1.0 : 1.0) * sin(th);
+		double d = x - nd->x[j];
 		if (d == 0.0) { /* on a node: that node's alone */
 			f->Wx[j] += cx, f->Wz[j] += cz;
 			return;
 		}
-		l[j] = lam / d;
+		l[j] = nd->lam[j] / d;
 		sum += l[j];
 	}
 	for (int j = 0; j < FAR_P; j++) {
@@ -174,15 +210,18 @@ void impact_far_charges(const struct ctx *c, struct frozen *f, const double *tn,
 			double dn)
 {
 	double a = tn[1], b = tn[f->S] + (dn - dp) / 3.0; /* centroids: first, last hat */
+	struct far_nodes nd;
+	far_nodes_make(&nd);
 	if (f->S < 2)
 		a = b;
 	for (int j = 0; j < FAR_P; j++) {
-		f->tc[j] = 0.5 * (a + b) + 0.5 * (b - a) * cos((2.0 * j + 1.0) * M_PI / (2.0 * FAR_P));
+		f->tc[j] = 0.5 * (a + b) + 0.5 * (b - a) * nd.x[j];
 		f->Wx[j] = f->Wz[j] = 0.0;
 	}
 	for (size_t m = 1; m < f->S; m++)
-		far_add(f, a, b, tn[m], f->x[m] * dp, f->z ? f->z[m] * dp : 0.0);
-	far_add(f, a, b, b, f->Pb * 0.5 * (dp + dn), f->z ? f->Qb * 0.5 * (dp + dn) : 0.0);
+		far_add(f, &nd, a, b, tn[m], f->x[m] * dp, f->z ? f->z[m] * dp : 0.0);
+	far_add(f, &nd, a, b, b, f->Pb * 0.5 * (dp + dn), f->z ? f->Qb * 0.5 * (dp + dn) : 0.0);
 	f->tb = b;
-	f->t_far = b + fmax(fmax(FAR_RHO * (b - a + 2.0 * dn), FAR_MIN * dn), 2.0 * c->t_smooth);
+	double wmin = c->lng ? FAR_MIN : FAR_MIN_FIT;
+	f->t_far = b + fmax(fmax(FAR_RHO * (b - a + 2.0 * dn), wmin * dn), 2.0 * c->t_smooth);
 }

@@ -111,9 +111,9 @@ static int level_weights(struct ctx *c, int L, size_t capn)
 	return impact_g_need(c, 2);
 }
 
-/* At the freeze of f (long mode): its charges and where the far field
- * starts (impact_far.c), and its weights out to there (the near targets'
- * exact sums). */
+/* At the freeze of f (t_smooth > 0): its charges and where the far field
+ * starts (impact_far.c), and (long mode) its weights out to there (the
+ * near targets' exact sums; a window that fits has them already). */
 static int far_setup(struct ctx *c, struct frozen *f, const double *tn, double dp, double dn)
 {
 	impact_far_charges(c, f, tn, dp, dn);
@@ -157,7 +157,7 @@ int impact_grow_switch(struct ctx *c, struct pass *s, int L)
 					   .Qb = c->dg ? s->Q[ns] : 0.0, .n0 = c->seg0,
 					   .t_far = INFINITY };
 	c->g = c->dg = NULL;
-	if (c->lng) {
+	if (c->t_smooth > 0) { /* the far field (long mode, or where the caller asks) */
 		int st = far_setup(c, &c->fz[c->nfz - 1], s->t + c->seg0, dp, dn);
 		if (st)
 			return st;
@@ -194,11 +194,15 @@ void impact_grow_reset(struct ctx *c)
 	for (size_t j = 0; j < c->nfz; j++) {
 		free(c->fz[j].g);
 		free(c->fz[j].dg);
+		free(c->fz[j].xf);
 	}
 	c->nfz = 0;
 	free(c->hbuf);
 	c->hbuf = NULL;
 	c->hlo = c->hn = c->hcap = 0;
+	free(c->hwk);
+	c->hwk = NULL;
+	c->hwcap = 0;
 }
 
 void impact_grow_free(struct ctx *c)
@@ -263,18 +267,42 @@ static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, si
 		return ANVIL_ENOMEM;
 	/* d[n] = sum_{m'} a[m'] b[n + S - 2 - m'], a[m'] = x_{m'+1}, b[v] =
 	 * g[o0 - S + 1 + v]: a cyclic convolution of size N >= V is exact at
-	 * the indices S - 2 .. V - 1 wanted */
+	 * the indices S - 2 .. V - 1 wanted.  The a's transforms (the frozen
+	 * hats, fixed) are kept for the next chunk of the same size, which
+	 * then transforms only its span of weights: 3 transforms where there
+	 * were 5 (the same bits: the same transform of the same values). */
 	int nb = f->z ? 4 : 2;
-	double *a = calloc((size_t)nb * N, sizeof *a);
-	if (!a)
-		return ANVIL_ENOMEM;
+	size_t need = (size_t)nb * N;
+	if (need > c->hwcap) {
+		free(c->hwk);
+		if (!(c->hwk = malloc(need * sizeof *c->hwk))) {
+			c->hwcap = 0;
+			return ANVIL_ENOMEM;
+		}
+		c->hwcap = need;
+	}
+	double *a = c->hwk;
+	if (f->xlg != lg || !f->xf) {
+		double *xf = realloc(f->xf, (size_t)(nb / 2) * N * sizeof *xf);
+		if (!xf)
+			return ANVIL_ENOMEM;
+		f->xf = xf;
+		f->xlg = lg;
+		for (int r = 0; r < nb / 2; r++) {
+			const double *x = r ? f->z : f->x;
+			double *u = xf + (size_t)r * N;
+			for (size_t m = 0; m + 1 < S; m++)
+				u[m] = x[m + 1];
+			memset(u + (S - 1), 0, (N - (S - 1)) * sizeof *u);
+			gsl_fft_real_transform(u, 1, N, c->rw[lg], c->ws[lg]);
+		}
+	}
 	for (int r = 0; r < nb / 2; r++) {
-		const double *x = r ? f->z : f->x, *g = (r ? f->dg : f->g) + (o0 - S + 1);
+		const double *g = (r ? f->dg : f->g) + (o0 - S + 1);
 		double *u = a + (size_t)(2 * r) * N, *w = u + N;
-		for (size_t m = 0; m + 1 < S; m++)
-			u[m] = x[m + 1];
+		memcpy(u, f->xf + (size_t)r * N, N * sizeof *u);
 		memcpy(w, g, V * sizeof *w);
-		gsl_fft_real_transform(u, 1, N, c->rw[lg], c->ws[lg]);
+		memset(w + V, 0, (N - V) * sizeof *w);
 		gsl_fft_real_transform(w, 1, N, c->rw[lg], c->ws[lg]);
 		/* the product in GSL's mixed-radix half-complex packing: u[0],
 		 * u[N-1] real; (u[2j-1], u[2j]) = (re, im) of frequency j */
@@ -292,7 +320,6 @@ static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, si
 	gsl_fft_halfcomplex_inverse(a, 1, N, c->hw[lg], c->ws[lg]);
 	for (size_t k = 0; k < C; k++)
 		out[k] += a[q * k + S - 2];
-	free(a);
 	return ANVIL_OK;
 }
 

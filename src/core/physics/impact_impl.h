@@ -95,6 +95,13 @@ struct frozen {
 	size_t n0;
 	double t_far, tb; /* tb: its last charge's time */
 	double tc[FAR_P], Wx[FAR_P], Wz[FAR_P];
+	/* its far field's last run (impact_far.c): its interpolant's Chebyshev
+	 * coefficients over [rt0, rt1] (none while rt1 <= rt0) */
+	double rt0, rt1, ra[FAR_P];
+	/* its hats' FFT (x's, then z's) at the size 2^xlg of the last chunk
+	 * (frozen_chunk): the same for every chunk of that size */
+	double *xf;
+	int xlg;
 };
 
 struct ctx {
@@ -163,6 +170,10 @@ struct ctx {
 	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
 	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
 	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
+	/* frozen_chunk's arrays, kept for the next chunk (a fresh calloc of
+	 * that size is fresh pages: a fault each 4 kB) */
+	double *hwk;
+	size_t hwcap;
 };
 
 /* The ramp responses off the grid that the far past needs at every
@@ -327,7 +338,7 @@ void impact_far_charges(const struct ctx *c, struct frozen *f, const double *tn,
 double impact_far_sum(const struct ctx *c, const struct frozen *f, double t);
 /* f's far field at the targets (u0 + k 2^lev) dt0, k0 <= k < C, added to
  * out[k] (interpolated over the targets where they are far enough). */
-void impact_far_chunk(const struct ctx *c, const struct frozen *f, size_t u0, size_t k0, size_t C,
+void impact_far_chunk(const struct ctx *c, struct frozen *f, size_t u0, size_t k0, size_t C,
 		      double *out);
 /* Long mode: 1 when the march at node s->n - 1 stopped short of the
  * window's end (its nodes ran out, not the window). */

@@ -23,8 +23,10 @@
  * a compare-and-swap, so a block never moves under a reader (the rows were
  * realloc'd arrays when each impact had its own).  Only finding or adding
  * a table takes the share's lock, once per impact and ramp. */
+#include <limits.h>
 #include <math.h>
 #include <pthread.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -145,16 +147,30 @@ static void put(_Atomic double *R, _Atomic uint64_t *have, size_t i, double v)
  * rest_cloc). */
 #define ROW_MAX ((size_t)RTAB_ROW_BLKS << RTAB_BLK_LG)
 
+/* The count of U's trailing zero bits (U > 0): one instruction where
+ * the compiler has it (the loop, bit by bit, was a fifth of the tables'
+ * own time on h = 0.02 r0, 1 kg at 0.1 m/s: a grown level's lags are
+ * multiples of 2^L). */
+static int trailing_zeros(size_t U)
+{
+#if defined(__GNUC__) && SIZE_MAX == ULLONG_MAX
+	return __builtin_ctzll(U);
+#else
+	int z = 0;
+	while (!(U >> z & 1))
+		z++;
+	return z;
+#endif
+}
+
 /* Table t's entry at U in its rows (U = (2 i + 1) 2^z kept in row z at
  * i), its block made when missing; NULL for U = 0, past ROW_MAX, or out
  * of memory (the value then not kept). */
 static struct rtab_blk *row_at(struct rtab *t, size_t U, size_t *k)
 {
-	int z = 0;
 	if (!t || !U)
 		return NULL;
-	while (!(U >> z & 1))
-		z++;
+	int z = trailing_zeros(U);
 	size_t i = U >> (z + 1);
 	if (i >= ROW_MAX)
 		return NULL;

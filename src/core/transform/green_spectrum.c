@@ -60,6 +60,10 @@ struct quad {
 	struct zcache zc[ZC_SLOTS];
 	struct green_tail tail; /* W beyond kband at this s (green_tail.h) */
 	int tail_on;            /* taken from it */
+	/* its values at a tail piece's nodes, in the rule's call order
+	 * (tail_piece_w), when tw_on; tw_at the next node's */
+	cplx tw[ANVIL_GK21_NODES];
+	int tw_on, tw_at;
 };
 
 /* The layer correction's kernel W(k, s) does not depend on the load's
@@ -179,7 +183,7 @@ static cplx correction(struct quad *q, double x, cplx k)
 	if (q->seg && q->seg_hit)
 		return q->seg[KM_VALS * q->seg_at++];
 	if (q->tail_on && x > q->kband)
-		return green_tail_w(&q->tail, x);
+		return q->tw_on ? q->tw[q->tw_at++] : green_tail_w(&q->tail, x);
 	q->evals++;
 	if (x < q->klift && x >= q->klo)
 		anvil_layer_bc_solve_c(k, q->s, q->kap2, q->hh, &bc);
@@ -244,6 +248,20 @@ static void zhat_piece(struct quad *q, double a, double b)
 				   : 3.0 * (sn - y * cs) / (2.0 * M_PI * y * y * y);
 	}
 	q->zh_at = 0;
+}
+
+/* The tail's kernel at the 21 nodes of the piece [a, b] beyond the band,
+ * in the order the rule asks for them (as zhat_piece): the interpolant's
+ * recurrences side by side (green_tail_w_n), the same values. */
+static void tail_piece_w(struct quad *q, double a, double b)
+{
+	double x[ANVIL_GK21_NODES];
+	for (int n = 0; n < ANVIL_GK21_NODES; n++) {
+		double wk, wg;
+		anvil_gk21_node(a, b, anvil_gk21_called(n), &x[n], &wk, &wg);
+	}
+	green_tail_w_n(&q->tail, x, ANVIL_GK21_NODES, q->tw);
+	q->tw_at = 0;
 }
 
 static cplx integrand(double x, void *vq)
@@ -344,6 +362,9 @@ static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *s
 	q->zh_on = q->mode != ANVIL_GREEN_HALFSPACE && q->patch > 0 && a >= q->kband;
 	if (q->zh_on)
 		zhat_piece(q, a, b);
+	q->tw_on = q->mode != ANVIL_GREEN_HALFSPACE && q->tail_on && a >= q->kband;
+	if (q->tw_on)
+		tail_piece_w(q, a, b);
 	anvil_gk21_complex_floor(integrand, q, a, b, &x.val, &x.err, &x.floor);
 	*sum += x.val;
 	*err += x.err;

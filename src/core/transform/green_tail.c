@@ -130,10 +130,10 @@ double green_tail_bound(struct green_tail *t, double kend, double (*env)(void *,
 	return e;
 }
 
-/* Clenshaw's recurrence for the sum of c_j T_j(x) */
-cplx green_tail_w(const struct green_tail *t, double k)
+/* panel of k: a[lo] <= k < a[lo + 1], or an end */
+static int panel_of(const struct green_tail *t, double k)
 {
-	int lo = 0, hi = t->np - 1; /* the panel: a[lo] <= k < a[lo + 1], or an end */
+	int lo = 0, hi = t->np - 1;
 	while (lo < hi) {
 		int m = (lo + hi + 1) / 2;
 		if (t->a[m] <= k)
@@ -141,6 +141,13 @@ cplx green_tail_w(const struct green_tail *t, double k)
 		else
 			hi = m - 1;
 	}
+	return lo;
+}
+
+/* Clenshaw's recurrence for the sum of c_j T_j(x) */
+cplx green_tail_w(const struct green_tail *t, double k)
+{
+	int lo = panel_of(t, k);
 	const struct green_tail_panel *p = &t->p[lo];
 	double a = t->a[lo], w = t->a[lo + 1] - a;
 	double x = 2.0 * (k - a) / w - 1.0, q = 1.0 + k * t->hh;
@@ -151,4 +158,42 @@ cplx green_tail_w(const struct green_tail *t, double k)
 		b1 = b;
 	}
 	return (x * b1 - b2 + p->c[0]) * (q * q * exp(-2.0 * t->hh * k) / k);
+}
+
+/* green_tail_w at TAIL_LANES points at once: each its own recurrence in
+ * the same operations (the same bits), side by side in registers, where
+ * one alone waits on each step's multiply and add (the recurrence is a
+ * chain); lanes past n repeat the last point (made, not kept) */
+#define TAIL_LANES 3
+static void tail_w_lanes(const struct green_tail *t, const double *k, int n, cplx *out)
+{
+	const struct green_tail_panel *p[TAIL_LANES];
+	double x[TAIL_LANES], q[TAIL_LANES], kk[TAIL_LANES];
+	for (int i = 0; i < TAIL_LANES; i++) {
+		kk[i] = k[i < n ? i : n - 1];
+		int lo = panel_of(t, kk[i]);
+		double a = t->a[lo], w = t->a[lo + 1] - a;
+		p[i] = &t->p[lo];
+		x[i] = 2.0 * (kk[i] - a) / w - 1.0;
+		q[i] = 1.0 + kk[i] * t->hh;
+	}
+	cplx b1a = 0, b2a = 0, b1b = 0, b2b = 0, b1c = 0, b2c = 0;
+	for (int j = N; j >= 1; j--) {
+		cplx ba = 2.0 * x[0] * b1a - b2a + p[0]->c[j];
+		cplx bb = 2.0 * x[1] * b1b - b2b + p[1]->c[j];
+		cplx bc = 2.0 * x[2] * b1c - b2c + p[2]->c[j];
+		b2a = b1a, b1a = ba;
+		b2b = b1b, b1b = bb;
+		b2c = b1c, b1c = bc;
+	}
+	cplx s[TAIL_LANES] = { x[0] * b1a - b2a + p[0]->c[0], x[1] * b1b - b2b + p[1]->c[0],
+			       x[2] * b1c - b2c + p[2]->c[0] };
+	for (int i = 0; i < n; i++)
+		out[i] = s[i] * (q[i] * q[i] * exp(-2.0 * t->hh * kk[i]) / kk[i]);
+}
+
+void green_tail_w_n(const struct green_tail *t, const double *k, int n, cplx *out)
+{
+	for (int i = 0; i < n; i += TAIL_LANES)
+		tail_w_lanes(t, k + i, n - i < TAIL_LANES ? n - i : TAIL_LANES, out + i);
 }
