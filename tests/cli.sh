@@ -161,6 +161,16 @@ for m in layer zener; do
 		END { exit !(ts > 100 * T && p > 0.999 * P && p <= P + E + 1e-6 * P && t > 0.9 * T && t < 1.1 * T) }' "$tmp/out" "$tmp/hl.tsv"
 done
 
+# A flat-topped force's history resolves its rise (impact.c pass_peak_time):
+# 10 kg at 10 m/s on h = 0.02 r0 rises to 0.9 of P_max in about 1 us, then
+# creeps to its peak at ~270 us of a 150 s contact; the samples were spaced
+# for the peak, and the first one came after the rise.
+check 'run --history of a flat-topped force' "$ANVIL" run -m layer -s 'layer.thickness=0.02 r0' \
+	-s 'impactor.mass=10 kg' -s 'impact.velocity=10 m/s' -f tsv --history "$tmp/hf.tsv"
+assert '  at least 8 samples before the force first reaches 0.9 of its peak, that within 2 us' awk -F '\t' '
+	$1 == "layer" { n++; t[n] = $2; p[n] = $3; if ($3 > m) m = $3 }
+	END { for (i = 1; i <= n && p[i] < 0.9 * m; i++) ; exit !(i > 9 && i <= n && t[i] < 2) }' "$tmp/hf.tsv"
+
 # ---- what is at an output path ----
 # A regular file keeps its mode; a symbolic link stays one and its target
 # gets the output; a FIFO and a device are written through, not replaced;
