@@ -683,7 +683,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 	}
 	solver_rest_note(r);
 	solver_contacts_note(r);
-	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : solver_check_target(r, pl->pb.accuracy, err);
+	return pl->pb.scheme == ANVIL_SCHEME_PAPER ? ANVIL_OK : solver_graze(r, pl->pb.accuracy, solver_check_target(r, pl->pb.accuracy, err), err);
 }
 
 static int run_row(struct anvil_solver *s, const struct anvil_plan *pl, enum anvil_model m,

@@ -68,6 +68,10 @@ int solver_response_impulse(void *ctx, double tau, double *val);
  * the estimate says why in err), ANVIL_ENUM (unphysical). */
 int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
 			struct anvil_err *err);
+/* A flat end's part of t_s's estimate (result.h ts_graze) added to r,
+ * the target checked again when st is ANVIL_OK or ANVIL_WTOL; else st
+ * (solver_graze.c). */
+int solver_graze(struct anvil_result *r, enum anvil_accuracy acc, int st, struct anvil_err *err);
 /* The relative estimates of P_max, t_s and R_f as solver_check_target
  * weighs them against the target, e[3]. */
 void solver_target_errs(const struct anvil_result *r, double e[3]);

@@ -748,5 +748,5 @@ int solver_run_physical(struct anvil_solver *s, const struct anvil_plan *pl,
 		snprintf(r->note + len, sizeof r->note - len,
 			 "; the band %dx the plan's (the band's error)", 1 << refined);
 	}
-	return st;
+	return solver_graze(r, pb->accuracy, st, err);
 }

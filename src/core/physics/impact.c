@@ -770,6 +770,8 @@ int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *rct
 		fill(r, p, &a, &b, o->scheme);
 		if (a.rest || b.rest)
 			impact_rest_fill(r, p, &a, &b);
+		else if (o->scheme != ANVIL_SCHEME_PAPER)
+			r->ts_graze = impact_graze_ts(&a, &b);
 		if (o->nhist > 1)
 			st = resample(o->scheme == ANVIL_SCHEME_PAPER ? &a : &b, p, o->nhist, &r->hist);
 	}

@@ -224,6 +224,10 @@ int impact_rest_grazing(const struct ctx *c, const struct pass *s, double ioff);
 /* The result of two passes either of which came to rest (after fill):
  * R_f and E_a as the intervals the bound allows, t_s the rest's time,
  * r->rest_bound. */
+/* The part of t_s's estimate the end's flatness adds (impact_end.c): how
+ * long before the finer pass's end the approach stays within its error
+ * of 0, beyond the passes' difference of t_s (s). */
+double impact_graze_ts(const struct pass *a, const struct pass *b);
 void impact_rest_fill(struct anvil_result *r, const struct anvil_params *p, const struct pass *a,
 		      const struct pass *b);
 /* The growing step (impact_grow.c). */

@@ -54,6 +54,11 @@ struct anvil_result {
 	 * known to lie in [0, rest_bound] (R_f = rest_bound/2 +- rest_bound/2);
 	 * 0 otherwise. */
 	double rest_bound;
+	/* The part of ts.err a flat end adds (impact_end.c, impact_graze_ts:
+	 * how long the approach stays within its error of 0 before t_s), s;
+	 * the solver adds it to ts.err once its refinements are decided
+	 * (solver_graze), as no finer band lowers it.  0: none. */
+	double ts_graze;
 	/* How far the layer's motion reaches during the contact (a finite
 	 * layer's layer and zener rows; NaN otherwise), m: the P wave's front
 	 * c1 t_s, and the bending's spread 2 sqrt(beta t_s) (anvil_result_reach).
