@@ -25,6 +25,10 @@ void anvil_gk21_node(double a, double b, int j, double *x, double *wk, double *w
  * (green_spectrum.c). */
 int anvil_gk21_called(int n);
 
+/* The 21 abscissae of [a, b] in that order, x[n] = anvil_gk21_node's x
+ * for j = anvil_gk21_called(n) (the same bits, without a call a node). */
+void anvil_gk21_called_nodes(double a, double b, double *x);
+
 typedef double complex (*anvil_gk21_fn)(double x, void *ctx);
 
 /* The rule on [a, b] for a complex integrand, each node evaluated once:

@@ -239,11 +239,12 @@ static void zhat_piece(struct quad *q, double a, double b)
 	double p = q->patch, c = 0.5 * (a + b), h = 0.5 * (b - a), sc = sin(p * c),
 	       cc = cos(p * c);
 	const struct zcache *z = zc_get(q, p * h);
+	double xs[ANVIL_GK21_NODES];
+	anvil_gk21_called_nodes(a, b, xs);
 	for (int n = 0; n < ANVIL_GK21_NODES; n++) {
-		double x, wk, wg, sn, cs;
-		anvil_gk21_node(a, b, anvil_gk21_called(n), &x, &wk, &wg);
+		double sn, cs;
 		angle_sum(z, n, sc, cc, &sn, &cs);
-		double y = p * x;
+		double y = p * xs[n];
 		q->zh[n] = y < 0.1 ? anvil_kernel_zhat(y)
 				   : 3.0 * (sn - y * cs) / (2.0 * M_PI * y * y * y);
 	}
@@ -256,10 +257,7 @@ static void zhat_piece(struct quad *q, double a, double b)
 static void tail_piece_w(struct quad *q, double a, double b)
 {
 	double x[ANVIL_GK21_NODES];
-	for (int n = 0; n < ANVIL_GK21_NODES; n++) {
-		double wk, wg;
-		anvil_gk21_node(a, b, anvil_gk21_called(n), &x[n], &wk, &wg);
-	}
+	anvil_gk21_called_nodes(a, b, x);
 	green_tail_w_n(&q->tail, x, ANVIL_GK21_NODES, q->tw);
 	q->tw_at = 0;
 }
@@ -436,7 +434,8 @@ static double tail_fit(struct quad *q, struct green_cut *cut, double kband, doub
 	if (q->mode != ANVIL_GREEN_LAYER_CORRECTION || q->far_cut || !(kmax - kband > GREEN_TAIL_MIN_SPAN))
 		return 0.0;
 	green_tail_key(&q->tail, q->s, q->kap2, q->hh, kband, kmax);
-	double e = TAIL_SAFETY * green_tail_bound(&q->tail, kend, cut_env, cut, &q->evals);
+	double e = TAIL_SAFETY * green_tail_bound(&q->tail, kend, cut_env, cut,
+						  TAIL_SHARE * eps / TAIL_SAFETY, &q->evals);
 	q->tail_on = e <= TAIL_SHARE * eps;
 	return q->tail_on ? e : 0.0;
 }

@@ -15,6 +15,8 @@
  * all) takes W_c from it: on a thin plate 17 kernel evaluations a panel
  * (5-8 panels) for the whole tail of a set's loads at one s, where its
  * 16-wide pieces took 21 each (28 pieces to k = 575 at h = 0.02 r0).
+ * Far panels, whose share of the error env makes small, take degree 8
+ * from every other point (9 evaluations; 8 more if a load needs 16).
  * The interpolant depends on (s, kb, kend, hh, kappa^2) only, each panel
  * fitted when first asked for: a load's bits do not depend on which
  * others were computed with it. */
@@ -25,21 +27,31 @@
 #include <stddef.h>
 
 #define GREEN_TAIL_DEG 16
+/* the lower degree, whose points are every other of GREEN_TAIL_DEG's
+ * (green_tail.c: a panel where it suffices takes 9 evaluations, not 17) */
+#define GREEN_TAIL_DEG0 8
 #define GREEN_TAIL_PANELS 32
 /* the interpolant serves a tail longer than this (k_integral): 4 pieces
  * of 21 evaluations, 84 against at most 3 panels' 51 */
 #define GREEN_TAIL_MIN_SPAN 64.0
 
 struct green_tail_panel {
-	int n;        /* 0: not fitted yet; -1: could not be (not finite) */
-	double delta; /* the estimate of sup |B - interpolant| on the panel */
-	double complex c[GREEN_TAIL_DEG + 1]; /* B's Chebyshev coefficients */
+	int n;        /* 0: not fitted yet; -1: could not be (not finite);
+		       * GREEN_TAIL_DEG0: that degree only; GREEN_TAIL_DEG: both */
+	int deg;      /* the degree the current load takes (green_tail_bound) */
+	double delta; /* the estimate of sup |B - interpolant| on the panel at deg */
+	double d0, d1; /* the same at GREEN_TAIL_DEG0 and GREEN_TAIL_DEG */
+	/* B's Chebyshev coefficients at the two degrees (c0's zero beyond
+	 * GREEN_TAIL_DEG0) and its values at the Chebyshev points */
+	double complex c0[GREEN_TAIL_DEG + 1], c[GREEN_TAIL_DEG + 1], f[GREEN_TAIL_DEG + 1];
 };
 
 struct green_tail {
 	double complex s;
 	double kap2, hh, kb, kend; /* the key, with s */
 	int np;                    /* panels (0: none yet) */
+	int cs_on;                 /* cs holds cos(pi m/GREEN_TAIL_DEG), m < 2 deg */
+	double cs[2 * GREEN_TAIL_DEG];
 	double a[GREEN_TAIL_PANELS + 1]; /* panel i is [a[i], a[i + 1]] */
 	struct green_tail_panel p[GREEN_TAIL_PANELS];
 };
@@ -54,9 +66,13 @@ void green_tail_key(struct green_tail *t, double complex s, double kap2, double 
  * [kb, kend] touches of delta times env(panel's start) (env(K) bounding
  * the integral of |W_c k zhat|/|B| over [K, inf), green_cut.h), fitting
  * them (*evals counts the kernel evaluations); INFINITY when one could not
- * be fitted.  env is the caller's (a load's patch). */
+ * be fitted.  env is the caller's (a load's patch).  Each panel at
+ * GREEN_TAIL_DEG0 where the sum stays within allow, else (from the first
+ * panel on, while the sum exceeds allow) at GREEN_TAIL_DEG where that
+ * estimate is the smaller: the degrees the caller's green_tail_w then
+ * takes (they depend on allow and env, not on earlier callers). */
 double green_tail_bound(struct green_tail *t, double kend, double (*env)(void *, double),
-			void *ctx, size_t *evals);
+			void *ctx, double allow, size_t *evals);
 
 /* The panels green_tail_key makes for [kb, kend] (the planner's price,
  * plan_work.c). */
