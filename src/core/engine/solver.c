@@ -407,7 +407,48 @@ struct waves {
 	struct response rs;
 	struct anvil_impact_opts io;
 	struct held held;
+	int causal; /* 1: causal_probe may leave the correction out */
 };
+
+/* One impact over window tau_end (attempt) with the response as wv holds it. */
+static int waves_march(struct waves *wv, int attempt, double tau_end, double omega,
+		       struct anvil_result *r, struct anvil_err *err)
+{
+	const struct anvil_params *p = &wv->pb->p;
+	enum anvil_model m = r->model;
+	anvil_result_free(r);
+	anvil_result_init(r, m);
+	/* the last window, or the last the rule lets run: at rest at its
+	 * end rather than refused (impact.h, rest_last) */
+	wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
+			   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
+					     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
+	wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
+	int st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
+	wv->tau_end = tau_end;
+	return st;
+}
+
+/* Whether the window tau_end is the first with the bottom reflection in
+ * it, the last one's contact having outlasted its window: then the
+ * contact may yet end before the reflection returns, where the layer is
+ * the half-space (causality, as run_anvil's fallback), and its layer
+ * correction, made for nothing, is most of the row's time: h = 1000 r0,
+ * 100 kg at 100 m/s ended at 1331 us, the reflection back at 1356 us,
+ * and the correction over the second window took 2.6 s (1.3e7
+ * evaluations) of the row's 2.6.  So that window runs first without it
+ * (an impact of a few thousand steps, ms); the correction is made only
+ * when the contact reaches the reflection.  Not the paper's scheme (its
+ * Tables), nor a long window (the far field's t_smooth asks for the
+ * correction's impulse response). */
+static int causal_probe(const struct waves *wv, int attempt, double tau_end)
+{
+	const struct anvil_params *p = &wv->pb->p;
+	return wv->causal && attempt > 0 && wv->pb->scheme != ANVIL_SCHEME_PAPER &&
+	       anvil_wave_needs_corr(p, wv->job, tau_end) &&
+	       !anvil_wave_needs_corr(p, wv->job, anvil_wave_window(wv->job, attempt - 1)) &&
+	       !(anvil_wave_t_smooth(p, wv->job, tau_end) > 0);
+}
 
 /* One coupled run with the window grown until the contact fits in it, the
  * layer correction (when the reflection falls in the window) at bandwidth
@@ -427,6 +468,12 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		st = anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job, tau_end, omega, err);
 		if (st)
 			return st;
+		if (causal_probe(wv, attempt, tau_end)) {
+			st = waves_march(wv, attempt, tau_end, omega, r, err);
+			if (!st && r->ts.val < 2.0 * p->h / p->c1)
+				return st;
+			anvil_err_clear(err);
+		}
 		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
 			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
 						       anvil_wave_tau_idx(wv->job, tau_end), twin,
@@ -437,17 +484,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 			if ((st = solver_start_set(&wv->rs, omega, p)))
 				return anvil_err_set(err, st, "layer correction: its start: %s", anvil_strerror(st));
 		}
-		enum anvil_model m = r->model;
-		anvil_result_free(r);
-		anvil_result_init(r, m);
-		/* the last window, or the last the rule lets run: at rest at its
-		 * end rather than refused (impact.h, rest_last) */
-		wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
-				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
-						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
-		wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
-		st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
-		wv->tau_end = tau_end;
+		st = waves_march(wv, attempt, tau_end, omega, r, err);
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
 			break;
 	}
@@ -525,7 +562,7 @@ static int twin_failed(int st, const struct anvil_result *coarse)
  * rise, plan.c, PHYS_RISE), once, kept when its estimate is the smaller.
  * Not the paper's scheme, nor a scene's own step.  Also when the march's
  * part alone misses the target there: no band makes that up, and
- * run_waves stops its rounds there (stop_coarse) rather than double the
+ * run_waves stops its rounds there (WAVES_STOP_COARSE) rather than double the
  * band at a step that is thrown away (h = 0.2 r0, 100 kg at 10 m/s: the
  * march's part 2.3e-2 at the plan's step, 4e-6 at the finer one; its
  * second round at the plan's step, two impacts of 0.4-0.5 s, was). */
@@ -570,15 +607,18 @@ struct waves_out {
 
 /* The coupled run of job j (the anvil's response: static, half-space, or
  * half-space plus layer correction), with the layer correction's error
- * estimate when it is used.  stop_coarse: the rounds end as soon as the
- * step is seen too coarse (step_rerun: the caller reruns at a finer
- * step, and a wider band here is thrown away with it). */
+ * estimate when it is used.  flags: WAVES_STOP_COARSE, the rounds end as
+ * soon as the step is seen too coarse (step_rerun: the caller reruns at a
+ * finer step, and a wider band here is thrown away with it);
+ * WAVES_CAUSAL, causal_probe. */
+#define WAVES_STOP_COARSE 1
+#define WAVES_CAUSAL 2
 static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		     const struct anvil_wave_job *j, int method, size_t nhist,
-		     struct anvil_result *r, struct waves_out *o, int stop_coarse,
+		     struct anvil_result *r, struct waves_out *o, int flags,
 		     struct anvil_err *err)
 {
-	struct waves wv = { .pb = pb, .job = j };
+	struct waves wv = { .pb = pb, .job = j, .causal = flags & WAVES_CAUSAL };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
 					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
 	solver_merge_opts(&wv.io, pb, j); /* the paper's contact as the physical (the paper's scheme: none) */
@@ -644,7 +684,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 			continue;
 		}
 		if (st || refine >= j->refine_max || solver_check_target(r, pb->accuracy, NULL) == ANVIL_OK ||
-		    !band_dominates(r, before, tgt) || (stop_coarse && step_rerun(pb, j, r, o->march)))
+		    !band_dominates(r, before, tgt) || ((flags & WAVES_STOP_COARSE) && step_rerun(pb, j, r, o->march)))
 			break;
 		/* a refinement the rule would refuse is not tried: the result
 		 * stands, and run_anvil says it missed the target */
@@ -744,7 +784,8 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		return solver_run_physical(s, pl, planned, nhist, r, err);
 	double step = 1;
 	struct waves_out o = { 0 };
-	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o, 1, err);
+	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o,
+			   WAVES_STOP_COARSE | (row.fallback ? 0 : WAVES_CAUSAL), err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
 	if (!st && row.fallback && !(r->ts.val < 2.0 * p->h / p->c1)) {
@@ -754,7 +795,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		row.model_err = 0;
 		row.job = row.fallback_job;
 		o = (struct waves_out){ 0 };
-		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o, 1, err);
+		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o, WAVES_STOP_COARSE, err);
 	}
 	if (st)
 		return st;
@@ -765,7 +806,7 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		fine.job.dt = STEP_RISE * r->tmax.val / row.job.nsteps;
 		struct waves_out o2 = { .round = rerun_round(&pl->pb, &fine.job, r->model, &o) };
 		anvil_result_init(r, prev.model);
-		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &o2, 0, err);
+		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &o2, WAVES_CAUSAL, err);
 		if (s2 || !(r->Pmax.err < prev.Pmax.err)) {
 			anvil_result_free(r);
 			*r = prev;
