@@ -592,6 +592,10 @@ static void row_job(const struct est *e, const struct anvil_cache *cache, enum a
 	r->fallback = r->why == ANVIL_WHY_LATE_REFLECT;
 	if (r->fallback)
 		r->fallback_job = e->lay;
+	if (r->job.refine_max == ANVIL_MAX_REFINE) /* not the paper's scheme (none) */
+		r->job.refine_max = ANVIL_PAPER_MAX_REFINE;
+	if (r->fallback && r->fallback_job.refine_max == ANVIL_MAX_REFINE)
+		r->fallback_job.refine_max = ANVIL_PAPER_MAX_REFINE;
 	r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job, anvil_wave_window(&r->job, 0),
 				      r->job.omega, &err);
 	if (!r->status && r->method == ANVIL_METHOD_LAYER)

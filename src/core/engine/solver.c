@@ -170,6 +170,30 @@ int solver_response_impulse(void *ctx, double tau, double *val)
 	return anvil_green_impulse(rs->corr, tau, val); /* a static part's is 0 for tau > 0 */
 }
 
+/* y of history h (times rising) at t, linear between its samples; *k:
+ * the sample before the last t asked for (SIZE_MAX: none), then this
+ * one's (the times asked for rise: a walk on from there). */
+static double hist_at(const struct anvil_history *h, const double *y, double t, size_t *k)
+{
+	size_t j = *k;
+	if (j == SIZE_MAX) { /* the first: bisection */
+		size_t lo = 0, hi = h->n - 1;
+		while (hi - lo > 1) {
+			size_t mid = lo + (hi - lo) / 2;
+			if (h->t[mid] <= t)
+				lo = mid;
+			else
+				hi = mid;
+		}
+		j = lo;
+	}
+	while (j + 2 < h->n && h->t[j + 1] <= t)
+		j++;
+	*k = j;
+	double f = fmin(1.0, fmax(0.0, (t - h->t[j]) / (h->t[j + 1] - h->t[j])));
+	return (1 - f) * y[j] + f * y[j + 1];
+}
+
 /* The errors of the layer correction's band, from its twin (run_waves).
  *
  * Each output's is its change |x - coarse| when the bandwidth is halved
@@ -198,7 +222,8 @@ int solver_response_impulse(void *ctx, double tau, double *val)
  * oscillation about the end value, which |t_s - coarse t_s| (= da(t_s) /
  * |alpha'|) already counts: the two added bound |da(t)| / |alpha'| over
  * the period.  Near t_max the same alignment moves P by |P'| dt_s, P'
- * small there.  Index by index, no interpolation error is added.
+ * small there.  Index by index, no interpolation error is added (but
+ * where the samples' spacing differs: hist_window_diff).
  * band: omega in 1/s. */
 static double hist_window_diff(const struct anvil_result *a, const struct anvil_result *b, int alpha,
 			       double lo, double hi)
@@ -208,9 +233,24 @@ static double hist_window_diff(const struct anvil_result *a, const struct anvil_
 	if (n < 2 || b->hist.n != n)
 		return 0;
 	const double *x = alpha ? a->hist.alpha : a->hist.P, *y = alpha ? b->hist.alpha : b->hist.P;
-	for (size_t i = 0; i < n; i++)
-		if (a->hist.t[i] >= lo && a->hist.t[i] <= hi)
-			d = fmax(d, fabs(x[i] - y[i]));
+	/* b at a's sample's place in its own contact (aligned at the end):
+	 * sample i itself, but where a long contact's spacing follows each
+	 * history's own peak (result.h, anvil_history_warp) and the two
+	 * peaked at different nodes, there sample i is elsewhere in each:
+	 * at h = 0.5 r0, 100 kg at 100 m/s (t_s 2.36 s, t_max 7.6 us) up to
+	 * 1.3 ms apart, and their difference near the peak counted P's own
+	 * rise over that shift, 7 times the band's (P_max's part 1.3e-3
+	 * against 1.8e-4 at a step 1.2 % finer, where the peaks shared a
+	 * node) */
+	double scale = b->hist.t[n - 1] / a->hist.t[n - 1], tol = 1e-12 * b->hist.t[n - 1];
+	size_t k = SIZE_MAX;
+	for (size_t i = 0; i < n; i++) {
+		if (!(a->hist.t[i] >= lo && a->hist.t[i] <= hi))
+			continue;
+		double tb = a->hist.t[i] * scale;
+		double yb = fabs(tb - b->hist.t[i]) <= tol ? y[i] : hist_at(&b->hist, y, tb, &k);
+		d = fmax(d, fabs(x[i] - yb));
+	}
 	return d;
 }
 
@@ -367,7 +407,48 @@ struct waves {
 	struct response rs;
 	struct anvil_impact_opts io;
 	struct held held;
+	int causal; /* 1: causal_probe may leave the correction out */
 };
+
+/* One impact over window tau_end (attempt) with the response as wv holds it. */
+static int waves_march(struct waves *wv, int attempt, double tau_end, double omega,
+		       struct anvil_result *r, struct anvil_err *err)
+{
+	const struct anvil_params *p = &wv->pb->p;
+	enum anvil_model m = r->model;
+	anvil_result_free(r);
+	anvil_result_init(r, m);
+	/* the last window, or the last the rule lets run: at rest at its
+	 * end rather than refused (impact.h, rest_last) */
+	wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
+			   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
+					     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
+	wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
+	int st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
+	wv->tau_end = tau_end;
+	return st;
+}
+
+/* Whether the window tau_end is the first with the bottom reflection in
+ * it, the last one's contact having outlasted its window: then the
+ * contact may yet end before the reflection returns, where the layer is
+ * the half-space (causality, as run_anvil's fallback), and its layer
+ * correction, made for nothing, is most of the row's time: h = 1000 r0,
+ * 100 kg at 100 m/s ended at 1331 us, the reflection back at 1356 us,
+ * and the correction over the second window took 2.6 s (1.3e7
+ * evaluations) of the row's 2.6.  So that window runs first without it
+ * (an impact of a few thousand steps, ms); the correction is made only
+ * when the contact reaches the reflection.  Not the paper's scheme (its
+ * Tables), nor a long window (the far field's t_smooth asks for the
+ * correction's impulse response). */
+static int causal_probe(const struct waves *wv, int attempt, double tau_end)
+{
+	const struct anvil_params *p = &wv->pb->p;
+	return wv->causal && attempt > 0 && wv->pb->scheme != ANVIL_SCHEME_PAPER &&
+	       anvil_wave_needs_corr(p, wv->job, tau_end) &&
+	       !anvil_wave_needs_corr(p, wv->job, anvil_wave_window(wv->job, attempt - 1)) &&
+	       !(anvil_wave_t_smooth(p, wv->job, tau_end) > 0);
+}
 
 /* One coupled run with the window grown until the contact fits in it, the
  * layer correction (when the reflection falls in the window) at bandwidth
@@ -387,6 +468,12 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 		st = anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job, tau_end, omega, err);
 		if (st)
 			return st;
+		if (causal_probe(wv, attempt, tau_end)) {
+			st = waves_march(wv, attempt, tau_end, omega, r, err);
+			if (!st && r->ts.val < 2.0 * p->h / p->c1)
+				return st;
+			anvil_err_clear(err);
+		}
 		if (anvil_wave_needs_corr(p, wv->job, tau_end)) {
 			struct anvil_cache_key key = { wv->job->hh, p->nu, wv->pb->accuracy, omega_idx,
 						       anvil_wave_tau_idx(wv->job, tau_end), twin,
@@ -397,17 +484,7 @@ static int waves_impact(struct anvil_solver *s, struct waves *wv, double omega, 
 			if ((st = solver_start_set(&wv->rs, omega, p)))
 				return anvil_err_set(err, st, "layer correction: its start: %s", anvil_strerror(st));
 		}
-		enum anvil_model m = r->model;
-		anvil_result_free(r);
-		anvil_result_init(r, m);
-		/* the last window, or the last the rule lets run: at rest at its
-		 * end rather than refused (impact.h, rest_last) */
-		wv->io.rest_last = attempt + 1 >= wv->job->attempts ||
-				   anvil_wave_refuse(p, wv->pb->dt, r->model, wv->job,
-						     anvil_wave_window(wv->job, attempt + 1), omega, NULL);
-		wv->io.t_smooth = anvil_wave_t_smooth(p, wv->job, tau_end);
-		st = anvil_impact_run(p, solver_response_ramp, &wv->rs, tau_end, &wv->io, r, err);
-		wv->tau_end = tau_end;
+		st = waves_march(wv, attempt, tau_end, omega, r, err);
 		if (st == ANVIL_ETOL && !isnan(r->ts.val))
 			break;
 	}
@@ -471,17 +548,77 @@ static int twin_failed(int st, const struct anvil_result *coarse)
 	return st == ANVIL_ENUM || (st == ANVIL_ETOL && isinf(coarse->ts.val));
 }
 
+/* The step of the plan is the pulse's (its nsteps over the Hertz or
+ * Zener contact); the paper's contact on a thin plate peaks far sooner,
+ * at 0.22-0.6 of Zener's t_max where it missed normal's target on the
+ * grid (copper on steel, h = 0.05-2 r0, 1 g-100 kg): 1.2-21 steps to the
+ * peak, P_max's estimate 1.7e-3 to 8.9e-2, nearly all of it the march's.
+ * Zener's t_max does not tell those from the rows that peak later than
+ * his (h = 0.02 r0 under 0.1-1 g: 1-2.8 times), where a step from it
+ * would cost twice for nothing; the run itself does: when P_max misses
+ * the target, mostly by the march (march: its part, relative), and its
+ * peak came in fewer than nsteps / STEP_RISE steps, the row runs again
+ * at the step that gives the peak that many (as the physical contact's
+ * rise, plan.c, PHYS_RISE), once, kept when its estimate is the smaller.
+ * Not the paper's scheme, nor a scene's own step.  Also when the march's
+ * part alone misses the target there: no band makes that up, and
+ * run_waves stops its rounds there (WAVES_STOP_COARSE) rather than double the
+ * band at a step that is thrown away (h = 0.2 r0, 100 kg at 10 m/s: the
+ * march's part 2.3e-2 at the plan's step, 4e-6 at the finer one; its
+ * second round at the plan's step, two impacts of 0.4-0.5 s, was). */
+#define STEP_RISE 16.0
+static int step_rerun(const struct anvil_problem *pb, const struct anvil_wave_job *j,
+		      const struct anvil_result *r, double march)
+{
+	double e = r->Pmax.err / r->Pmax.val, tgt = anvil_accuracy_target(pb->accuracy);
+	return pb->scheme != ANVIL_SCHEME_PAPER && !(pb->dt > 0) && r->tmax.val > 0 &&
+	       r->tmax.val < j->nsteps / STEP_RISE * j->dt &&
+	       (march > tgt || (e > tgt && march > 0.5 * e));
+}
+
+/* Whether the twin of this round (half the band, rest_at: the main's rest
+ * time or 0) would run as the previous round's main did: that main was
+ * at the same band (the twin's), with the same window rule, the same
+ * step and rest_at 0; so the twin is it when rest_at is 0 (no rest to
+ * align to; the previous main came to rest by itself or not, as the twin
+ * would) or when the previous main came to rest at the same node as this
+ * one (rest_at then stops the twin where it came to rest by itself).
+ * The twin's response is the first half of this round's spectrum, the
+ * previous main's its own spectrum: the same terms, their k-integrals
+ * to the previous band's tolerance, not this one's.  On the grid's rows
+ * (copper on steel, h = 0.05-0.5 r0) the two runs' P_max agreed to 1e-11
+ * - 5e-10 of it, t_max to 1e-9, R_f to 4e-7 of its value (at rest, 2e-11
+ * absolute against the target's 1e-4): far inside the estimates they
+ * make, at the cost of one impact (0.3-1 s on those rows). */
+static int twin_is_prev(const struct anvil_result *prev, double rest_at)
+{
+	return rest_at == 0.0 || (prev->rest_bound > 0 && prev->ts.val == rest_at);
+}
+
+/* What run_waves reports besides the result. */
+struct waves_out {
+	int used_corr; /* 1: the layer correction was used */
+	double band;   /* its band, 1/s (0: none) */
+	double march;  /* the march's own part of P_max's estimate (relative), without the band's */
+	double band_part; /* the band's part of it, relative (0: not measured) */
+	double tau_end; /* the window the result came from (r0/c2 units) */
+	int round;     /* in: the band's round to start from (0: the plan's band); out: the result's */
+};
+
 /* The coupled run of job j (the anvil's response: static, half-space, or
  * half-space plus layer correction), with the layer correction's error
- * estimate when it is used.  *march: the march's own part of P_max's
- * estimate (relative), without the band's.  *round: the band's round to
- * start from (0: the plan's band), then the one the result is of. */
+ * estimate when it is used.  flags: WAVES_STOP_COARSE, the rounds end as
+ * soon as the step is seen too coarse (step_rerun: the caller reruns at a
+ * finer step, and a wider band here is thrown away with it);
+ * WAVES_CAUSAL, causal_probe. */
+#define WAVES_STOP_COARSE 1
+#define WAVES_CAUSAL 2
 static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		     const struct anvil_wave_job *j, int method, size_t nhist,
-		     struct anvil_result *r, int *used_corr, double *band, double *march,
-		     int *round, struct anvil_err *err)
+		     struct anvil_result *r, struct waves_out *o, int flags,
+		     struct anvil_err *err)
 {
-	struct waves wv = { .pb = pb, .job = j };
+	struct waves wv = { .pb = pb, .job = j, .causal = flags & WAVES_CAUSAL };
 	wv.io = (struct anvil_impact_opts){ .scheme = pb->scheme, .dt = pb->dt, .dt_auto = j->dt,
 					    .max_steps = ANVIL_MAX_STEPS, .nhist = nhist };
 	solver_merge_opts(&wv.io, pb, j); /* the paper's contact as the physical (the paper's scheme: none) */
@@ -497,26 +634,47 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	 * refine_max times): convergence in it is fast, the estimate
 	 * conservative. */
 	size_t n_err = method == ANVIL_METHOD_LAYER ? err_nhist(pb, j, nhist) : nhist;
-	for (int refine = *round; refine <= j->refine_max; refine++) {
-		*round = refine;
+	double tgt = anvil_accuracy_target(pb->accuracy);
+	struct anvil_result prev; /* the previous round's main (twin_is_prev) */
+	double prev_tau = 0;
+	int first = o->round;
+	anvil_result_init(&prev, r->model);
+	o->band_part = 0;
+	for (int refine = first; refine <= j->refine_max; refine++) {
+		o->round = refine;
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
 		wv.io.nhist = n_err;
 		wv.io.rest_at = 0;
+		if (refine > first) { /* r: the previous round's main, kept for this one's twin */
+			anvil_result_free(&prev);
+			prev = *r;
+			prev_tau = wv.tau_end;
+			anvil_result_init(r, prev.model);
+		}
 		st = waves_impact(s, &wv, omega, idx, 0, r, err);
-		*used_corr = wv.rs.corr != NULL;
-		*band = *used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
+		o->used_corr = wv.rs.corr != NULL;
+		o->band = o->used_corr ? anvil_cache_grid(idx) * pb->p.c2 / pb->p.r0 : 0.0;
 		double before[3];
 		solver_target_errs(r, before);
-		*march = before[0];
+		o->march = before[0];
+		o->band_part = 0;
 		if (st || !wv.rs.corr)
 			break;
 		struct anvil_result coarse;
 		anvil_result_init(&coarse, r->model);
 		wv.io.rest_at = r->rest_bound > 0 ? r->ts.val : 0.0; /* the twin at the rest's time */
-		st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
-		if (!st)
-			add_green_error(r, &coarse, *band);
+		const struct anvil_result *tw = &coarse;
+		if (refine > first && twin_is_prev(&prev, wv.io.rest_at)) {
+			tw = &prev;
+			wv.tau_end = prev_tau;
+		} else {
+			st = waves_impact(s, &wv, 0.5 * omega, idx - ANVIL_CACHE_STEPS, 1, &coarse, err);
+		}
+		if (!st) {
+			add_green_error(r, tw, o->band);
+			o->band_part = r->Pmax.err / r->Pmax.val - o->march;
+		}
 		int twin_lost = twin_failed(st, &coarse);
 		anvil_result_free(&coarse);
 		if (twin_lost && refine < j->refine_max &&
@@ -526,13 +684,15 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 			continue;
 		}
 		if (st || refine >= j->refine_max || solver_check_target(r, pb->accuracy, NULL) == ANVIL_OK ||
-		    !band_dominates(r, before, anvil_accuracy_target(pb->accuracy)))
+		    !band_dominates(r, before, tgt) || ((flags & WAVES_STOP_COARSE) && step_rerun(pb, j, r, o->march)))
 			break;
 		/* a refinement the rule would refuse is not tried: the result
 		 * stands, and run_anvil says it missed the target */
 		if (anvil_wave_refuse(&pb->p, pb->dt, r->model, j, wv.tau_end, 2.0 * omega, NULL))
 			break;
 	}
+	o->tau_end = wv.tau_end;
+	anvil_result_free(&prev);
 	solver_held_release(s->cache, &wv.held);
 	if (n_err != nhist && history_decimate(r, nhist) && !st)
 		st = anvil_err_set(err, ANVIL_ENOMEM, "history: %s", anvil_strerror(ANVIL_ENOMEM));
@@ -592,27 +752,24 @@ void solver_contacts_note(struct anvil_result *r)
 }
 
 
-/* The step of the plan is the pulse's (its nsteps over the Hertz or
- * Zener contact); the paper's contact on a thin plate peaks far sooner,
- * at 0.22-0.6 of Zener's t_max where it missed normal's target on the
- * grid (copper on steel, h = 0.05-2 r0, 1 g-100 kg): 1.2-21 steps to the
- * peak, P_max's estimate 1.7e-3 to 8.9e-2, nearly all of it the march's.
- * Zener's t_max does not tell those from the rows that peak later than
- * his (h = 0.02 r0 under 0.1-1 g: 1-2.8 times), where a step from it
- * would cost twice for nothing; the run itself does: when P_max misses
- * the target, mostly by the march (march: its part, relative), and its
- * peak came in fewer than nsteps / STEP_RISE steps, the row runs again
- * at the step that gives the peak that many (as the physical contact's
- * rise, plan.c, PHYS_RISE), once, kept when its estimate is the smaller.
- * Not the paper's scheme, nor a scene's own step. */
-#define STEP_RISE 16.0
-static int step_too_coarse(const struct anvil_problem *pb, const struct anvil_wave_job *j,
-			   const struct anvil_result *r, double march)
+/* The band's round the rerun at the finer step starts from: the one the
+ * first run reached, or the next where the band's part of P_max's
+ * estimate there was over the target by itself.  A finer step resolves
+ * the band's content at least as well as the coarse one: the band's part
+ * there was no smaller on the grid (h = 0.05-0.5 r0, 10 mm/s-100 m/s,
+ * 1-100 kg: at the coarse step 1.6e-2, 2.1e-2, 1.2e-3, 4.8e-3 against
+ * 1.9e-2, 3.0e-2, 2.0e-3, 1.9e-2 at the fine one), so the rerun would
+ * take that round only to double its band, two impacts thrown away.  Not
+ * a round the rule refuses (at the coarse run's window). */
+static int rerun_round(const struct anvil_problem *pb, const struct anvil_wave_job *fine,
+		       enum anvil_model m, const struct waves_out *o)
 {
-	double e = r->Pmax.err / r->Pmax.val;
-	return pb->scheme != ANVIL_SCHEME_PAPER && !(pb->dt > 0) && r->tmax.val > 0 &&
-	       e > anvil_accuracy_target(pb->accuracy) && march > 0.5 * e &&
-	       r->tmax.val < j->nsteps / STEP_RISE * j->dt;
+	double omega = fine->omega * (double)(1 << o->round);
+	if (o->used_corr && o->band_part > anvil_accuracy_target(pb->accuracy) &&
+	    o->round < fine->refine_max &&
+	    !anvil_wave_refuse(&pb->p, pb->dt, m, fine, o->tau_end, 2.0 * omega, NULL))
+		return o->round + 1;
+	return o->round;
 }
 
 /* A wave row (STATIC, HALFSPACE or LAYER) as the plan says, with its
@@ -623,13 +780,12 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 {
 	const struct anvil_params *p = &pl->pb.p;
 	struct anvil_plan_row row = *planned;
-	int corr = 0;
 	if (row.contact == ANVIL_CONTACT_PHYSICAL)
 		return solver_run_physical(s, pl, planned, nhist, r, err);
-	double band = 0, march = 0, step = 1;
-	int round = 0;
-	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, &round,
-			   err);
+	double step = 1;
+	struct waves_out o = { 0 };
+	int st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o,
+			   WAVES_STOP_COARSE | (row.fallback ? 0 : WAVES_CAUSAL), err);
 	/* Causality made the half-space exact only if the contact really ended
 	 * before the reflection came back: else the layer after all. */
 	if (!st && row.fallback && !(r->ts.val < 2.0 * p->h / p->c1)) {
@@ -638,21 +794,19 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 		row.exact = 1;
 		row.model_err = 0;
 		row.job = row.fallback_job;
-		round = 0;
-		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &corr, &band, &march, &round,
-			       err);
+		o = (struct waves_out){ 0 };
+		st = run_waves(s, &pl->pb, &row.job, row.method, nhist, r, &o, WAVES_STOP_COARSE, err);
 	}
 	if (st)
 		return st;
-	if (step_too_coarse(&pl->pb, &row.job, r, march)) {
+	if (step_rerun(&pl->pb, &row.job, r, o.march)) {
 		struct anvil_plan_row fine = row;
 		struct anvil_result prev = *r; /* it owns the history now */
 		struct anvil_err pe = err ? *err : (struct anvil_err){ 0 };
-		int c2 = 0, r2 = round; /* from the band the first run reached */
-		double b2 = 0, m2 = 0;
 		fine.job.dt = STEP_RISE * r->tmax.val / row.job.nsteps;
+		struct waves_out o2 = { .round = rerun_round(&pl->pb, &fine.job, r->model, &o) };
 		anvil_result_init(r, prev.model);
-		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &c2, &b2, &m2, &r2, err);
+		int s2 = run_waves(s, &pl->pb, &fine.job, fine.method, nhist, r, &o2, WAVES_CAUSAL, err);
 		if (s2 || !(r->Pmax.err < prev.Pmax.err)) {
 			anvil_result_free(r);
 			*r = prev;
@@ -662,19 +816,18 @@ static int run_anvil(struct anvil_solver *s, const struct anvil_plan *pl,
 			anvil_result_free(&prev);
 			step = fine.job.dt / row.job.dt;
 			row = fine;
-			corr = c2;
-			band = b2;
+			o = o2;
 		}
 	}
 	if (!row.exact && row.why != ANVIL_WHY_FORCED)
 		solver_add_model_error(r, p, row.model_err);
-	solver_tmax_from_pmax(r, band);
+	solver_tmax_from_pmax(r, o.band);
 	if (r->model == ANVIL_MODEL_HALFSPACE || !isfinite(p->h)) {
 		/* Zener's plate parameter has no meaning for a half-space */
 		r->lambda_star = 0.0;
 		r->Rf_star = 1.0;
 	}
-	waves_note(r, p, &row, row.method, corr);
+	waves_note(r, p, &row, row.method, o.used_corr);
 	if (step < 1) {
 		size_t len = strlen(r->note);
 		snprintf(r->note + len, sizeof r->note - len,

@@ -30,7 +30,7 @@ struct anvil_solver {
 /* The responses a run holds (cache.h: never evicted until given back):
  * the half-space and, per window tried (ANVIL_MAX_ATTEMPTS) and bandwidth
  * (refine_max + 1), a response and its twin. */
-#define HELD_MAX (1 + 2 * ANVIL_MAX_ATTEMPTS * (ANVIL_MAX_REFINE + 1))
+#define HELD_MAX (1 + 2 * ANVIL_MAX_ATTEMPTS * (ANVIL_PAPER_MAX_REFINE + 1))
 
 struct held {
 	const void *p[HELD_MAX];
