@@ -718,10 +718,19 @@ static void waves_note(struct anvil_result *r, const struct anvil_params *p,
 		snprintf(r->note, sizeof r->note,
 			 "half-space response (effects.waves = halfspace): reflections return at 2h/c1 = %.3g us, during the contact: not the layer",
 			 t_refl);
-	else if (!corr)
+	else if (!corr) {
+		/* digits enough to tell the two apart: h = 1000 r0, 100 kg at
+		 * 100 m/s ends at 1330.7 us, the reflection back at 1334.7 */
+		int d = 3;
+		char a[32], b[32];
+		do {
+			snprintf(a, sizeof a, "%.*g", d, t_refl);
+			snprintf(b, sizeof b, "%.*g", d, r->ts.val * 1e6);
+		} while (!strcmp(a, b) && ++d < 8);
 		snprintf(r->note, sizeof r->note,
-			 "bottom reflection returns at 2h/c1 = %.3g us, after the contact (%.3g us): half-space response is exact here",
-			 t_refl, r->ts.val * 1e6);
+			 "bottom reflection returns at 2h/c1 = %s us, after the contact (%s us): half-space response is exact here",
+			 a, b);
+	}
 }
 
 /* The rest state (impact.h, rest_tol) in the note: when, and the bound. */
