@@ -582,14 +582,6 @@ static void physical_model_error(const struct anvil_params *p, struct phys_rem r
 	r->Ea.err += d * 0.5 * p->m1 * p->V0 * p->V0;
 }
 
-/* The physical row: Hertz's approach plus the layer's remainder, the
- * correction with the true contact radius a(t) (impact.h: point load plus
- * the a^2 term from the Hertz patch of the largest radius a_max).  Its
- * error estimates add to the time stepping's: physical_errors', and what
- * the remainder's two terms leave (physical_model_error).
- * Where the patch size still matters: thin layers, where a_max is not
- * small against h and the correction is large: there the a^4 remainder
- * is what the error estimate shows (doc/contact-model.md). */
 /* The band's part (the point load at the band against half of it) of
  * the estimates solver_target_errs weighs, band[3]. */
 static void band_part(const struct phys_set *set, const struct anvil_result *r, double band[3])
@@ -600,6 +592,14 @@ static void band_part(const struct phys_set *set, const struct anvil_result *r, 
 	band[2] = fabs(a->Rf.val - b->Rf.val) / fmax(fabs(r->Rf.val), 0.1);
 }
 
+/* The physical row: Hertz's approach plus the layer's remainder, the
+ * correction with the true contact radius a(t) (impact.h: point load plus
+ * the a^2 term from the Hertz patch of the largest radius a_max).  Its
+ * error estimates add to the time stepping's: physical_errors', and what
+ * the remainder's two terms leave (physical_model_error).
+ * Where the patch size still matters: thin layers, where a_max is not
+ * small against h and the correction is large: there the a^4 remainder
+ * is what the error estimate shows (doc/contact-model.md). */
 static int physical_band(struct anvil_solver *s, const struct anvil_plan *pl,
 			 const struct anvil_plan_row *row, int omega_idx, size_t nhist,
 			 struct anvil_result *r, int *corr_out, double band_out[3],
