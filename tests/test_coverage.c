@@ -15,7 +15,7 @@
  * (h/r0 0.7-2.5, reflections returning many times during the contact:
  * t_max moved by more than its own estimate, 1 miss in 13 before the
  * solver's shift from P_max's error, solver.c tmax_from_pmax; P_max in 5
- * of 27 before the band error's amplitude, solver.c add_green_error).
+ * of 27 before the band error's amplitude, solver_twin.c solver_add_green_error).
  * NLONG scenes, those the plan prices above LONG_COST_MAX at reference
  * left out; the outputs in LONG_HELD held to 95 %. */
 #include <math.h>
@@ -36,7 +36,7 @@
 /* Held in the long sample: every output.  P_max (81 % before, worst
  * ratio 2.3) and t_s (96 %, 1.5) were only shown until their band error
  * was the amplitude of the twin's difference near the peak and the end,
- * not its value at one instant (solver.c, add_green_error): the thickness
+ * not its value at one instant (solver_twin.c, solver_add_green_error): the thickness
  * resonances make that difference oscillate, and its sample at t_max fell
  * near a zero in 5 of 27 scenes. */
 #define LONG_HELD 0x1fu

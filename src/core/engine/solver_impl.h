@@ -72,6 +72,9 @@ int solver_check_target(const struct anvil_result *r, enum anvil_accuracy acc,
  * the target checked again when st is ANVIL_OK or ANVIL_WTOL; else st
  * (solver_graze.c). */
 int solver_graze(struct anvil_result *r, enum anvil_accuracy acc, int st, struct anvil_err *err);
+/* Add to r's estimates the layer correction's band error: r against c,
+ * its twin at half the band (band: r's, 1/s) (solver_twin.c). */
+void solver_add_green_error(struct anvil_result *r, const struct anvil_result *c, double band);
 /* The relative estimates of P_max, t_s and R_f as solver_check_target
  * weighs them against the target, e[3]. */
 void solver_target_errs(const struct anvil_result *r, double e[3]);
