@@ -22,19 +22,18 @@
 /* ---- the wave solver's job ---- */
 
 /* Contact time estimate (s): Zener's plate model for a layer, Hertz for a
- * half-space.  When Zener's ODE cannot finish (lambda* >> 1, the impactor
- * then slows like exp(-t/(m1 alpha*)) = exp(-t/(lambda* T))), a few of
- * those decay times. */
-static double contact_estimate(const struct anvil_params *p, int layer, double t_hertz,
-			       double *t_rise)
+ * half-space (zs: Zener's solution for the row, NULL when his ODE failed).
+ * When Zener's ODE cannot finish (lambda* >> 1, the impactor then slows
+ * like exp(-t/(m1 alpha*)) = exp(-t/(lambda* T))), a few of those decay
+ * times. */
+static double contact_estimate(const struct anvil_params *p, const struct anvil_zener_sol *zs,
+			       double lam, double t_hertz, double *t_rise)
 {
-	struct anvil_zener_sol zs;
-	double lam = layer ? p->lambda_star : 0.0;
 	*t_rise = 0;
-	if (anvil_zener_solve(lam, 1e-8, &zs, NULL) == ANVIL_OK && isfinite(zs.tau_s)) {
-		if (zs.tau_max > 0 && isfinite(zs.tau_max))
-			*t_rise = zs.tau_max * p->T;
-		return fmax(zs.tau_s * p->T, t_hertz);
+	if (zs && isfinite(zs->tau_s)) {
+		if (zs->tau_max > 0 && isfinite(zs->tau_max))
+			*t_rise = zs->tau_max * p->T;
+		return fmax(zs->tau_s * p->T, t_hertz);
 	}
 	return fmax(3.0 * lam * p->T, t_hertz);
 }
@@ -53,11 +52,19 @@ static double omega_floor(const struct anvil_level *lev, double hh)
 	return lev->omega_min * (isfinite(hh) ? fmax(0.125, fmin(1.0, 4.0 / hh)) : 1.0);
 }
 
+/* Zener's solutions the estimates share (each solved once a plan: they
+ * were 5 ODE solves, a third of a warm run's planning): at the scene's
+ * lambda* and at 0 (Hertz), NULL where the ODE failed. */
+struct zener_pair {
+	struct anvil_zener_sol lam, hertz;
+	const struct anvil_zener_sol *at_lam, *at_0;
+};
+
 /* The job of a wave run: layer (1: the layer correction, when h is
  * finite) or not, for a contact of ts seconds (0: the usual Hertz/Zener
- * estimate). */
-static void wave_job(const struct anvil_problem *pb, int layer, double ts,
-		     struct anvil_wave_job *j)
+ * estimate from z). */
+static void wave_job(const struct anvil_problem *pb, const struct zener_pair *z, int layer,
+		     double ts, struct anvil_wave_job *j)
 {
 	const struct anvil_params *p = &pb->p;
 	const struct anvil_level *lev = anvil_level(pb->accuracy);
@@ -67,7 +74,8 @@ static void wave_job(const struct anvil_problem *pb, int layer, double ts,
 	int lay = layer && isfinite(p->h);
 	double t_rise = 0;
 	if (!(ts > 0))
-		ts = contact_estimate(p, lay, t_hertz, &t_rise);
+		ts = contact_estimate(p, lay ? z->at_lam : z->at_0, lay ? p->lambda_star : 0.0,
+				      t_hertz, &t_rise);
 	double tchar = fmin(ts, t_hertz); /* sets the bandwidth and the step */
 	*j = (struct anvil_wave_job){ 0 };
 	j->hh = lay ? pb->hh : INFINITY;
@@ -215,6 +223,7 @@ struct est {
 	struct anvil_params p;
 	const struct anvil_problem *pb;
 	struct anvil_wave_job lay, hs, st; /* the jobs of a layer, half-space, static run */
+	struct zener_pair z;
 	double t_static, p_static;
 	double radiated, bending, target;
 	double window_lay;             /* first window of the layer row, s */
@@ -337,14 +346,20 @@ static int estimate(const struct anvil_problem *pb, struct est *e, struct anvil_
 	const struct anvil_params *p = &e->p;
 	e->p = pb->p;
 	e->pb = pb;
-	wave_job(pb, 1, 0, &e->lay);
-	wave_job(pb, 0, 0, &e->hs);
+	e->z.at_0 = anvil_plan_zener_hertz();
+	/* (a half-space has no plate: no estimate reads it) */
+	e->z.at_lam = !isfinite(p->h) ||
+			      anvil_zener_solve(p->lambda_star, ANVIL_PLAN_ZENER_TOL, &e->z.lam, NULL)
+			      ? NULL
+			      : &e->z.lam;
+	wave_job(pb, &e->z, 1, 0, &e->lay);
+	wave_job(pb, &e->z, 0, 0, &e->hs);
 	if (anvil_plan_static(p, &e->t_static, &e->p_static))
 		return anvil_err_set(err, ANVIL_ENUM, "plan: the quasi-static estimate failed");
-	wave_job(pb, 0, e->t_static, &e->st);
+	wave_job(pb, &e->z, 0, e->t_static, &e->st);
 	e->st.stat = anvil_halfspace_static(p->nu);
 	e->radiated = anvil_plan_radiated(p);
-	e->bending = anvil_plan_bending(p);
+	e->bending = anvil_plan_bending_of(p, e->z.at_lam, e->z.at_0);
 	e->target = anvil_accuracy_target(pb->accuracy);
 	double tau_end = anvil_wave_window(&e->lay, 0);
 	e->window_lay = tau_end * p->r0 / p->c2;
@@ -565,14 +580,14 @@ static void paper_price(const struct est *e, const struct anvil_cache *cache, en
 	struct anvil_paper_work w;
 	if (r->method != ANVIL_METHOD_HALFSPACE && r->method != ANVIL_METHOD_LAYER)
 		return;
-	anvil_plan_paper_work(e->pb, r, cache, &w);
+	anvil_plan_paper_work_ts(e->pb, r, cache, e->t_static, &w);
 	r->cost = r->status ? 0.0 : w.seconds; /* refused: nothing runs */
 	if (m != ANVIL_MODEL_LAYER || r->method == ANVIL_METHOD_LAYER || !isfinite(e->p.h)) {
 		r->cost_full = w.seconds;
 		return;
 	}
 	struct anvil_plan_row full = { .method = ANVIL_METHOD_LAYER, .job = e->lay };
-	anvil_plan_paper_work(e->pb, &full, cache, &w);
+	anvil_plan_paper_work_ts(e->pb, &full, cache, e->t_static, &w);
 	r->cost_full = w.seconds;
 }
 
@@ -620,14 +635,14 @@ static void row_job(const struct est *e, const struct anvil_cache *cache, enum a
  * solver checks the computed force as well (solver_phys.c, thin_check).  When
  * Zener's ODE does not finish, the solver alone decides. */
 #define THIN_DASHPOT_LAMBDA 1e4
-static int thin_refuse(const struct anvil_params *p, enum anvil_model m, struct anvil_err *err)
+static int thin_refuse(const struct anvil_params *p, const struct anvil_zener_sol *zs,
+		       enum anvil_model m, struct anvil_err *err)
 {
-	struct anvil_zener_sol zs;
 	double a;
 	if (!isfinite(p->h))
 		return ANVIL_OK;
-	if (!anvil_zener_solve(p->lambda_star, 1e-8, &zs, NULL) && isfinite(zs.alpha_max)) {
-		a = sqrt(p->r0 * zs.alpha_max * p->T * p->V0);
+	if (zs && isfinite(zs->alpha_max)) {
+		a = sqrt(p->r0 * zs->alpha_max * p->T * p->V0);
 	} else if (p->lambda_star >= THIN_DASHPOT_LAMBDA && p->alpha_star > 0) {
 		/* Zener's ODE gave up (h = 1 nm: lambda* = 1e13; the layer's
 		 * response then ran 14-29 s into "numerical failure"): the plate
@@ -705,7 +720,7 @@ static void physical_row(const struct est *e, const struct anvil_cache *cache, e
 	if (layer)
 		row_fig(r, ANVIL_FIG_T_REFLECT);
 	/* a contact wider than the layer first: then no cost matters */
-	r->status = layer ? thin_refuse(&e->p, m, &err) : ANVIL_OK;
+	r->status = layer ? thin_refuse(&e->p, e->z.at_lam, m, &err) : ANVIL_OK;
 	if (!r->status)
 		r->status = anvil_wave_refuse(&e->p, e->pb->dt, m, &r->job,
 					      anvil_wave_window(&r->job, 0), r->job.omega, &err);

@@ -409,6 +409,11 @@ struct anvil_paper_work {
 };
 void anvil_plan_paper_work(const struct anvil_problem *pb, const struct anvil_plan_row *r,
 			   const struct anvil_cache *cache, struct anvil_paper_work *w);
+/* The same with the quasi-static anvil's contact time ts_static (s,
+ * anvil_plan_static) given: the planner has it already. */
+void anvil_plan_paper_work_ts(const struct anvil_problem *pb, const struct anvil_plan_row *r,
+			      const struct anvil_cache *cache, double ts_static,
+			      struct anvil_paper_work *w);
 /* The paper's contact refused before any work where it chatters on a thin
  * plate over a long-mode window (plan_paper.c: measured on the grid);
  * ANVIL_OK otherwise. */
@@ -426,5 +431,14 @@ int anvil_plan_static(const struct anvil_params *p, double *ts, double *pmax);
  * reflection makes (plan_est.c); 0 on a half-space, inf when Zener's
  * model cannot tell. */
 double anvil_plan_bending(const struct anvil_params *p);
+/* The same from Zener's solutions at lambda* (zs) and at 0 (hz), NULL
+ * where his ODE failed: the planner solves each once (plan.c). */
+struct anvil_zener_sol;
+double anvil_plan_bending_of(const struct anvil_params *p, const struct anvil_zener_sol *zs,
+			     const struct anvil_zener_sol *hz);
+/* Zener's solution at lambda* = 0 (Hertz's impact, Hertz's units: the
+ * same for every scene) at ANVIL_PLAN_ZENER_TOL, NULL if it failed. */
+#define ANVIL_PLAN_ZENER_TOL 1e-8
+const struct anvil_zener_sol *anvil_plan_zener_hertz(void);
 
 #endif

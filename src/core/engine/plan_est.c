@@ -48,9 +48,22 @@ static double hertz_pulse_integral(void)
 	return 1.8 * am * am * gsl_sf_beta(0.8, 1.5);
 }
 
+/* xi(nu) is a quadrature (transform/radiation.c) and every plan asks it
+ * for its layer's nu: the last one a thread asked for is kept (the same
+ * bits: the same function of the same nu). */
+static double radiation_xi(double nu)
+{
+	static _Thread_local double last_nu = NAN, last_xi = NAN;
+	if (!(nu == last_nu)) {
+		last_xi = anvil_radiation_xi(nu);
+		last_nu = nu;
+	}
+	return last_xi;
+}
+
 double anvil_plan_radiated(const struct anvil_params *p)
 {
-	double xi = anvil_radiation_xi(p->nu);
+	double xi = radiation_xi(p->nu);
 	return 2.0 * xi * hertz_pulse_integral() * p->m1 /
 	       (p->rho * pow(p->c2, 3) * pow(p->T, 3));
 }
@@ -128,16 +141,35 @@ int anvil_plan_static(const struct anvil_params *p, double *ts, double *pmax)
  *     it bounds the change of t_s where Zener's is too small. */
 double anvil_plan_bending(const struct anvil_params *p)
 {
-	struct anvil_zener_sol zs, hz;
+	struct anvil_zener_sol zs;
 	if (!isfinite(p->h))
 		return 0.0;
-	if (anvil_zener_solve(p->lambda_star, 1e-8, &zs, NULL) ||
-	    anvil_zener_solve(0.0, 1e-8, &hz, NULL) || !isfinite(zs.tau_s))
+	int st = anvil_zener_solve(p->lambda_star, ANVIL_PLAN_ZENER_TOL, &zs, NULL);
+	return anvil_plan_bending_of(p, st ? NULL : &zs, anvil_plan_zener_hertz());
+}
+
+/* Zener's ODE at lambda* = 0 is Hertz's impact in Hertz's units: the same
+ * numbers for every scene, solved once a thread. */
+const struct anvil_zener_sol *anvil_plan_zener_hertz(void)
+{
+	static _Thread_local struct anvil_zener_sol hz;
+	static _Thread_local int state; /* 0: not solved, 1: solved, -1: failed */
+	if (!state)
+		state = anvil_zener_solve(0.0, ANVIL_PLAN_ZENER_TOL, &hz, NULL) ? -1 : 1;
+	return state > 0 ? &hz : NULL;
+}
+
+double anvil_plan_bending_of(const struct anvil_params *p, const struct anvil_zener_sol *zs,
+			     const struct anvil_zener_sol *hz)
+{
+	if (!isfinite(p->h))
+		return 0.0;
+	if (!zs || !hz || !isfinite(zs->tau_s))
 		return INFINITY;
-	double dP = fabs(pow(zs.alpha_max / hz.alpha_max, 1.5) - 1.0);
-	double dt = fabs(zs.tau_s / hz.tau_s - 1.0), dR = 1.0 - zs.rf;
+	double dP = fabs(pow(zs->alpha_max / hz->alpha_max, 1.5) - 1.0);
+	double dt = fabs(zs->tau_s / hz->tau_s - 1.0), dR = 1.0 - zs->rf;
 	double C = anvil_patch_compliance(p->E, p->nu, p->r0);
-	double amax = hz.alpha_max * p->T * p->V0;
+	double amax = hz->alpha_max * p->T * p->V0;
 	double refl = p->r0 / (2.0 * p->h) * C * p->K * sqrt(amax);
 	return fmax(fmax(dP, dt), fmax(dR, refl));
 }

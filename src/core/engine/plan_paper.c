@@ -33,11 +33,9 @@
  * two windows, the dearer side (the second window's correction there made
  * 3.8 times the first's evaluations). */
 #define PAPER_TS_MARGIN 1.05
-static int paper_windows(const struct anvil_params *p, const struct anvil_wave_job *j)
+static int paper_windows(const struct anvil_params *p, const struct anvil_wave_job *j,
+			 double ts_static)
 {
-	double ts_static = 0, pmax;
-	if (anvil_plan_static(p, &ts_static, &pmax))
-		ts_static = 0;
 	double tau_c = PAPER_TS_MARGIN * fmax(j->ts, ts_static) * p->c2 / p->r0;
 	int k = 0;
 	while (k + 1 < j->attempts && !(anvil_wave_window(j, k) > tau_c))
@@ -164,10 +162,11 @@ static double corr_needed(const struct anvil_params *p, const struct anvil_probl
 
 /* The work of job j (a wave run of the paper's contact) added to w. */
 static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job *j,
-		     int layer_resp, const struct anvil_cache *cache, struct anvil_paper_work *w)
+		     int layer_resp, const struct anvil_cache *cache, double ts_static,
+		     struct anvil_paper_work *w)
 {
 	const struct anvil_params *p = &pb->p;
-	int nw = paper_windows(p, j);
+	int nw = paper_windows(p, j, ts_static);
 	double n0 = anvil_wave_window(j, 0) * p->r0 / p->c2 / j->dt;
 	double x = chatter_x(p);
 	double chat = x >= PAPER_CHATTER_X && n0 <= ANVIL_MAX_STEPS
@@ -214,24 +213,29 @@ static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job
 void anvil_plan_paper_work(const struct anvil_problem *pb, const struct anvil_plan_row *r,
 			   const struct anvil_cache *cache, struct anvil_paper_work *w)
 {
+	double ts_static = 0, pmax;
+	if (anvil_plan_static(&pb->p, &ts_static, &pmax))
+		ts_static = 0;
+	anvil_plan_paper_work_ts(pb, r, cache, ts_static, w);
+}
+
+void anvil_plan_paper_work_ts(const struct anvil_problem *pb, const struct anvil_plan_row *r,
+			      const struct anvil_cache *cache, double ts_static,
+			      struct anvil_paper_work *w)
+{
 	*w = (struct anvil_paper_work){ 0 };
-	job_work(pb, &r->job, r->method == ANVIL_METHOD_LAYER, cache, w);
+	job_work(pb, &r->job, r->method == ANVIL_METHOD_LAYER, cache, ts_static, w);
 	/* the fallback (a late reflection: the half-space's contact outlasting
 	 * 2h/c1) when the contact the windows were chosen for reaches it */
-	if (r->fallback) {
-		double ts_static = 0, pmax;
-		if (anvil_plan_static(&pb->p, &ts_static, &pmax))
-			ts_static = 0;
-		if (fmax(r->job.ts, ts_static) >= 2.0 * pb->p.h / pb->p.c1) {
-			struct anvil_paper_work f;
-			anvil_plan_paper_work(pb, &(struct anvil_plan_row){ .method = ANVIL_METHOD_LAYER,
-									   .job = r->fallback_job },
-					      cache, &f);
-			w->impacts += f.impacts;
-			w->responses += f.responses;
-			w->evals += f.evals;
-			w->seconds += f.seconds;
-		}
+	if (r->fallback && fmax(r->job.ts, ts_static) >= 2.0 * pb->p.h / pb->p.c1) {
+		struct anvil_paper_work f;
+		anvil_plan_paper_work_ts(pb, &(struct anvil_plan_row){ .method = ANVIL_METHOD_LAYER,
+								      .job = r->fallback_job },
+					 cache, ts_static, &f);
+		w->impacts += f.impacts;
+		w->responses += f.responses;
+		w->evals += f.evals;
+		w->seconds += f.seconds;
 	}
 }
 
