@@ -191,7 +191,9 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
  * machine (a loaded 2-core x86-64; scripts/bench prints the real figures
  * for yours):
  *   COST_EVAL      one layer-kernel evaluation (green.c's integrand with
- *                  its share of the quadrature's bookkeeping): 0.4-0.8 us;
+ *                  its share of the quadrature's bookkeeping): plan.h's
+ *                  ANVIL_PLAN_COST_EVAL, the contacts' rows' own (0.35 us
+ *                  here before, a full model's price beside a static row);
  *   IMPACT_*       (plan_work.c) one coupled run (passes at dt and dt/2) over a window of
  *                  n steps: linear (weights, the exact contact end) plus,
  *                  on a layer, the online convolution's n log2(n)^2
@@ -215,7 +217,7 @@ int anvil_wave_refuse(const struct anvil_params *p, double scene_dt, enum anvil_
  * share them), times the adaptive splitting's extra work (refine()).
  * One evaluation costs 0.28-0.33 us since the kernel was made leaner
  * (transform/layer_bc.c); the twin comes from the main spectrum for free. */
-#define COST_EVAL 3.5e-7
+#define COST_EVAL ANVIL_PLAN_COST_EVAL
 #define COST_HERTZ 2.0e-6
 #define COST_ZENER 2.0e-4
 #define COST_HALFSPACE 1.0e-4
