@@ -48,6 +48,7 @@ struct quad {
 	double wide;        /* the widest patch the band's contour serves (anvil_kband_lift) */
 	int far_cut;        /* cut at the hard limit, not the budget's, and the tail's
 			     * kernel evaluated, not interpolated (tests) */
+	int full_band;      /* the band's small pieces to kband, not kpole (tests) */
 	gsl_root_fsolver *root; /* the cut's (green_cut.h), one a thread */
 	size_t evals;
 	struct kmemo *memo; /* the layer correction's kernel at this s (a set's), or NULL */
@@ -370,8 +371,9 @@ static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *s
 	heap_push(h, x);
 }
 
-/* Integrate over [0, *kend] (*kend set to the end reached), starting from pieces of width w0 on [0, kband]
- * (where the Lamb-mode poles are) and w1 beyond; absolute tolerance eps.
+/* Integrate over [0, *kend] (*kend set to the end reached), starting from pieces of width wr on
+ * [0, klo] and w0 on [klo, kpole] (where the Lamb-mode poles are), one on [kpole, kband] and
+ * w1 beyond; absolute tolerance eps.
  * Returns ANVIL_ETOL (with the best value) when SEG_MAX pieces do not
  * suffice, or when the estimate is within ROUND_STOP of its rounding
  * floor (gk21.h) and that floor is above eps: no bisection can meet eps
@@ -380,15 +382,17 @@ static void heap_add(struct quad *q, struct heap *h, double a, double b, cplx *s
  * at 1.0-1.3 times the floor: 14 % of the evaluations of h = 0.02 r0, 1 kg
  * at 10 m/s). */
 #define ROUND_STOP 2.0
-static int adapt(struct quad *q, struct heap *h, double klo, double wr, double kband,
-		 double *kend, double w0, double w1, double eps, cplx *val, double *abserr)
+static int adapt(struct quad *q, struct heap *h, double klo, double wr, double kpole,
+		 double kband, double *kend, double w0, double w1, double eps, cplx *val,
+		 double *abserr)
 {
 	cplx sum = 0;
 	double err = 0, fl = 0, a = 0;
 	h->n = 0;
 	while (a < *kend && h->n < SEG_MAX / 2) {
-		double w = a < klo ? wr : a < kband ? w0 : w1;
-		double b = fmin(*kend, a < klo ? fmin(klo, a + w) : a < kband ? fmin(kband, a + w) : a + w);
+		double w = a < klo ? wr : a < kpole ? w0 : a < kband ? kband - kpole : w1;
+		double end = a < klo ? klo : a < kpole ? kpole : a < kband ? kband : INFINITY;
+		double b = fmin(*kend, fmin(end, a + w));
 		heap_add(q, h, a, b, &sum, &err, &fl);
 		a = b;
 	}
@@ -524,8 +528,9 @@ static int k_integral(struct quad *q, struct heap *h, double omega, double hh,
 	double kcut = kend, fit = tail_fit(q, &cut, kband, kmax, kend, eps);
 	if (q->tail_on)
 		w1 = tail_piece(q->patch, hh);
-	int st = adapt(q, h, q->klo, wr, kband, &kend, w0, w1, eps - fmin(tail, share) - fit, val,
-		       abserr);
+	double kpole = hs || q->full_band ? kband : fmax(q->klo, anvil_kband_poles(omega, wabs, q->nu, hh, cr));
+	int st = adapt(q, h, q->klo, wr, kpole, kband, &kend, w0, w1,
+		       eps - fmin(tail, share) - fit, val, abserr);
 	if (kend < kcut) { /* the starting pieces ran out: the bound from there */
 		tail = INFINITY;
 		if (kend >= kband)
@@ -603,6 +608,7 @@ int green_sample_spectra(enum anvil_green_mode mode, double kap2, double nu, dou
 {
 	const struct quad q0 = { .mode = mode, .kap2 = kap2, .nu = nu, .hh = hh,
 				 .no_lift = sp[0].no_lift, .far_cut = sp[0].far_cut,
+				 .full_band = sp[0].full_band,
 				 .wide = green_lift_wide(sp[0].lift_patch) };
 	size_t M = 0, done = 0;
 	int st = ANVIL_OK, stop = 0;

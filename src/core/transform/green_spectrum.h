@@ -36,6 +36,9 @@ struct green_spectrum {
 		      * for tests; a set's is sp[0]'s */
 	int far_cut; /* each k-integral to its hard limit (ktail), not where the budget
 		      * allows: a reference for tests; a set's is sp[0]'s */
+	int full_band; /* the band's small starting pieces to its end, not only to
+			* kernel.h anvil_kband_poles: a reference for tests; a set's
+			* is sp[0]'s */
 	double lift_patch; /* the widest patch (r0 units) the band's lifted contour
 			    * serves, at least patch (green.h anvil_green_settings);
 			    * 0: r0's; a set's is sp[0]'s */

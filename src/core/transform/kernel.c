@@ -113,10 +113,22 @@ cplx anvil_kernel_tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx
 	return 2.0 * (E1 - E2) * ip12;
 }
 
-double anvil_kband(double omega, double wabs, double nu, double hh, double cr)
+/* 1.6 max(omega/c_R, k_flex): where the Lamb-mode poles end (kernel.h) */
+static double kpoles(double omega, double wabs, double nu, double hh, double cr)
 {
 	double kflex = isfinite(hh) ? pow(6.0 * (1.0 - nu) * wabs * wabs / (hh * hh), 0.25) : 0.0;
-	return 1.6 * fmax(omega / cr, kflex) + 3.0;
+	return 1.6 * fmax(omega / cr, kflex);
+}
+
+double anvil_kband(double omega, double wabs, double nu, double hh, double cr)
+{
+	return kpoles(omega, wabs, nu, hh, cr) + 3.0;
+}
+
+double anvil_kband_poles(double omega, double wabs, double nu, double hh, double cr)
+{
+	double kp = kpoles(omega, wabs, nu, hh, cr);
+	return fmin(kp + 3.0, kp + ANVIL_KPOLE_MARGIN / hh);
 }
 
 double anvil_kband_piece(double hh, double kband)
