@@ -109,15 +109,20 @@ static double corr_evals(double hh, double nu, double cr, double omega, double t
 			tail = 0;
 		}
 		double ks, lift = anvil_kband_lift(om, hh, nu, kband, wide, &ks);
+		/* green_spectrum.c: small pieces to kpole, one piece on to kband */
+		double kp = fmax(ks, anvil_kband_poles(om, wabs, nu, hh, cr));
+		/* that piece and its halves down to the layer's scale 1/hh at kpole */
+		double past = kp < kband ? 1.0 + ceil(log2(1.0 + (kband - kp) * hh)) : 0.0;
 		if (lift > 0)
 			lifted += stride * (LIFT_SPLIT * split_f *
-						    ceil((kband - ks) /
-							 anvil_kband_lift_piece(hh, kband - ks, lift)) +
+						    (ceil((kp - ks) /
+							  anvil_kband_lift_piece(hh, kband - ks, lift)) +
+						     past) +
 					    LIFT_TAIL * tail) +
 				  stride * (1.0 + split_f * refine(hh, tau_end, omega)) *
 					  ceil(ks / anvil_kband_piece(hh, kband));
 		else
-			panels += stride * (ceil(kband / anvil_kband_piece(hh, kband)) + tail);
+			panels += stride * (ceil(kp / anvil_kband_piece(hh, kband)) + past + tail);
 	}
 	return 21.0 * ((1.0 + split_f * refine(hh, tau_end, omega)) * panels + lifted + fits);
 }
