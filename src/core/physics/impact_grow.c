@@ -196,7 +196,7 @@ void impact_grow_reset(struct ctx *c)
 		free(c->fz[j].dg);
 		free(c->fz[j].xf);
 	}
-	c->nfz = 0;
+	c->nfz = c->nmg = 0;
 	free(c->hbuf);
 	c->hbuf = NULL;
 	c->hlo = c->hn = c->hcap = 0;
@@ -209,8 +209,10 @@ void impact_grow_free(struct ctx *c)
 {
 	impact_grow_reset(c);
 	for (int k = 0; k < HIST_FFT_MAX; k++) {
-		gsl_fft_real_wavetable_free(c->rw[k]);
-		gsl_fft_halfcomplex_wavetable_free(c->hw[k]);
+		if (!c->share) { /* its own: else the share's */
+			gsl_fft_real_wavetable_free((gsl_fft_real_wavetable *)c->rw[k]);
+			gsl_fft_halfcomplex_wavetable_free((gsl_fft_halfcomplex_wavetable *)c->hw[k]);
+		}
 		gsl_fft_real_workspace_free(c->ws[k]);
 		c->rw[k] = NULL, c->hw[k] = NULL, c->ws[k] = NULL;
 	}
@@ -235,6 +237,65 @@ static double dot_rev(const double *x, const double *g, size_t o, size_t S)
 	return (a0 + a1) + (a2 + a3);
 }
 
+/* Room for n doubles in c->hwk (frozen_chunk's scratch); 0 when out of
+ * memory. */
+static int hwk_room(struct ctx *c, size_t n)
+{
+	if (n <= c->hwcap)
+		return 1;
+	free(c->hwk);
+	c->hwk = malloc(n * sizeof *c->hwk);
+	c->hwcap = c->hwk ? n : 0;
+	return c->hwk != NULL;
+}
+
+/* frozen_chunk's direct sums where the targets lie far apart on f's grid
+ * (q well above S: a thin plate's tiny early segments under a step grown
+ * 2^19 times theirs): each target's S - 1 weights made for it alone, the
+ * same bits as the kept weights (impact_wts_span), where filling them in
+ * full made q of them for each target's S (h = 0.02 r0, 0.1 g at 10 m/s:
+ * 6.5e5 weights fewer, 31 chunks of the five impacts). */
+static int frozen_sparse(struct ctx *c, const struct frozen *f, size_t o0, size_t q, size_t C,
+			 double *out)
+{
+	size_t S = f->S;
+	if (!hwk_room(c, 2 * S))
+		return ANVIL_ENOMEM;
+	double *g = c->hwk, *dg = f->z ? g + S : NULL;
+	for (size_t k = 0; k < C; k++) {
+		size_t o = o0 + q * k; /* dot_rev reads g_{o-m}, 1 <= m < S */
+		if (impact_wts_span(c, f->L, o - (S - 1), S - 1, g, dg))
+			return ANVIL_ENUM;
+		out[k] += dot_rev(f->x, g, S - 1, S) + (dg ? dot_rev(f->z, dg, S - 1, S) : 0.0);
+	}
+	return ANVIL_OK;
+}
+
+/* The FFT tables of size N = 2^lg: the share's, or its own (no share),
+ * and its workspace.  ANVIL_OK or ANVIL_ENOMEM (then none is kept). */
+static int hist_fft_tables(struct ctx *c, int lg, size_t N)
+{
+	const gsl_fft_real_wavetable *rw = NULL;
+	const gsl_fft_halfcomplex_wavetable *hw = NULL;
+	if (c->share) {
+		if (impact_share_fft(c->share, lg, &rw, &hw))
+			return ANVIL_ENOMEM;
+	} else if (!(rw = gsl_fft_real_wavetable_alloc(N)) ||
+		   !(hw = gsl_fft_halfcomplex_wavetable_alloc(N))) {
+		gsl_fft_real_wavetable_free((gsl_fft_real_wavetable *)rw);
+		return ANVIL_ENOMEM;
+	}
+	if (!(c->ws[lg] = gsl_fft_real_workspace_alloc(N))) {
+		if (!c->share) {
+			gsl_fft_real_wavetable_free((gsl_fft_real_wavetable *)rw);
+			gsl_fft_halfcomplex_wavetable_free((gsl_fft_halfcomplex_wavetable *)hw);
+		}
+		return ANVIL_ENOMEM;
+	}
+	c->rw[lg] = rw, c->hw[lg] = hw;
+	return ANVIL_OK;
+}
+
 /* Frozen segment f's hats at the targets o0 + q k (its grid), k < C,
  * added to out[k]: directly, or by one FFT correlation over the dense
  * span of lags (GSL radix 2) when that is cheaper: a chunk of the
@@ -242,28 +303,30 @@ static double dot_rev(const double *x, const double *g, size_t o, size_t S)
 static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, size_t C,
 			double *out)
 {
-	size_t S = f->S;
+	size_t S = f->S, hi = o0 + q * (C - 1) + 1;
 	if (S < 2)
 		return ANVIL_OK;
-	/* both ways read its weights up to the last target's lag */
-	if (impact_wts_fill(c, f->L, f->g, f->dg, &f->nf, o0 + q * (C - 1) + 1))
-		return ANVIL_ENUM;
 	size_t V = S - 1 + q * (C - 1), N = 64;
 	int lg = 6;
 	while (N < V)
 		N <<= 1, lg++;
 	if ((double)(S - 1) * (double)C <= HIST_FFT_COST * (double)N * (double)lg) {
+		if (hi > f->nf && (double)C * (double)(S + 1) < (double)(hi - f->nf))
+			return frozen_sparse(c, f, o0, q, C, out);
+		if (impact_wts_fill(c, f->L, f->g, f->dg, &f->nf, hi))
+			return ANVIL_ENUM;
 		for (size_t k = 0; k < C; k++)
 			out[k] += dot_rev(f->x, f->g, o0 + q * k, S) +
 				  (f->z ? dot_rev(f->z, f->dg, o0 + q * k, S) : 0.0);
 		return ANVIL_OK;
 	}
-	/* the tables of size N, made once per impact (both passes) */
+	/* the FFT reads its weights up to the last target's lag */
+	if (impact_wts_fill(c, f->L, f->g, f->dg, &f->nf, hi))
+		return ANVIL_ENUM;
+	/* the tables of size N, made once per share (hist_fft_tables) */
 	if (lg >= HIST_FFT_MAX)
 		return ANVIL_EINVAL;
-	if (!c->ws[lg] && (!(c->rw[lg] = gsl_fft_real_wavetable_alloc(N)) ||
-			   !(c->hw[lg] = gsl_fft_halfcomplex_wavetable_alloc(N)) ||
-			   !(c->ws[lg] = gsl_fft_real_workspace_alloc(N))))
+	if (!c->ws[lg] && hist_fft_tables(c, lg, N))
 		return ANVIL_ENOMEM;
 	/* d[n] = sum_{m'} a[m'] b[n + S - 2 - m'], a[m'] = x_{m'+1}, b[v] =
 	 * g[o0 - S + 1 + v]: a cyclic convolution of size N >= V is exact at
@@ -272,15 +335,8 @@ static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, si
 	 * then transforms only its span of weights: 3 transforms where there
 	 * were 5 (the same bits: the same transform of the same values). */
 	int nb = f->z ? 4 : 2;
-	size_t need = (size_t)nb * N;
-	if (need > c->hwcap) {
-		free(c->hwk);
-		if (!(c->hwk = malloc(need * sizeof *c->hwk))) {
-			c->hwcap = 0;
-			return ANVIL_ENOMEM;
-		}
-		c->hwcap = need;
-	}
+	if (!hwk_room(c, (size_t)nb * N))
+		return ANVIL_ENOMEM;
 	double *a = c->hwk;
 	if (f->xlg != lg || !f->xf) {
 		double *xf = realloc(f->xf, (size_t)(nb / 2) * N * sizeof *xf);
@@ -330,17 +386,26 @@ static int frozen_chunk(struct ctx *c, struct frozen *f, size_t o0, size_t q, si
 static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 {
 	memset(out, 0, C * sizeof *out);
+	size_t u0 = c->K0 + (i0 << c->lev); /* the first target, in dt0 */
+	size_t Cm = C; /* the merged far field's targets: k >= Cm */
+	while (c->nmg && Cm && (double)(u0 + ((Cm - 1) << c->lev)) * c->dt0 >= c->mg.t_far)
+		Cm--;
+	if (Cm < C) {
+		impact_far_chunk(c, &c->mg, u0, Cm, C, out);
+		if (!isfinite(out[C - 1]))
+			return ANVIL_ENUM; /* a ramp call failed */
+	}
 	for (size_t j = 0; j < c->nfz; j++) {
 		struct frozen *f = &c->fz[j];
-		size_t u0 = c->K0 + (i0 << c->lev); /* the first target, in dt0 */
 		size_t q = (size_t)1 << (c->lev - f->L);
 		size_t mp = (size_t)1 << f->L, mn = (size_t)1 << f->Ln;
 		size_t o0 = (u0 - f->K) >> f->L, Cn = C; /* the near targets: k < Cn */
+		size_t Cf = j < c->nmg ? Cm : C;         /* its own far ones: Cn <= k < Cf */
 		while (Cn && (double)(u0 + ((Cn - 1) << c->lev)) * c->dt0 >= f->t_far)
 			Cn--;
-		if (Cn < C)
-			impact_far_chunk(c, f, u0, Cn, C, out);
-		if (Cn < C && !isfinite(out[C - 1]))
+		if (Cn < Cf)
+			impact_far_chunk(c, f, u0, Cn, Cf, out);
+		if (Cn < Cf && !isfinite(out[Cf - 1]))
 			return ANVIL_ENUM; /* a ramp call failed */
 		if (!Cn)
 			continue;
@@ -355,10 +420,14 @@ static int hist_chunk(struct ctx *c, size_t i0, size_t C, double *out)
 			/* as the difference of two slopes: R(t)/l - R(t)(1/l + 1/r)
 			 * would round by eps R/dt, the same way for every hat of a
 			 * width, a bias that grows as R with the lag */
-			for (int r = 0; r < (f->z ? 2 : 1); r++) {
-				double A = impact_rtab(c, r, ub + mp), B = impact_rtab(c, r, ub),
-				       E = impact_rtab(c, r, ub - mn);
-				out[k] += (r ? f->Qb : f->Pb) * ((A - B) / hp - (B - E) / hn);
+			double A = impact_rtab_raw(c, 0, ub + mp), B = impact_rtab_raw(c, 0, ub),
+			       E = impact_rtab_raw(c, 0, ub - mn);
+			out[k] += f->Pb * ((A - B) / hp - (B - E) / hn);
+			if (f->z) { /* ramp2 less ramp (impact_rtab), ramp's read once */
+				double A2 = impact_rtab_raw(c, 1, ub + mp) - A,
+				       B2 = impact_rtab_raw(c, 1, ub) - B,
+				       E2 = impact_rtab_raw(c, 1, ub - mn) - E;
+				out[k] += f->Qb * ((A2 - B2) / hp - (B2 - E2) / hn);
 			}
 		}
 	}
@@ -407,6 +476,7 @@ int impact_hist(struct ctx *c, size_t i, double *val)
 		C = cm;
 	if (C > c->segcap - i)
 		C = c->segcap - i;
+	impact_far_merge(c, (double)(c->K0 + (i << c->lev)) * c->dt0);
 	if (C > c->hcap) {
 		double *b = realloc(c->hbuf, C * sizeof *b);
 		if (!b)
@@ -443,7 +513,10 @@ int impact_hist_at(const struct ctx *c, const struct pass *v, size_t k, double d
 	/* the ramps at the lags of nodes m - 1, m, m + 1 (ramp, ramp2): node
 	 * m + 1's hat reuses two of them (each value one call, not three) */
 	double R[2][3];
-	for (size_t f = 0; f < c->nfz; f++) /* long mode: the far ones' charges */
+	int merged = c->nmg && t >= c->mg.t_far;
+	if (merged)
+		w += impact_far_sum(c, &c->mg, t);
+	for (size_t f = merged ? c->nmg : 0; f < c->nfz; f++) /* the far ones' charges */
 		if (t >= c->fz[f].t_far)
 			w += impact_far_sum(c, &c->fz[f], t);
 	for (size_t m = 1; m <= c->seg0 && !st; m++) {

@@ -3,6 +3,7 @@
 #ifndef ANVIL_IMPACT_IMPL_H
 #define ANVIL_IMPACT_IMPL_H
 
+#include <limits.h>
 #include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -93,7 +94,7 @@ struct frozen {
 	/* long mode: the pass's node of its node 0; targets at u dt0 >=
 	 * t_far take the far field: the charges Wx (P), Wz (Q) at times tc */
 	size_t n0;
-	double t_far, tb; /* tb: its last charge's time */
+	double t_far, tb, ta; /* ta, tb: its first and last charges' times */
 	double tc[FAR_P], Wx[FAR_P], Wz[FAR_P];
 	/* its far field's last run (impact_far.c): its interpolant's Chebyshev
 	 * coefficients over [rt0, rt1] (none while rt1 <= rt0) */
@@ -165,15 +166,21 @@ struct ctx {
 	/* its deflection at the segment's nodes hlo .. hlo + hn - 1 (a chunk) */
 	double *hbuf;
 	size_t hlo, hn, hcap;
-	/* its FFT tables, by log2 of the size, made when first needed, kept
-	 * for both passes (impact_grow_free) */
-	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
-	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
+	/* its FFT tables, by log2 of the size, made when first needed: the
+	 * share's (impact_share_fft; its own when there is none), and its
+	 * workspaces, kept for both passes (impact_grow_free) */
+	const gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
+	const gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
 	gsl_fft_real_workspace *ws[HIST_FFT_MAX];
 	/* frozen_chunk's arrays, kept for the next chunk (a fresh calloc of
 	 * that size is fresh pages: a fault each 4 kB) */
 	double *hwk;
 	size_t hwcap;
+	/* the far field of the oldest frozen segments 0 .. nmg - 1 as one set
+	 * of charges (impact_far_merge; nmg = 0: none), for the targets at
+	 * mg.t_far and beyond, where each of them would take its own */
+	size_t nmg;
+	struct frozen mg;
 };
 
 /* The ramp responses off the grid that the far past needs at every
@@ -285,6 +292,30 @@ struct rtab {
 	struct rtab_blk *_Atomic *rows;
 	struct rtab *next; /* the share's list */
 };
+/* A row's entries at most (2^20; 8 MB of values): beyond, the calls are
+ * made every time (a far lag read once or twice: the nodes' own,
+ * rest_cloc). */
+#define RTAB_ROW_MAX ((size_t)RTAB_ROW_BLKS << RTAB_BLK_LG)
+/* The count of U's trailing zero bits (U > 0): one instruction where
+ * the compiler has it (the loop, bit by bit, was a fifth of the tables'
+ * own time on h = 0.02 r0, 1 kg at 0.1 m/s: a grown level's lags are
+ * multiples of 2^L). */
+static inline int impact_rtab_ctz(size_t U)
+{
+#if defined(__GNUC__) && SIZE_MAX == ULLONG_MAX
+	return __builtin_ctzll(U);
+#else
+	int z = 0;
+	while (!(U >> z & 1))
+		z++;
+	return z;
+#endif
+}
+/* The share's FFT tables of size 2^lg (lg < HIST_FFT_MAX), made when
+ * first asked for, kept until the share is freed: ANVIL_OK or
+ * ANVIL_ENOMEM. */
+int impact_share_fft(struct anvil_ramp_share *s, int lg, const gsl_fft_real_wavetable **rw,
+		     const gsl_fft_halfcomplex_wavetable **hw);
 /* The share's table of key k, found or added (NULL when out of memory). */
 struct rtab *impact_rtab_get(struct anvil_ramp_share *s, const struct rtab_key *k);
 /* ramp (r = 0) or ramp2 (r = 1) at u dt0 by the call, kept in the table
@@ -301,6 +332,16 @@ static inline double impact_rtab_raw(const struct ctx *c, int r, size_t u)
 	if (u < c->nR0 && t && U < t->key.n &&
 	    (atomic_load_explicit(&t->have[U >> 6], memory_order_acquire) >> (U & 63) & 1))
 		return atomic_load_explicit(&t->R[U], memory_order_relaxed);
+	if (u >= c->nR0 && t && U) { /* in its rows, made (impact_rtab.c rfar's way) */
+		int z = impact_rtab_ctz(U);
+		size_t i = U >> (z + 1), k = i & (RTAB_BLK - 1);
+		struct rtab_blk *b =
+			i < RTAB_ROW_MAX ? atomic_load_explicit(&t->rows[(size_t)z * RTAB_ROW_BLKS + (i >> RTAB_BLK_LG)],
+							       memory_order_acquire)
+					 : NULL;
+		if (b && (atomic_load_explicit(&b->have[k >> 6], memory_order_acquire) >> (k & 63) & 1))
+			return atomic_load_explicit(&b->v[k], memory_order_relaxed);
+	}
 	return impact_rtab_make(c, r, u);
 }
 /* Ramp r at j dt0 + d (d > 0; the pass's dt0) into *val, the share's
@@ -317,6 +358,9 @@ double impact_rtab(const struct ctx *c, int r, size_t u);
  * j 2^L dt0 (as weights() makes level 0's); *nf = need.  ANVIL_ENUM when
  * one is not finite (a ramp call failed), else ANVIL_OK. */
 int impact_wts_fill(const struct ctx *c, int L, double *g, double *dg, size_t *nf, size_t need);
+/* Level L's weights j0 .. j0 + n - 1 into g[0 .. n-1] (and dg), as
+ * impact_wts_fill makes them (the same bits), not kept. */
+int impact_wts_span(const struct ctx *c, int L, size_t j0, size_t n, double *g, double *dg);
 /* The current segment's weights made to min(need, ng) (c's table is a
  * cache: c itself is never const).  ANVIL_OK or ANVIL_ENUM. */
 int impact_g_need(const struct ctx *c, size_t need);
@@ -344,6 +388,9 @@ double impact_far_sum(const struct ctx *c, const struct frozen *f, double t);
  * out[k] (interpolated over the targets where they are far enough). */
 void impact_far_chunk(const struct ctx *c, struct frozen *f, size_t u0, size_t k0, size_t C,
 		      double *out);
+/* The merged far field (c->mg) extended to the most oldest segments whose
+ * far fields all hold from t0 on, if that is more than it holds. */
+void impact_far_merge(struct ctx *c, double t0);
 /* Long mode: 1 when the march at node s->n - 1 stopped short of the
  * window's end (its nodes ran out, not the window). */
 int impact_long_short(const struct ctx *c, const struct pass *s);

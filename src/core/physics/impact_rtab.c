@@ -33,9 +33,31 @@
 #include "impact_impl.h"
 
 struct anvil_ramp_share {
-	pthread_mutex_t lock; /* the list of tables (not their entries) */
+	pthread_mutex_t lock; /* the list of tables (not their entries), and rw, hw */
 	struct rtab *head;
+	/* the frozen past's FFT tables by log2 of the size (impact_share_fft) */
+	gsl_fft_real_wavetable *rw[HIST_FFT_MAX];
+	gsl_fft_halfcomplex_wavetable *hw[HIST_FFT_MAX];
 };
+
+/* Made once for every impact of the share: a row's five impacts each made
+ * their own, the same trigonometric tables (h = 0.02 r0, 0.1 g at 1 m/s:
+ * 3 % of the run); GSL only reads them (const), so threads may share. */
+int impact_share_fft(struct anvil_ramp_share *s, int lg, const gsl_fft_real_wavetable **rw,
+		     const gsl_fft_halfcomplex_wavetable **hw)
+{
+	size_t N = (size_t)1 << lg;
+	pthread_mutex_lock(&s->lock);
+	if (!s->rw[lg] || !s->hw[lg]) {
+		if (!s->rw[lg])
+			s->rw[lg] = gsl_fft_real_wavetable_alloc(N);
+		if (!s->hw[lg])
+			s->hw[lg] = gsl_fft_halfcomplex_wavetable_alloc(N);
+	}
+	*rw = s->rw[lg], *hw = s->hw[lg];
+	pthread_mutex_unlock(&s->lock);
+	return *rw && *hw ? ANVIL_OK : ANVIL_ENOMEM;
+}
 
 struct anvil_ramp_share *anvil_ramp_share_alloc(void)
 {
@@ -65,6 +87,10 @@ void anvil_ramp_share_free(struct anvil_ramp_share *s)
 	for (struct rtab *t = s->head, *nx; t; t = nx) {
 		nx = t->next;
 		rtab_free(t);
+	}
+	for (int k = 0; k < HIST_FFT_MAX; k++) {
+		gsl_fft_real_wavetable_free(s->rw[k]);
+		gsl_fft_halfcomplex_wavetable_free(s->hw[k]);
 	}
 	pthread_mutex_destroy(&s->lock);
 	free(s);
@@ -142,27 +168,6 @@ static void put(_Atomic double *R, _Atomic uint64_t *have, size_t i, double v)
 	atomic_fetch_or_explicit(&have[i >> 6], (uint64_t)1 << (i & 63), memory_order_release);
 }
 
-/* A row's entries at most (2^20; 8 MB of values): beyond, the calls are
- * made every time (a far lag read once or twice: the nodes' own,
- * rest_cloc). */
-#define ROW_MAX ((size_t)RTAB_ROW_BLKS << RTAB_BLK_LG)
-
-/* The count of U's trailing zero bits (U > 0): one instruction where
- * the compiler has it (the loop, bit by bit, was a fifth of the tables'
- * own time on h = 0.02 r0, 1 kg at 0.1 m/s: a grown level's lags are
- * multiples of 2^L). */
-static int trailing_zeros(size_t U)
-{
-#if defined(__GNUC__) && SIZE_MAX == ULLONG_MAX
-	return __builtin_ctzll(U);
-#else
-	int z = 0;
-	while (!(U >> z & 1))
-		z++;
-	return z;
-#endif
-}
-
 /* Table t's entry at U in its rows (U = (2 i + 1) 2^z kept in row z at
  * i), its block made when missing; NULL for U = 0, past ROW_MAX, or out
  * of memory (the value then not kept). */
@@ -170,9 +175,9 @@ static struct rtab_blk *row_at(struct rtab *t, size_t U, size_t *k)
 {
 	if (!t || !U)
 		return NULL;
-	int z = trailing_zeros(U);
+	int z = impact_rtab_ctz(U);
 	size_t i = U >> (z + 1);
-	if (i >= ROW_MAX)
+	if (i >= RTAB_ROW_MAX)
 		return NULL;
 	*k = i & (RTAB_BLK - 1);
 	return row_blk(t, z, i >> RTAB_BLK_LG);

@@ -25,29 +25,37 @@ static inline double rraw(const struct ctx *c, int r, size_t u)
 	return impact_rtab_raw(c, r, u);
 }
 
-int impact_wts_fill(const struct ctx *c, int L, double *g, double *dg, size_t *nf, size_t need)
+int impact_wts_span(const struct ctx *c, int L, size_t j0, size_t n, double *g, double *dg)
 {
-	size_t j0 = *nf, mn = (size_t)1 << L;
+	size_t mn = (size_t)1 << L;
 	double dn = ldexp(c->dt0, L);
-	if (need <= j0)
-		return ANVIL_OK;
 	int bad = 0;
 	/* a window of three sliding along j: each ramp value read once */
 	double a[3] = { j0 ? rraw(c, 0, (j0 - 1) * mn) : 0.0, rraw(c, 0, j0 * mn), 0.0 };
 	double b[3] = { dg && j0 ? rraw(c, 1, (j0 - 1) * mn) : 0.0, dg ? rraw(c, 1, j0 * mn) : 0.0, 0.0 };
-	for (size_t j = j0; j < need; j++) {
+	for (size_t i = 0; i < n; i++) {
+		size_t j = j0 + i;
 		a[2] = rraw(c, 0, (j + 1) * mn);
-		g[j] = (a[2] - 2.0 * a[1] + (j ? a[0] : 0.0)) / dn;
+		g[i] = (a[2] - 2.0 * a[1] + (j ? a[0] : 0.0)) / dn;
 		a[0] = a[1], a[1] = a[2];
 		if (dg) {
 			b[2] = rraw(c, 1, (j + 1) * mn);
-			dg[j] = (b[2] - 2.0 * b[1] + (j ? b[0] : 0.0)) / dn - g[j];
+			dg[i] = (b[2] - 2.0 * b[1] + (j ? b[0] : 0.0)) / dn - g[i];
 			b[0] = b[1], b[1] = b[2];
 		}
-		bad |= !isfinite(g[j]) || (dg && !isfinite(dg[j]));
+		bad |= !isfinite(g[i]) || (dg && !isfinite(dg[i]));
 	}
-	*nf = need;
 	return bad ? ANVIL_ENUM : ANVIL_OK;
+}
+
+int impact_wts_fill(const struct ctx *c, int L, double *g, double *dg, size_t *nf, size_t need)
+{
+	size_t j0 = *nf;
+	if (need <= j0)
+		return ANVIL_OK;
+	int st = impact_wts_span(c, L, j0, need - j0, g + j0, dg ? dg + j0 : NULL);
+	*nf = need;
+	return st;
 }
 
 int impact_g_need(const struct ctx *c, size_t need)

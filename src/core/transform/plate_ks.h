@@ -7,12 +7,14 @@
 #include <gsl/gsl_integration.h>
 
 struct umemo;
+struct zmemo;
 /* A quadrature's workspaces, kept across a table's nodes: K's and S's
  * factors in u replay at the next node (plate_ks.c, umemo). */
 struct kwork {
 	gsl_integration_workspace *w, *wc;
 	gsl_integration_qawo_table *tab, *tabc; /* sin u, cos u (S's) */
 	struct umemo *uk, *us; /* K's and S's factors in u (one nu: one tail's) */
+	struct zmemo *zm;      /* the load's transform at one node's u (plate_ks.c) */
 };
 
 int plate_kwork_alloc(struct kwork *kw);
