@@ -386,12 +386,15 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			/* one round: Sigma at that P (the filter's trial state),
 			 * then the step's root with it */
 			double zt = z2, ud = wd0 + e0 * P, u = u0 - D * P;
-			double s1 = impact_lag2_after(&l2, p, P, u, impact_lag2_wdd(ud, udp, tl, rl, &zt));
+			double s1 = impact_lag2_after(&l2, p, P, xr, u,
+						      impact_lag2_wdd(ud, udp, tl, rl, &zt));
 			xr = A - s1 > 0 ? physical_root(b * D, B, p->k0, b * u0, A - s1, xr) : 0.0;
 			P = xr * xr * xr;
 			s->sg[n] = sgd = s1;
 		}
-		double x = cbrt(P);
+		/* P^(1/3): the root itself (P > 0 only from it), not the cube
+		 * root of its cube, which took a twentieth of a warm run */
+		double x = P > 0 ? xr : 0.0;
 		a_prev = in ? p->k0 * x * x : Ae; /* alpha_H in contact; the gap's A out of it */
 		amax = fmax(amax, in ? a_prev : 0.0);
 		s->P[n] = P;
