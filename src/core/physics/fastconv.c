@@ -45,7 +45,8 @@ static int packed(size_t B)
 
 /* One FFT level of a convolution. */
 struct level {
-	double *spec[2]; /* halfcomplex (mixed-radix packing) FFT of g_0..g_{2B-1}, per kernel */
+	double *spec[2]; /* FFT of g_0..g_{2B-1}, per kernel: halfcomplex (mixed-radix
+			  * packing), or on a packed level X_0 .. X_B complex */
 	gsl_fft_real_workspace *ws; /* GSL wants one of the transform's own size */
 	gsl_fft_complex_workspace *cws; /* a packed level's, size B */
 };
