@@ -696,9 +696,10 @@ static void test_set(void)
 	anvil_green_free(alone);
 }
 
-/* anvil_green_ramp evaluates the spline from its intervals' kept
- * coefficients (green.c, green_spline): the same bits as GSL's
- * gsl_interp_eval on the same samples, at every node, at points inside
+/* anvil_green_ramp and anvil_green_step evaluate the spline from its
+ * intervals' kept coefficients (green.c, green_spline; no gsl_interp
+ * there): the same bits as GSL's gsl_interp_eval and
+ * gsl_interp_eval_deriv on the same samples, at every node, at points inside
  * every interval, a hair either side of the nodes (where tau / dtau
  * rounds to the neighbour) and at the last node. */
 static void test_ramp_bits(void)
@@ -713,8 +714,8 @@ static void test_ramp_bits(void)
 		tau[j] = (double)j * s.dtau;
 	gsl_interp_init(sp, tau, s.ramp, s.n);
 	double t_end = fmin(fmin(anvil_green_t_plate(g), tau[s.n - 1]), anvil_green_tau_end(g));
-	size_t n = 0, bad = 0;
-	double worst_at = 0;
+	size_t n = 0, bad = 0, bad_d = 0;
+	double worst_at = 0, worst_d = 0;
 	for (size_t j = 0; j < s.n && tau[j] <= t_end; j++) {
 		double x[6] = { tau[j], nextafter(tau[j], 0), nextafter(tau[j], INFINITY),
 				tau[j] + 0.25 * s.dtau, tau[j] + 0.5 * s.dtau, tau[j] + 0.8 * s.dtau };
@@ -727,10 +728,17 @@ static void test_ramp_bits(void)
 			n++;
 			if (memcmp(&v, &want, sizeof v) != 0 && !bad++)
 				worst_at = x[i];
+			anvil_green_step(g, x[i], &v);
+			want = gsl_interp_eval_deriv(sp, tau, s.ramp, x[i], NULL);
+			if (memcmp(&v, &want, sizeof v) != 0 && !bad_d++)
+				worst_d = x[i];
 		}
 	}
 	ok(n > 5 * 1000 && bad == 0, "ramp: the same bits as gsl_interp_eval at %zu points (%zu differ, first at tau = %.17g)",
 	   n, bad, worst_at);
+	ok(n > 5 * 1000 && bad_d == 0,
+	   "step: the same bits as gsl_interp_eval_deriv at %zu points (%zu differ, first at tau = %.17g)",
+	   n, bad_d, worst_d);
 	gsl_interp_free(sp);
 	free(tau);
 	anvil_green_free(g);

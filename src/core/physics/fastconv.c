@@ -1,6 +1,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <math.h>
+
+#include <gsl/gsl_fft_complex.h>
 #include <gsl/gsl_fft_halfcomplex.h>
 #include <gsl/gsl_fft_real.h>
 
@@ -15,14 +18,37 @@
 struct anvil_fastconv_fft {
 	int nlev;
 	size_t direct_max;
-	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: not made yet (or level k direct) */
+	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: not made yet (or level k direct or packed) */
 	gsl_fft_halfcomplex_wavetable **bw;
+	gsl_fft_complex_wavetable **cw;    /* a packed level's (FASTCONV_PACK): size B */
+	double **tw;                       /* and its twiddles cos, sin (2 pi j / 2B), j <= B/2 */
 };
+
+/* Levels whose transforms (size 2B) are at least this long take the real
+ * FFT as a complex one of half the size (pack_forward).  GSL's real
+ * mixed-radix transform of 2^14 points took 308 us, of 2^20 90 ms, a
+ * complex one of half the size 174 us and 21 ms (measured, this
+ * machine); a pair's convolution at N = 1007 (2B <= 1024) gained
+ * nothing from packing, one of N = 16000 gained 18 % from 2B = 4096 up
+ * and a little less from 2048 or 8192, and N = 386000 (the paper's
+ * chattering rows) about 1.5 times.  Another rounding than the real
+ * transform's, of the same size (eps log2(2B) sum |x g|:
+ * tests/test_fastconv.c). */
+#ifndef FASTCONV_PACK
+#define FASTCONV_PACK 4096
+#endif
+
+static int packed(size_t B)
+{
+	return 2 * B >= FASTCONV_PACK;
+}
 
 /* One FFT level of a convolution. */
 struct level {
-	double *spec[2]; /* halfcomplex (mixed-radix packing) FFT of g_0..g_{2B-1}, per kernel */
+	double *spec[2]; /* FFT of g_0..g_{2B-1}, per kernel: halfcomplex (mixed-radix
+			  * packing), or on a packed level X_0 .. X_B complex */
 	gsl_fft_real_workspace *ws; /* GSL wants one of the transform's own size */
+	gsl_fft_complex_workspace *cws; /* a packed level's, size B */
 };
 
 struct anvil_fastconv {
@@ -67,9 +93,15 @@ void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t)
 			gsl_fft_real_wavetable_free(t->fw[k]);
 		if (t->bw)
 			gsl_fft_halfcomplex_wavetable_free(t->bw[k]);
+		if (t->cw)
+			gsl_fft_complex_wavetable_free(t->cw[k]);
+		if (t->tw)
+			free(t->tw[k]);
 	}
 	free(t->fw);
 	free(t->bw);
+	free(t->cw);
+	free(t->tw);
 	free(t);
 }
 
@@ -82,7 +114,9 @@ struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_ma
 	t->direct_max = direct_of(direct_max);
 	t->fw = calloc((size_t)t->nlev + 1, sizeof *t->fw);
 	t->bw = calloc((size_t)t->nlev + 1, sizeof *t->bw);
-	if (!t->fw || !t->bw) {
+	t->cw = calloc((size_t)t->nlev + 1, sizeof *t->cw);
+	t->tw = calloc((size_t)t->nlev + 1, sizeof *t->tw);
+	if (!t->fw || !t->bw || !t->cw || !t->tw) {
 		anvil_fastconv_fft_free(t);
 		return NULL;
 	}
@@ -96,7 +130,22 @@ struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_ma
  * -1 when out of memory. */
 static int fft_level(struct anvil_fastconv_fft *t, int k)
 {
-	size_t N = (size_t)2 << k;
+	size_t N = (size_t)2 << k, B = N / 2;
+	if (packed(B)) {
+		if (!t->cw[k] && !(t->cw[k] = gsl_fft_complex_wavetable_alloc(B)))
+			return -1;
+		if (!t->tw[k]) {
+			double *tw = malloc((B + 2) * sizeof *tw);
+			if (!tw)
+				return -1;
+			for (size_t j = 0; j <= B / 2; j++) {
+				tw[2 * j] = cos(2.0 * M_PI * (double)j / (double)N);
+				tw[2 * j + 1] = sin(2.0 * M_PI * (double)j / (double)N);
+			}
+			t->tw[k] = tw;
+		}
+		return 0;
+	}
 	if (!t->fw[k] && !(t->fw[k] = gsl_fft_real_wavetable_alloc(N)))
 		return -1;
 	if (!t->bw[k] && !(t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(N)))
@@ -112,6 +161,7 @@ void anvil_fastconv_free(struct anvil_fastconv *f)
 		free(f->lev[k].spec[0]);
 		free(f->lev[k].spec[1]);
 		gsl_fft_real_workspace_free(f->lev[k].ws);
+		gsl_fft_complex_workspace_free(f->lev[k].cws);
 	}
 	free(f->lev);
 	anvil_fastconv_fft_free(f->own);
@@ -124,20 +174,69 @@ void anvil_fastconv_free(struct anvil_fastconv *f)
 	free(f);
 }
 
+/* The spectrum X_0 .. X_B (complex, interleaved) of the real x_0 ..
+ * x_{2B-1} in a (2B + 2 values), in place: the complex FFT of size B of
+ * z_n = x_{2n} + i x_{2n+1}, then X_j = E + w^j O and X_{B-j} =
+ * conj(E - w^j O), E = (Z_j + conj Z_{B-j})/2, O = -i (Z_j - conj
+ * Z_{B-j})/2, w = e^{-2 pi i/2B}.  B even. */
+static void pack_forward(double *a, size_t B, const gsl_fft_complex_wavetable *cw,
+			 gsl_fft_complex_workspace *cws, const double *tw)
+{
+	gsl_fft_complex_forward(a, 1, B, cw, cws);
+	double r0 = a[0], i0 = a[1];
+	a[0] = r0 + i0, a[1] = 0.0;
+	a[2 * B] = r0 - i0, a[2 * B + 1] = 0.0;
+	for (size_t j = 1; j <= B / 2; j++) {
+		double *zj = a + 2 * j, *zm = a + 2 * (B - j);
+		double er = 0.5 * (zj[0] + zm[0]), ei = 0.5 * (zj[1] - zm[1]);
+		double o_r = 0.5 * (zj[1] + zm[1]), o_i = -0.5 * (zj[0] - zm[0]);
+		double c = tw[2 * j], sn = tw[2 * j + 1]; /* w^j = c - i sn */
+		double pr = c * o_r + sn * o_i, pi = c * o_i - sn * o_r;
+		zj[0] = er + pr, zj[1] = ei + pi;
+		zm[0] = er - pr, zm[1] = -(ei - pi);
+	}
+}
+
+/* The real y_0 .. y_{2B-1} of the Hermitian spectrum Y_0 .. Y_B in a, in
+ * place (pack_forward's inverse, 1/(2B) included): Z_j = E + i O,
+ * Z_{B-j} = conj E + i conj O, E = (Y_j + conj Y_{B-j})/2, O = (Y_j -
+ * conj Y_{B-j}) conj(w^j)/2, then the complex inverse FFT of size B. */
+static void pack_inverse(double *a, size_t B, const gsl_fft_complex_wavetable *cw,
+			 gsl_fft_complex_workspace *cws, const double *tw)
+{
+	double y0 = a[0], yb = a[2 * B];
+	a[0] = 0.5 * (y0 + yb), a[1] = 0.5 * (y0 - yb);
+	for (size_t j = 1; j <= B / 2; j++) {
+		double *yj = a + 2 * j, *ym = a + 2 * (B - j);
+		double er = 0.5 * (yj[0] + ym[0]), ei = 0.5 * (yj[1] - ym[1]);
+		double dr = 0.5 * (yj[0] - ym[0]), di = 0.5 * (yj[1] + ym[1]);
+		double c = tw[2 * j], sn = tw[2 * j + 1]; /* conj(w^j) = c + i sn */
+		double o_r = c * dr - sn * di, o_i = c * di + sn * dr;
+		yj[0] = er - o_i, yj[1] = ei + o_r;
+		ym[0] = er + o_i, ym[1] = -ei + o_r;
+	}
+	gsl_fft_complex_inverse(a, 1, B, cw, cws);
+}
+
 /* Level k's workspace and the kernels' spectra for squares of side
  * B = 2^k: g_0 .. g_{2B-1}, zero past cap.  -1 when out of memory. */
 static int level_init(struct anvil_fastconv *f, int k)
 {
 	size_t B = (size_t)1 << k;
 	struct level *l = &f->lev[k];
-	if (fft_level(f->fft, k) || !(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
+	if (fft_level(f->fft, k))
+		return -1;
+	if (packed(B) ? !(l->cws = gsl_fft_complex_workspace_alloc(B))
+		      : !(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
 		return -1;
 	for (int i = 0; i < f->nk; i++) {
-		double *sp = l->spec[i] = calloc(2 * B, sizeof *sp);
+		double *sp = l->spec[i] = calloc(2 * B + 2, sizeof *sp);
 		if (!sp)
 			return -1;
 		memcpy(sp, f->g[i], (2 * B < f->cap ? 2 * B : f->cap) * sizeof *sp);
-		if (gsl_fft_real_transform(sp, 1, 2 * B, f->fft->fw[k], l->ws))
+		if (packed(B))
+			pack_forward(sp, B, f->fft->cw[k], l->cws, f->fft->tw[k]);
+		else if (gsl_fft_real_transform(sp, 1, 2 * B, f->fft->fw[k], l->ws))
 			return -1;
 	}
 	return 0;
@@ -205,7 +304,7 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 		 * pages a march never reaches are never touched (calloc's can be
 		 * memset whole: glibc serves a freed large block from the heap) */
 		f->x[i] = malloc(cap * sizeof *f->x[i]);
-		f->buf[i] = malloc(2 * ((size_t)1 << f->nlev) * sizeof *f->buf[i]);
+		f->buf[i] = malloc((2 * ((size_t)1 << f->nlev) + 2) * sizeof *f->buf[i]);
 		if (fill)
 			f->g[i] = g[i];
 		else if ((f->g[i] = f->own_g[i] = malloc(cap * sizeof *f->own_g[i])))
@@ -243,27 +342,33 @@ double anvil_fastconv_next(const struct anvil_fastconv *f)
 
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }
 
-/* Sources [L-B, L) into targets [L, min(L+B, cap)), directly: four
+/* Sources [L-B, L) into targets [L, min(L+B, cap)), directly: eight
  * targets at a time, each summed alone in the order m = L-B, L-B+1, ...
- * (four independent chains where one stalled on the adder's latency:
- * the same bits, 2-3 times faster). */
+ * (eight independent chains where one stalled on the adder's latency:
+ * the same bits as one target at a time; four chains left the adder
+ * idle half the time). */
 static void square_direct(struct anvil_fastconv *f, const double *x, const double *g, size_t L,
 			  size_t B)
 {
 	size_t end = L + B < f->cap ? L + B : f->cap, t = L;
-	for (; t + 4 <= end; t += 4) {
-		double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+	for (; t + 8 <= end; t += 8) {
+		/* scalars, not an array: gcc 12 at -O2 kept an array's sums in
+		 * memory, each step waiting on its own store */
+		double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
 		for (size_t m = L - B; m < L; m++) {
 			const double xm = x[m], *gm = g + (t - m);
 			s0 += xm * gm[0];
 			s1 += xm * gm[1];
 			s2 += xm * gm[2];
 			s3 += xm * gm[3];
+			s4 += xm * gm[4];
+			s5 += xm * gm[5];
+			s6 += xm * gm[6];
+			s7 += xm * gm[7];
 		}
-		f->acc[t] += s0;
-		f->acc[t + 1] += s1;
-		f->acc[t + 2] += s2;
-		f->acc[t + 3] += s3;
+		double *a = f->acc + t;
+		a[0] += s0, a[1] += s1, a[2] += s2, a[3] += s3;
+		a[4] += s4, a[5] += s5, a[6] += s6, a[7] += s7;
 	}
 	for (; t < end; t++) {
 		double s = 0;
@@ -273,13 +378,54 @@ static void square_direct(struct anvil_fastconv *f, const double *x, const doubl
 	}
 }
 
+/* A pair's square: four targets at a time, the two kernels' sums side by
+ * side (eight chains) and each added as square_direct adds it, the first
+ * kernel's then the second's: the same bits as two square_direct calls,
+ * one pass over the sources. */
+static void square_direct_pair(struct anvil_fastconv *f, size_t L, size_t B)
+{
+	const double *x = f->x[0], *y = f->x[1], *g = f->g[0], *h = f->g[1];
+	size_t end = L + B < f->cap ? L + B : f->cap, t = L;
+	for (; t + 4 <= end; t += 4) {
+		double s0 = 0, s1 = 0, s2 = 0, s3 = 0, r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+		for (size_t m = L - B; m < L; m++) {
+			const double xm = x[m], ym = y[m], *gm = g + (t - m), *hm = h + (t - m);
+			s0 += xm * gm[0];
+			s1 += xm * gm[1];
+			s2 += xm * gm[2];
+			s3 += xm * gm[3];
+			r0 += ym * hm[0];
+			r1 += ym * hm[1];
+			r2 += ym * hm[2];
+			r3 += ym * hm[3];
+		}
+		double *a = f->acc + t;
+		a[0] = (a[0] + s0) + r0, a[1] = (a[1] + s1) + r1;
+		a[2] = (a[2] + s2) + r2, a[3] = (a[3] + s3) + r3;
+	}
+	for (; t < end; t++) {
+		double s = 0, r = 0;
+		for (size_t m = L - B; m < L; m++) {
+			s += x[m] * g[t - m];
+			r += y[m] * h[t - m];
+		}
+		f->acc[t] = (f->acc[t] + s) + r;
+	}
+}
+
 /* The same square by a cyclic convolution of size 2B: for targets
  * L + i (i < B) the lags B + i - s lie in [1, 2B), so nothing wraps.  A
  * pair's two products are added in the spectrum: one inverse transform. */
+static void square_packed(struct anvil_fastconv *f, size_t L, size_t B, int k);
+
 static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 {
 	const struct level *l = &f->lev[k];
 	size_t N = 2 * B, end = L + B < f->cap ? L + B : f->cap;
+	if (packed(B)) {
+		square_packed(f, L, B, k);
+		return;
+	}
 	for (int i = 0; i < f->nk; i++) {
 		memcpy(f->buf[i], f->x[i] + (L - B), B * sizeof *f->buf[i]);
 		memset(f->buf[i] + B, 0, B * sizeof *f->buf[i]);
@@ -310,6 +456,42 @@ static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 		}
 	}
 	gsl_fft_halfcomplex_inverse(b, 1, N, f->fft->bw[k], l->ws);
+	for (size_t t = L; t < end; t++)
+		f->acc[t] += b[B + (t - L)];
+}
+
+/* square_fft on a packed level: the spectra X_0 .. X_B as complex
+ * numbers (pack_forward), the pair's products added there. */
+static void square_packed(struct anvil_fastconv *f, size_t L, size_t B, int k)
+{
+	const struct level *l = &f->lev[k];
+	const gsl_fft_complex_wavetable *cw = f->fft->cw[k];
+	const double *tw = f->fft->tw[k];
+	size_t end = L + B < f->cap ? L + B : f->cap;
+	for (int i = 0; i < f->nk; i++) {
+		memcpy(f->buf[i], f->x[i] + (L - B), B * sizeof *f->buf[i]);
+		memset(f->buf[i] + B, 0, (B + 2) * sizeof *f->buf[i]);
+		pack_forward(f->buf[i], B, cw, l->cws, tw);
+	}
+	double *b = f->buf[0];
+	const double *G = l->spec[0];
+	if (f->nk == 1) {
+		for (size_t j = 0; j <= 2 * B; j += 2) {
+			double re = b[j] * G[j] - b[j + 1] * G[j + 1];
+			double im = b[j] * G[j + 1] + b[j + 1] * G[j];
+			b[j] = re;
+			b[j + 1] = im;
+		}
+	} else {
+		const double *c = f->buf[1], *H = l->spec[1];
+		for (size_t j = 0; j <= 2 * B; j += 2) {
+			double re = b[j] * G[j] - b[j + 1] * G[j + 1] + (c[j] * H[j] - c[j + 1] * H[j + 1]);
+			double im = b[j] * G[j + 1] + b[j + 1] * G[j] + (c[j] * H[j + 1] + c[j + 1] * H[j]);
+			b[j] = re;
+			b[j + 1] = im;
+		}
+	}
+	pack_inverse(b, B, cw, l->cws, tw);
 	for (size_t t = L; t < end; t++)
 		f->acc[t] += b[B + (t - L)];
 }
@@ -347,9 +529,10 @@ int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y)
 		return -2;
 	if (k < f->nlev && f->lev[k].spec[0])
 		square_fft(f, L, B, k);
+	else if (f->nk == 2)
+		square_direct_pair(f, L, B);
 	else
-		for (int i = 0; i < f->nk; i++)
-			square_direct(f, f->x[i], f->g[i], L, B);
+		square_direct(f, f->x[0], f->g[0], L, B);
 	return 0;
 }
 

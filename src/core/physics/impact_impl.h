@@ -428,8 +428,8 @@ double impact_lag2_before(const struct impact_lag2 *l, const struct ctx *c,
 /* w_c'' from dw_c/dt ud through the second low-pass stage (*z2; udp: ud's
  * last value; rl = dt / (2 tl)). */
 double impact_lag2_wdd(double ud, double udp, double tl, double rl, double *z2);
-/* Sigma for load P, relative velocity u and w_c'' wdd. */
+/* Sigma for load P = x^3, relative velocity u and w_c'' wdd. */
 double impact_lag2_after(const struct impact_lag2 *l, const struct anvil_params *p, double P,
-			 double u, double wdd);
+			 double x, double u, double wdd);
 
 #endif

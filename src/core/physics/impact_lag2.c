@@ -69,10 +69,10 @@ double impact_lag2_wdd(double ud, double udp, double tl, double rl, double *z2)
 	return (ud - *z2) / tl;
 }
 
-/* Sigma at node n for load P, relative velocity u, w_c'' wdd. */
-double impact_lag2_after(const struct impact_lag2 *l, const struct anvil_params *p, double P, double u,
-			 double wdd)
+/* Sigma at node n for load P = x^3 (x the step's root: no cube root of
+ * its cube), relative velocity u, w_c'' wdd. */
+double impact_lag2_after(const struct impact_lag2 *l, const struct anvil_params *p, double P,
+			 double x, double u, double wdd)
 {
-	double x = cbrt(P);
 	return l->cu * u * u - l->cx * p->k0 * x * x * (P / p->m1 + wdd);
 }

@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_interp.h>
 #include <gsl/gsl_linalg.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -39,7 +38,6 @@ struct anvil_green {
 	double dtau;          /* output grid step */
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
-	gsl_interp *interp;   /* cubic spline through the ramp samples */
 	double *coef;         /* per interval: its y, b, c, d (green_spline), owned */
 	int tailed;           /* 1: beyond tail.t1 the plate's closed form (plate.h) */
 	struct anvil_plate_tail tail; /* its arrays owned */
@@ -64,28 +62,16 @@ void anvil_green_free(struct anvil_green *g)
 {
 	if (!g)
 		return;
-	gsl_interp_free(g->interp);
 	free(g->coef);
 	anvil_plate_tail_free(&g->tail);
 	free(g->tau);
 	free(g);
 }
 
-/* c_i = y''(tau_i) / 2 of GSL's spline at node i < n - 1 (cspline_eval_deriv2
- * at its interval's start: 2 c_i + 6 d_i 0, exact). */
-static int spline_c(const struct anvil_green *g, size_t i, double *c)
-{
-	gsl_interp_accel acc = { .cache = i };
-	double ypp;
-	int st = gsl_interp_eval_deriv2_e(g->interp, g->tau, g->ramp, g->tau[i], &acc, &ypp);
-	*c = 0.5 * ypp;
-	return st;
-}
-
 /* The natural spline's c_i = y''(tau_i)/2 (c[0] = c[n-1] = 0) by the
  * system GSL's cspline_init solves, formed as it forms it and solved by the
- * same public gsl_linalg_solve_symm_tridiag: the same bits (green_spline
- * checks three nodes against GSL's own and else asks node by node).
+ * same public gsl_linalg_solve_symm_tridiag: the same bits as GSL's
+ * (tests/test_green.c compares values and slopes with gsl_interp_eval).
  * 0, or -1 (out of memory or a singular system). */
 static int spline_cs(const double *x, const double *y, size_t n, double *c)
 {
@@ -115,52 +101,37 @@ static int spline_cs(const double *x, const double *y, size_t n, double *c)
 	return st;
 }
 
-/* GSL's natural cubic spline through the samples, and each interval's
+/* GSL's natural cubic spline through the samples: each interval's
  * polynomial y + x (b + x (c + x d)) as GSL's cspline_eval forms it
  * (coeff_calc), kept: GSL forms the interval's coefficients, three
  * divisions, on every call, and the exact end of a contact evaluates the
- * ramp ~10^4 times per impact (tests/test_green.c: the same bits as
- * gsl_interp_eval).  The c_i from spline_cs, checked at three nodes
- * against GSL's y''/2 (spline_c), or else asked node by node (slower: a
- * response read from disk takes 1.7 times as long).  ANVIL_ENOMEM,
- * ANVIL_ENUM. */
+ * ramp ~10^4 times per impact.  The c_i from spline_cs, not from a
+ * gsl_interp: its init solves the same system again (a sixth of a warm
+ * run's reading of a response), and nothing else was asked of it once
+ * slopes came from these coefficients too (anvil_green_step).
+ * ANVIL_ENOMEM, ANVIL_ENUM. */
 static int green_spline(struct anvil_green *g)
 {
 	size_t n = g->n;
-	g->interp = gsl_interp_alloc(gsl_interp_cspline, n);
 	g->coef = malloc(4 * (n - 1) * sizeof *g->coef);
-	double *cs = malloc(n * sizeof *cs);
-	if (!g->interp || !g->coef || !cs) {
-		free(cs);
+	double *c = malloc(n * sizeof *c);
+	if (!g->coef || !c) {
+		free(c);
 		return ANVIL_ENOMEM;
 	}
-	if (gsl_interp_init(g->interp, g->tau, g->ramp, n)) {
-		free(cs);
+	if (n < 3 || spline_cs(g->tau, g->ramp, n, c)) { /* n < 3: GSL's cspline's minimum */
+		free(c);
 		return ANVIL_ENUM;
 	}
-	const double *c = spline_cs(g->tau, g->ramp, n, cs) ? NULL : cs;
-	size_t probe[3] = { 0, n / 2, n - 2 };
-	for (int k = 0; k < 3 && c; k++) {
-		double ck;
-		if (spline_c(g, probe[k], &ck) || memcmp(&ck, &c[probe[k]], sizeof ck) != 0)
-			c = NULL;
-	}
-	double c_i = 0.0; /* natural: 0 at both ends */
 	for (size_t i = 0; i + 1 < n; i++) {
-		double c_ip1 = 0.0;
-		if (i + 2 < n && (c ? (c_ip1 = c[i + 1], 0) : spline_c(g, i + 1, &c_ip1))) {
-			free(cs);
-			return ANVIL_ENUM;
-		}
 		double dx = g->tau[i + 1] - g->tau[i], dy = g->ramp[i + 1] - g->ramp[i];
 		double *cf = g->coef + 4 * i;
 		cf[0] = g->ramp[i];
-		cf[1] = (dy / dx) - dx * (c_ip1 + 2.0 * c_i) / 3.0;
-		cf[2] = c_i;
-		cf[3] = (c_ip1 - c_i) / (3.0 * dx);
-		c_i = c_ip1;
+		cf[1] = (dy / dx) - dx * (c[i + 1] + 2.0 * c[i]) / 3.0;
+		cf[2] = c[i];
+		cf[3] = (c[i + 1] - c[i]) / (3.0 * dx);
 	}
-	free(cs);
+	free(c);
 	return ANVIL_OK;
 }
 
@@ -493,20 +464,22 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
 	return g;
 }
 
-/* The samples are uniform (tau_j = j dtau): the interval is known without
- * GSL's bisection (a third of a warm run's time went there).  Handed to
- * gsl_interp_eval_deriv as a local accelerator whose cache is that
- * interval, so the lookup is a hit and the value the same bits (and the
- * ramp's own lookup starts there); a local one, because a response is
- * shared read-only between threads. */
-static gsl_interp_accel uniform_hint(const struct anvil_green *g, double tau)
+/* The interval of tau, 0 < tau <= tau_{n-1}: the one with tau_i <= tau <
+ * tau_i+1, the last for the last node, as GSL's gsl_interp_accel_find
+ * settles it.  The samples are uniform (tau_j = j dtau): the interval is
+ * known from tau / dtau without GSL's bisection (a third of a warm run's
+ * time went there), up to the quotient's rounding, which the walk to the
+ * neighbour settles. */
+static size_t spline_interval(const struct anvil_green *g, double tau)
 {
-	gsl_interp_accel acc = {0};
 	double j = floor(tau / g->dtau);
 	size_t last = g->n - 2;
-	acc.cache = j < 0 ? 0 : j > (double)last ? last : (size_t)j;
-	/* rounding of tau / dtau: let GSL's own check settle the neighbour */
-	return acc;
+	size_t i = j < 0 ? 0 : j > (double)last ? last : (size_t)j;
+	while (i > 0 && tau < g->tau[i])
+		i--;
+	while (i < last && tau >= g->tau[i + 1])
+		i++;
+	return i;
 }
 
 int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
@@ -525,19 +498,15 @@ int anvil_green_ramp(const struct anvil_green *g, double tau, double *val)
 		*val = NAN;
 		return ANVIL_OK;
 	}
-	/* the interval gsl_interp_accel_find settles from the hint: the one
-	 * with tau_i <= tau < tau_i+1, the last for the last node */
-	size_t i = uniform_hint(g, tau).cache, last = g->n - 2;
-	while (i > 0 && tau < g->tau[i])
-		i--;
-	while (i < last && tau >= g->tau[i + 1])
-		i++;
+	size_t i = spline_interval(g, tau);
 	const double *cf = g->coef + 4 * i;
 	double delx = tau - g->tau[i];
 	*val = cf[0] + delx * (cf[1] + delx * (cf[2] + delx * cf[3]));
 	return ANVIL_OK;
 }
 
+/* The spline's slope as gsl_interp_eval_deriv forms it (cspline_eval_deriv:
+ * b + x (2 c + 3 d x)): the same bits. */
 int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 {
 	if (tau <= 0) {
@@ -550,8 +519,14 @@ int anvil_green_step(const struct anvil_green *g, double tau, double *val)
 		*val = anvil_plate_tail_step(&g->tail, tau);
 		return ANVIL_OK;
 	}
-	gsl_interp_accel acc = uniform_hint(g, tau);
-	*val = gsl_interp_eval_deriv(g->interp, g->tau, g->ramp, tau, &acc);
+	if (!(tau <= g->tau[g->n - 1])) { /* gsl_interp_eval_deriv's domain */
+		*val = NAN;
+		return ANVIL_OK;
+	}
+	size_t i = spline_interval(g, tau);
+	const double *cf = g->coef + 4 * i;
+	double delx = tau - g->tau[i];
+	*val = cf[1] + delx * (2.0 * cf[2] + 3.0 * cf[3] * delx);
 	return ANVIL_OK;
 }
 
