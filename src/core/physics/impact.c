@@ -692,6 +692,7 @@ static void fill(struct anvil_result *r, const struct anvil_params *p,
 	r->lambda_star = p->lambda_star;
 	r->Rf_star = p->Rf_star;
 	r->Pmax_curv = b->curv > 0 ? b->curv : a->curv;
+	impact_plateau(b->curv > 0 ? b : a, r->Pmax_plat);
 	fill_contacts(r, p, a, b);
 }
 

@@ -118,6 +118,30 @@ void impact_peak(struct pass *s)
 	s->Pmax = v.Pmax, s->tmax_ie = v.tmax_ie, s->curv = v.curv;
 }
 
+/* The plateau around the peak (result.h Pmax_plat): one scan of the
+ * nodes, each filed by its deficit d = 1 - P/P_max in [2^-(j+1), 2^-j)
+ * (ilogb: no log per node), then each level takes in the finer ones.
+ * Every node counts, a later contact's too: t_max may jump there. */
+void impact_plateau(const struct pass *s, double *plat)
+{
+	const int L = ANVIL_PLATEAU_LEVELS;
+	for (int j = 0; j < L; j++)
+		plat[j] = 0.0;
+	if (!(s->Pmax > 0))
+		return;
+	for (size_t i = 0; i < s->n; i++) {
+		double d = 1.0 - s->P[i] / s->Pmax;
+		if (!(d < 1.0))
+			continue;
+		int j = d > 0 ? -ilogb(d) - 1 : L - 1;
+		j = j < 0 ? 0 : j >= L ? L - 1 : j;
+		double t = s->nseg == 1 ? (double)i * s->dt : s->t[i];
+		plat[j] = fmax(plat[j], fabs(t - s->tmax));
+	}
+	for (int j = L - 2; j >= 0; j--)
+		plat[j] = fmax(plat[j], plat[j + 1]);
+}
+
 /* The end of contact between steps n-1 and n, where alpha would be a_n <= 0;
  * V_s from the impulse, the last partial interval with P ~ (t_s - t)^(3/2)
  * since alpha_H falls linearly to zero. */

@@ -401,6 +401,8 @@ struct pass impact_view(const struct ctx *c, const struct pass *s);
 /* impact_contact.c: the contact's state through the march. */
 /* The pass's peak force and its time (a vertex through the largest nodes). */
 void impact_peak(struct pass *s);
+/* The peak's plateau of pass s into plat[ANVIL_PLATEAU_LEVELS] (result.h). */
+void impact_plateau(const struct pass *s, double *plat);
 /* The end between nodes n - 1 and n (alpha would be a_n <= 0) by the
  * parabola through alpha_H; s->ts, s->Vs (impulse: up to t_{n-1}). */
 void impact_finish(struct pass *s, const struct anvil_params *p, double a_n, double impulse);

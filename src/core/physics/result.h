@@ -23,6 +23,9 @@ struct anvil_history {
 	double *alpha; /* Hertz compression alpha_H = W - w, m */
 };
 
+/* Levels of the peak's plateau a result keeps (Pmax_plat). */
+#define ANVIL_PLATEAU_LEVELS 48
+
 /* Contacts whose times a result keeps (more are counted, not timed). */
 #define ANVIL_MAX_CONTACTS 16
 
@@ -42,6 +45,11 @@ struct anvil_result {
 	 * parabola through the largest sample; 0 when not known): how far an
 	 * error in P(t) can move t_max (solver.c) */
 	double Pmax_curv;
+	/* The plateau around the peak, s: Pmax_plat[j] is how far from t_max
+	 * the march's nodes come within P_max 2^-j of the peak (the finer
+	 * pass's, impact_plateau; 0 when not known): where P + e can peak
+	 * when |e| stays below P_max 2^-(j+1) (solver.c) */
+	double Pmax_plat[ANVIL_PLATEAU_LEVELS];
 	/* Repeated contacts (impact.h): how many (1 for a single impact, 0
 	 * when not computed), the start and end of the first
 	 * ANVIL_MAX_CONTACTS, s.  t_s is the end of the last; V_s, R_f, E_a
