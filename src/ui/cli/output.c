@@ -73,7 +73,7 @@ char *out_num(char *buf, double x, const char *fmt)
 	else if (isinf(x))
 		strcpy(buf, x > 0 ? "inf" : "-inf");
 	else
-		snprintf(buf, 40, fmt ? fmt : "%.10g", x);
+		snprintf(buf, 40, fmt ? fmt : OUT_NUM_FMT, x);
 	return buf;
 }
 
@@ -254,7 +254,7 @@ void out_json_string(FILE *f, const char *s)
 static void json_number(FILE *f, double x)
 {
 	if (isfinite(x))
-		fprintf(f, "%.10g", x);
+		fprintf(f, OUT_NUM_FMT, x);
 	else
 		fputs("null", f);
 }
