@@ -170,48 +170,18 @@ int solver_response_impulse(void *ctx, double tau, double *val)
 	return anvil_green_impulse(rs->corr, tau, val); /* a static part's is 0 for tau > 0 */
 }
 
-/* The history samples of a run whose error is measured (solver_add_green_error, solver_twin.c):
- * a spacing of at most half the step dt (the finer pass's, what the history
- * is resampled from) over the first window (anvil_wave_window), coarser
- * only when the contact outlasts it (solver_add_green_error, solver_twin.c); a multiple of the caller's nhist - 1
- * plus one, so that the caller's samples are every k-th of them
- * (history_decimate). */
-static size_t err_nhist(const struct anvil_problem *pb, const struct anvil_wave_job *j,
-			size_t nhist)
+/* The caller's nhist samples (none when nhist < 2) from r's node
+ * history (anvil_impact_opts.hist_nodes: an error run's, solver_twin.c),
+ * as the run would have resampled its pass. */
+static int history_from_nodes(struct anvil_result *r, size_t nhist)
 {
-	double t0 = anvil_wave_window(j, 0) * pb->p.r0 / pb->p.c2;
-	double dt = pb->dt > 0 ? pb->dt : j->dt;
-	size_t want = (size_t)fmin(ceil(2.0 * t0 / dt), 4.0 * ANVIL_MAX_STEPS) + 1;
-	if (nhist < 2)
-		return want;
-	size_t k = (want - 1 + nhist - 2) / (nhist - 1);
-	return k * (nhist - 1) + 1;
-}
-
-/* Keep every k-th sample of r's history, k = (n - 1) / (nhist - 1): the
- * caller's nhist samples over [0, t_s] (none when nhist < 2).  The times
- * are the ones impact.c's resampling gives, to rounding. */
-static int history_decimate(struct anvil_result *r, size_t nhist)
-{
-	struct anvil_history h = { 0 }, *o = &r->hist;
-	if (nhist < 2 || o->n < 2) {
+	struct anvil_history h = { 0 };
+	if (nhist < 2 || r->hist.n < 2) {
 		anvil_result_free(r);
 		return ANVIL_OK;
 	}
-	size_t k = (o->n - 1) / (nhist - 1);
-	if (k == 1 && o->n == nhist)
-		return ANVIL_OK;
-	if (anvil_history_alloc(&h, nhist))
+	if (anvil_impact_history_resample(&r->hist, nhist, &h))
 		return ANVIL_ENOMEM;
-	for (size_t i = 0; i < nhist; i++) {
-		size_t m = i * k;
-		h.t[i] = o->t[m];
-		h.P[i] = o->P[m];
-		h.v[i] = o->v[m];
-		h.W[i] = o->W[m];
-		h.w[i] = o->w[m];
-		h.alpha[i] = o->alpha[m];
-	}
 	anvil_result_free(r);
 	r->hist = h;
 	return ANVIL_OK;
@@ -553,7 +523,9 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	 * when that estimate misses the target, the bandwidth doubles (up to
 	 * refine_max times): convergence in it is fast, the estimate
 	 * conservative. */
-	size_t n_err = method == ANVIL_METHOD_LAYER ? err_nhist(pb, j, nhist) : nhist;
+	/* the layer's runs keep their passes' nodes for the twin's
+	 * comparisons (solver_twin.c), the caller's samples made at the end */
+	wv.io.hist_nodes = method == ANVIL_METHOD_LAYER;
 	double tgt = anvil_accuracy_target(pb->accuracy);
 	struct anvil_result prev; /* the previous round's main (twin_is_prev) */
 	double prev_tau = 0;
@@ -564,7 +536,6 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 		o->round = refine;
 		double omega = j->omega * (double)(1 << refine);
 		int idx = j->omega_idx + refine * ANVIL_CACHE_STEPS;
-		wv.io.nhist = n_err;
 		wv.io.rest_at = 0;
 		if (refine > first) { /* r: the previous round's main, kept for this one's twin */
 			anvil_result_free(&prev);
@@ -614,7 +585,7 @@ static int run_waves(struct anvil_solver *s, const struct anvil_problem *pb,
 	o->tau_end = wv.tau_end;
 	anvil_result_free(&prev);
 	solver_held_release(s->cache, &wv.held);
-	if (n_err != nhist && history_decimate(r, nhist) && !st)
+	if (wv.io.hist_nodes && r->hist.n && history_from_nodes(r, nhist) && !st)
 		st = anvil_err_set(err, ANVIL_ENOMEM, "history: %s", anvil_strerror(ANVIL_ENOMEM));
 	return st;
 }

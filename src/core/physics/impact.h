@@ -55,6 +55,11 @@ struct anvil_impact_opts {
 	double dt_auto;   /* s; the step when dt = 0 (the caller's choice) */
 	size_t max_steps; /* refuse (ANVIL_ETOL) a run needing more steps */
 	size_t nhist;     /* history samples wanted (0: none) */
+	/* 1: the history is the pass's own nodes before t_s and the end state
+	 * at t_s (nhist unused): what an error run's comparisons need
+	 * (engine/solver_twin.c), without resampling millions of samples;
+	 * anvil_impact_history_resample makes the caller's from it. */
+	int hist_nodes;
 	int single;       /* 1: one pass at dt, no extrapolation (to test the order) */
 	size_t direct_max; /* the convolution's direct squares (fastconv.h): 0 default,
 			    * (size_t)-1 the whole O(N^2) direct sum (to test) */
@@ -205,6 +210,11 @@ void anvil_ramp_share_free(struct anvil_ramp_share *s);
 /* Run the coupled impact.  ramp covers tau in [0, tau_avail]; when the
  * contact outlasts it, ANVIL_ETOL is returned with r->ts.val = NaN so that the
  * caller can extend the response and retry.  r must be initialised. */
+/* The history of nhist samples (result.h's spacing, the warp from the
+ * force's peak as a run's own) resampled linearly from a node history
+ * (anvil_impact_opts.hist_nodes); ANVIL_ENOMEM. */
+int anvil_impact_history_resample(const struct anvil_history *nodes, size_t nhist,
+				  struct anvil_history *h);
 int anvil_impact_run(const struct anvil_params *p, anvil_ramp_fn ramp, void *ctx,
 		     double tau_avail, const struct anvil_impact_opts *o,
 		     struct anvil_result *r, struct anvil_err *err);
