@@ -102,7 +102,7 @@ void anvil_result_reach(struct anvil_result *r, double h, double E, double nu, d
  * n / ANVIL_HISTORY_RISE samples per t_pk, geometric in the tail.
  * anvil_history_warp gives beta (0: even) from t_pk and t_s alone, so
  * that a history of k (n - 1) + 1 samples holds the one of n at every
- * k-th (engine/solver.c decimates so). */
+ * k-th. */
 #define ANVIL_HISTORY_WARP_AT 20.0
 #define ANVIL_HISTORY_RISE 8.0
 double anvil_history_warp(double t_pk, double ts);

@@ -181,10 +181,10 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		if (!(anvil_scene_models(sc) & (1u << m)) || (paper && !pl->paper[m].run))
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
-		/* the physical layer row's values do not depend on its history
-		 * (the paper's contact's error estimate does: solver.c
-		 * err_nhist): it carries the verdict's, which then needs no
-		 * second run (yield.c long_contact_verdict) */
+		/* no row's values depend on its history (the error runs keep
+		 * their passes' nodes, impact.h hist_nodes): the physical layer
+		 * row carries the verdict's, which then needs no second run
+		 * (yield.c long_contact_verdict) */
 		size_t nh = !paper && !o->quiet && m == ANVIL_MODEL_LAYER &&
 				    pl->row[m].contact == ANVIL_CONTACT_PHYSICAL
 			    ? RUN_NHIST
