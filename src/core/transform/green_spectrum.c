@@ -30,7 +30,8 @@ struct kmemo;
 /* sin and cos of ph xgk_i (gk21.c's abscissae, i = 0..10 as anvil_gk21_node's
  * j <= 10 gives them on [-1, 1]) for one product ph = patch x half-width
  * (zhat_piece); a few direct-mapped slots, keyed by ph's bits. */
-#define ZC_SLOTS 16
+#define ZC_BITS 5
+#define ZC_SLOTS (1 << ZC_BITS)
 struct zcache {
 	double ph;
 	int used;
@@ -207,7 +208,10 @@ static const struct zcache *zc_get(struct quad *q, double ph)
 {
 	uint64_t x;
 	memcpy(&x, &ph, sizeof x);
-	struct zcache *z = &q->zc[((x * 0x9E3779B97F4A7C15ull) >> 40) % ZC_SLOTS];
+	/* the product's top bits, which every bit of ph reaches: bits 40-44
+	 * saw the mantissa's low bits only, so 8, 4, 0.5 ... (the band's
+	 * widths times a patch of 1) shared a slot and evicted each other */
+	struct zcache *z = &q->zc[(x * 0x9E3779B97F4A7C15ull) >> (64 - ZC_BITS)];
 	if (z->used && z->ph == ph)
 		return z;
 	z->used = 1;
