@@ -286,7 +286,7 @@ static void lifted_piece(struct quad *q, double a, double b)
 {
 	double c = 0.5 * (a + b), h = 0.5 * (b - a), wl = q->klift - q->klo;
 	q->lz_at = 0;
-	q->ls_on = q->patch * a >= 0.1; /* zhat's series (anvil_kernel_zhat_c) at no node */
+	q->ls_on = q->patch * b >= 0.1; /* not all nodes in zhat's series (anvil_kernel_zhat_c_sc) */
 	if (q->ls_on)
 		sincos_piece(q, q->patch, c, h, q->lsx, q->lcx);
 	q->lt_on = !(q->seg && q->seg_hit);
