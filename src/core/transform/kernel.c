@@ -14,15 +14,33 @@ double anvil_kernel_zhat(double k)
 	return 3.0 * (sin(k) - k * cos(k)) / (2.0 * M_PI * k * k * k);
 }
 
-cplx anvil_kernel_zhat_c(cplx k)
+/* zhat's series where |k| < 0.1 (1 otherwise: not used) */
+static int zhat_series(cplx k, cplx *z)
 {
 	cplx a = k * k;
-	if (creal(k) * creal(k) + cimag(k) * cimag(k) < 0.01)
-		return (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 +
-			a * a * a * a / 1330560.0) / (2.0 * M_PI);
-	/* sin k and cos k from one sincos and one exp (csin and ccos would
-	 * take two of each) */
-	double x = creal(k), y = cimag(k), sx = sin(x), cx = cos(x), ey = exp(y), ie = 1.0 / ey;
+	if (!(creal(k) * creal(k) + cimag(k) * cimag(k) < 0.01))
+		return 0;
+	*z = (1.0 - a / 10.0 + a * a / 280.0 - a * a * a / 15120.0 + a * a * a * a / 1330560.0) /
+	     (2.0 * M_PI);
+	return 1;
+}
+
+cplx anvil_kernel_zhat_c(cplx k)
+{
+	cplx z;
+	if (zhat_series(k, &z))
+		return z;
+	return anvil_kernel_zhat_c_sc(k, sin(creal(k)), cos(creal(k)));
+}
+
+cplx anvil_kernel_zhat_c_sc(cplx k, double sx, double cx)
+{
+	cplx a = k * k, z;
+	if (zhat_series(k, &z))
+		return z;
+	/* sin k and cos k from sin and cos of Re k and one exp (csin and ccos
+	 * would take two of each) */
+	double y = cimag(k), ey = exp(y), ie = 1.0 / ey;
 	double ch = 0.5 * (ey + ie), sh = fabs(y) < 0.5 ? sinh(y) : 0.5 * (ey - ie);
 	cplx sk = anvil_kernel_cmplx(sx * ch, cx * sh), ck = anvil_kernel_cmplx(cx * ch, -sx * sh);
 	return 3.0 * (sk - k * ck) * anvil_kernel_recip(2.0 * M_PI * a * k);

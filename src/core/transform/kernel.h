@@ -16,6 +16,9 @@ double anvil_kernel_zhat(double k);
  * from one sincos and one exp; |zhat| grows like exp(|Im k|) off the real
  * axis. */
 double complex anvil_kernel_zhat_c(double complex k);
+/* The same from sx, cx: sin and cos of Re k (or values within a few ulp
+ * of them, e.g. by angle sums), for callers that have them cheaper. */
+double complex anvil_kernel_zhat_c_sc(double complex k, double sx, double cx);
 
 /* re + i im with the sign of a zero im kept (C11's CMPLX, which not every
  * C library offers, e.g. glibc 2.36 to clang 14): the static field's branch
