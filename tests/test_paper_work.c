@@ -26,7 +26,8 @@
  * Scenes the plan prices over PRICE_MAX seconds are left out to keep make
  * check short (ANVIL_TEST_N, ANVIL_TEST_PMAX widen it; ANVIL_TEST_DUMP
  * prints every row): 0.02 s since the unit costs' refit (plan.h), which
- * runs 514 rows where 0.03 s ran 527 before it.
+ * ran 514 rows where 0.03 s ran 527 before it; 592 run now, before and
+ * after the paper march's refit (plan_paper.c, pprice30).
  * Every scene planned also holds the planner's shared estimates (plan.c
  * solves Zener's ODE and integrates the quasi-static anvil once a plan) to
  * the standalone ones, bit for bit: the layer row's work and price

@@ -63,39 +63,54 @@ static double paper_rounds(const struct anvil_wave_job *j, double n0)
  * on the grid it ran on 0 of 289 rows with a first window under 10^5.5
  * steps, 0.14, 0.67, 0.88, 0.67 of those at 10^5.5, 10^6, 10^6.5, 10^7,
  * each rerun two impacts (a round at the finer step) of about the first
- * run's.  Its expected share, 0.7 beyond PAPER_RERUN_N, on thin plates. */
+ * run's.  Its expected share beyond PAPER_RERUN_N, on thin plates, was
+ * 0.7; refitted with the march below (pprice30, on CPU, not counted): 0.5
+ * (0.35-0.7 give within one row the same counts within 2x). */
 #define PAPER_RERUN_N 5.6e5
-#define PAPER_RERUN_SHARE 0.7
+#define PAPER_RERUN_SHARE 0.5
 
 /* One impact of the paper's contact on the layer response over a window
  * of n steps, seconds: the march's cost did not follow the generic model
  * (plan_work.c, anvil_plan_impact_cost: fitted on the physical contact's
- * march): per impact on the grid's 630 rows, 0.3-0.5 of it at 10^4 steps
- * and 4-17 times it in long mode (10^6-10^8 steps), where the paper's
- * rough force grows the step later and rests only at 0.15-0.3 of the
- * window.  Measured (one core, cold): about PAPER_IMP_S (n / 10^5)^0.58
- * up to 10^6 steps, then slower, (n / 10^6)^0.24, in the level's steps
- * (ANVIL_GROW_AFTER nsteps pulses: the normal level's 400 fitted, others
- * scaled by it: only normal was measured); no dearer than the generic
- * model on windows the step does not grow in (all of it marched).  Where
- * the contact chatters (PAPER_CHATTER_X below, 12 to 64 contacts, each
- * end a search over the past, no growth after the first), 2.7-8 times
- * more: (X / 11)^0.7, at most PAPER_CHATTER_MAX (the
- * most measured; beyond, the solver's budget of contacts ends the run:
- * rows at X = 111-440 refused after 0.09-0.8 s, where others at X = 175
- * ran 1.5-4.8 s, not foreseen).  All of it times PAPER_MARCH_SCALE: refitted
- * (issue 11, plan29) on the grid's rows as they run now, with the
- * corrections' unit costs of plan.h: 0.6 (0.5-0.8 gave the same spread). */
-#define PAPER_MARCH_SCALE 0.6
+ * march).  Refitted (issue 11, pprice30) on the grid's paper rows as they
+ * run now (error runs keep their nodes, the contact-end search stops at
+ * rounding, a packed FFT for large convolutions: the grid's CPU 132.8 ->
+ * 60.1 s), one core, cold, least squares in log(price / CPU) over the 241
+ * rows of 0.02 s or more that ran: about PAPER_IMP_S (n / 10^5)^0.35 up
+ * to 10^6 steps (the old 0.58 overpriced 10^5 - 10^6 steps 1.5-2.6x), in
+ * the level's steps (ANVIL_GROW_AFTER nsteps pulses: the normal level's
+ * 400 fitted, others scaled by it: only normal was measured); no dearer
+ * than the generic model on windows the step does not grow in (all of it
+ * marched).  Beyond 10^6 (long mode, the step grows) a quarter of that
+ * law's value at 10^6, then (n / 10^6)^0.3: these rows (0.05-0.53 s at
+ * 10^6 - 7 10^7 steps) were priced 1.9-11 times their CPU by the old
+ * model, which carried the short law on; now 37 of 39 within 2x.  The
+ * median price / CPU per half decade of first-window steps is now
+ * 0.82-1.37 from 10^2.5 to 10^8.  The march's cost rises with the chatter
+ * measure X (below) whether or not the contact parts: (X /
+ * PAPER_CHATTER_X)^0.6 over it, at most PAPER_CHATTER_MAX.  Without it,
+ * rows at X = 2-28 ran 2-8 times the law (2-64 contacts; the old onset X
+ * = 35 missed them: 0.02 r0, 1 g at 1 mm/s ran 1.37 s, priced 0.29); with
+ * it 21 of the 27 that chattered are within 2x (0.20-2.07) and 14 of the
+ * 20 with one contact at X >= 3 (0.33-3.8).  Not foreseen: runs the
+ * solver ends early (its budget of 64 contacts, X = 28-440, or of 10^6
+ * steps in long mode, X = 18-70) after 0.03-0.64 s, 9 grid rows priced
+ * 3.9-50 times what they ran.  All of it times PAPER_MARCH_SCALE, fitted
+ * with the corrections' unit costs of plan.h: 0.45 (0.4 or 0.5 move the
+ * counts within 2x by a row). */
+#define PAPER_MARCH_SCALE 0.45
 #define PAPER_CHATTER_MAX 8.0
+#define PAPER_CHATTER_P 0.6
 #define PAPER_IMP_S 0.065
-#define PAPER_IMP_P1 0.58
-#define PAPER_IMP_P2 0.24
+#define PAPER_IMP_P1 0.35
+#define PAPER_IMP_P2 0.3
+#define PAPER_IMP_LONG 0.25
 static double paper_impact(double window_s, const struct anvil_wave_job *j, double chatter)
 {
 	double n = window_s / j->dt, lvl = j->nsteps / 400.0, m = n / lvl;
 	double c = m <= 1e6 ? PAPER_IMP_S * pow(m / 1e5, PAPER_IMP_P1)
-			    : PAPER_IMP_S * pow(10.0, PAPER_IMP_P1) * pow(m / 1e6, PAPER_IMP_P2);
+			    : PAPER_IMP_LONG * PAPER_IMP_S * pow(10.0, PAPER_IMP_P1) *
+				      pow(m / 1e6, PAPER_IMP_P2);
 	if (n <= ANVIL_GROW_AFTER * j->nsteps) /* no step grows: all of it marched */
 		c = fmin(c, anvil_plan_impact_cost(window_s, j->dt, 1, j->nsteps) / lvl);
 	return PAPER_MARCH_SCALE * chatter * lvl * c;
@@ -103,10 +118,11 @@ static double paper_impact(double window_s, const struct anvil_wave_job *j, doub
 
 /* The contact's chatter measure X = a r0 / h^2 (a: Hertz's contact radius,
  * the plan's figure; the paper's contact on a plate thinner than the
- * patch): on the grid every running paper row with X >= 44 and a first
- * window within ANVIL_MAX_STEPS chattered (12-64 contacts; the one long-
- * mode row that ran there, h = 0.1 r0, 100 kg at 1 m/s, did not). */
-#define PAPER_CHATTER_X 35.0
+ * patch): the march's factor above starts at PAPER_CHATTER_X (fitted: 1,
+ * 2 or 3 lose 1-3 rows within 2x, no factor 16), on windows within
+ * ANVIL_MAX_STEPS (long-mode rows showed no rise with X: 0.05-0.53 s at
+ * X = 0.7-70). */
+#define PAPER_CHATTER_X 1.5
 /* The refusal (anvil_plan_paper_refuse), on long-mode rows (a first
  * window over ANVIL_MAX_STEPS steps): Y = X r0 / h = a r0^2 / h^3 at
  * least PAPER_REFUSE_Y.  The contact there bounces on the plate, each
@@ -172,8 +188,8 @@ static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job
 	int nw = paper_windows(p, j, ts_static);
 	double n0 = anvil_wave_window(j, 0) * p->r0 / p->c2 / j->dt;
 	double x = chatter_x(p);
-	double chat = x >= PAPER_CHATTER_X && n0 <= ANVIL_MAX_STEPS
-			      ? fmin(PAPER_CHATTER_MAX, pow(x / 11.0, 0.7))
+	double chat = x > PAPER_CHATTER_X && n0 <= ANVIL_MAX_STEPS
+			      ? fmin(PAPER_CHATTER_MAX, pow(x / PAPER_CHATTER_X, PAPER_CHATTER_P))
 			      : 1.0;
 	int corr = 0;
 	for (int k = 0; k < nw; k++)
