@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdint.h>
 
+#include <gsl/gsl_interp.h>
+
 #include "solver_impl.h"
 
 /* y of history h (times rising) at t, linear between its samples; *k:
@@ -14,17 +16,8 @@
 static double hist_at(const struct anvil_history *h, const double *y, double t, size_t *k)
 {
 	size_t j = *k;
-	if (j == SIZE_MAX) { /* the first: bisection */
-		size_t lo = 0, hi = h->n - 1;
-		while (hi - lo > 1) {
-			size_t mid = lo + (hi - lo) / 2;
-			if (h->t[mid] <= t)
-				lo = mid;
-			else
-				hi = mid;
-		}
-		j = lo;
-	}
+	if (j == SIZE_MAX) /* the first: bisection */
+		j = gsl_interp_bsearch(h->t, t, 0, h->n - 1);
 	while (j + 2 < h->n && h->t[j + 1] <= t)
 		j++;
 	*k = j;

@@ -403,6 +403,12 @@ struct pass impact_view(const struct ctx *c, const struct pass *s);
 void impact_peak(struct pass *s);
 /* The peak's plateau of pass s into plat[ANVIL_PLATEAU_LEVELS] (result.h). */
 void impact_plateau(const struct pass *s, double *plat);
+/* The pass's history (impact_history.c): nhist samples over [0, t_s]
+ * spaced as result.h says, or the pass's own nodes before t_s and its
+ * end state (impact.h hist_nodes).  ANVIL_OK, ANVIL_ENOMEM, or ANVIL_ENUM
+ * (node history: no node before t_s). */
+int impact_resample(const struct pass *s, size_t nhist, struct anvil_history *h);
+int impact_node_history(const struct pass *s, struct anvil_history *h);
 /* The end between nodes n - 1 and n (alpha would be a_n <= 0) by the
  * parabola through alpha_H; s->ts, s->Vs (impulse: up to t_{n-1}). */
 void impact_finish(struct pass *s, const struct anvil_params *p, double a_n, double impulse);
