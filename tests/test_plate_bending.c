@@ -20,6 +20,7 @@
 #include <gsl/gsl_sf_expint.h>
 
 #include "field.h"
+#include "hertz_field.h"
 #include "plate_bending.h"
 #include "scene_run.h"
 #include "tap.h"
@@ -224,13 +225,176 @@ static void verdict(void)
 	anvil_solver_free(s);
 }
 
+/* The bending's fall with r (plate_bending.c): the closed forms against
+ * their defining integrals, M(0) - M(r) = int_0^r F/(2 pi rho) and the
+ * disc mean, by QUADPACK; the near face's stresses follow. */
+struct fall_ctx {
+	double b;
+};
+
+static double load_inside(double rho, double b) /* F/P, the Hertz patch */
+{
+	double u = rho * rho / (b * b);
+	return u < 1 ? 1 - pow(1 - u, 1.5) : 1;
+}
+
+static double delta_integrand(double rho, void *vp)
+{
+	const struct fall_ctx *c = vp;
+	return rho > 0 ? load_inside(rho, c->b) / (2 * M_PI * rho) : 0;
+}
+
+static double delta_num(double r, double b)
+{
+	struct fall_ctx c = { b };
+	gsl_function F = { delta_integrand, &c };
+	gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+	double pts[3] = { 0, fmin(r, b), r }, v = 0, e, v2 = 0;
+	gsl_integration_qag(&F, pts[0], pts[1], 1e-14, 1e-12, 200, GSL_INTEG_GAUSS41, ws, &v, &e);
+	if (r > b)
+		gsl_integration_qag(&F, pts[1], pts[2], 1e-14, 1e-12, 200, GSL_INTEG_GAUSS41, ws, &v2, &e);
+	gsl_integration_workspace_free(ws);
+	return v + v2;
+}
+
+struct mean_ctx {
+	double b;
+};
+
+static double mean_integrand(double s, void *vp)
+{
+	const struct mean_ctx *c = vp;
+	return delta_num(s, c->b) * s;
+}
+
+static void near_stress_fall(void)
+{
+	double nu = 0.3, h = 1, b = 0.4, P = 1, sb = 5;
+	const double rs[] = { 0.02, 0.2, 0.4, 0.9 };
+	double worst = 0;
+	for (size_t i = 0; i < sizeof rs / sizeof rs[0]; i++) {
+		double r = rs[i], srr, stt;
+		anvil_plate_bending_near_stress(sb, P, b, nu, h, r, 0, &srr, &stt);
+		/* by hand: Delta and E = disc mean of Delta less Delta (M = M0 - Delta) */
+		struct mean_ctx c = { b };
+		gsl_function F = { mean_integrand, &c };
+		gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+		double m, e, D = delta_num(r, b);
+		gsl_integration_qag(&F, 0, r, 1e-14, 1e-10, 200, GSL_INTEG_GAUSS41, ws, &m, &e);
+		gsl_integration_workspace_free(ws);
+		double E = D - 2 * m / (r * r), k = 6 / (h * h);
+		double want_rr = -(sb - k * 0.5 * ((1 + nu) * D + (1 - nu) * E) * P);
+		double want_tt = -(sb - k * 0.5 * ((1 + nu) * D - (1 - nu) * E) * P);
+		worst = fmax(worst, fmax(fabs(srr - want_rr), fabs(stt - want_tt)) / sb);
+	}
+	ok(worst < 1e-9, "the near face's bending at r = 0.05-2.25 b: the closed forms as their "
+	   "integrals to %.2g s_b", worst);
+	double r = 0.01, srr, stt, q0 = 3 * P / (2 * M_PI * b * b);
+	anvil_plate_bending_near_stress(sb, P, b, nu, h, r, 0, &srr, &stt);
+	is_rel(srr + sb, 6 * (3 + nu) * q0 * r * r / 16, 1e-3,
+	       "  near the centre M_r falls by (3 + nu) q0 r^2/16 (Timoshenko's uniform load)");
+	anvil_plate_bending_near_stress(sb, P, b, nu, h, 0, 0.25 * h, &srr, &stt);
+	is_rel(srr, -0.5 * sb, 1e-14, "  linear through the thickness: -s_b/2 at z = h/4");
+}
+
+/* The near face's peak (anvil_plate_bending_near) in units a = p0 = 1,
+ * the plate thick and its patch wide so the bending is -s_b in r and
+ * theta where the contact's field lives. */
+static void near_face(void)
+{
+	const double nu = 0.3, h = 1e3, b = 100, P = 2 * M_PI / 3, t = (1 - 2 * nu) / 3;
+	struct anvil_plate_near n;
+	anvil_plate_bending_near(1, 1, nu, h, P, b, 0, 0, &n);
+	is_rel(n.stress, 0.620041, 1e-6, "s_b = 0: Hertz's own peak, 0.620 p0");
+	is_abs(n.z, 0.480864, 1e-4, "  at z = %.5f a on the axis (r = %.2g a)", n.z, n.r);
+	anvil_plate_bending_near(1, 1, nu, h, P, b, 0, 1, &n);
+	/* to 1e-8: the plate's own fall at r = a, 1e-10 p0 here, is in it */
+	ok(fabs(n.stress - t) < 1e-8 * t && fabs(n.r - 1) < 1e-6 && n.z < 1e-6,
+	   "  brittle: (1 - 2 nu) p0/3 at r = a, z = 0");
+	anvil_plate_bending_near(1, 1, nu, h, P, b, 0.1, 1, &n);
+	ok(fabs(n.stress - (t - 0.1)) < 1e-6 && fabs(n.r - 1) < 1e-6 && n.z < 1e-6,
+	   "  and the bending relieves it: t - s_b = %.5f p0 (%.5f)", t - 0.1, n.stress);
+	anvil_plate_bending_near(1, 1e-9, nu, h, P * 1e-9, b, 1, 0, &n);
+	is_rel(n.stress, 1, 1e-6, "P -> 0: the bending alone, von Mises s_b (the far face's)");
+	anvil_plate_bending_near(1, 1, nu, h, P, b, 0.1, 0, &n);
+	ok(n.stress < 0.620041 && n.stress > 0.620041 - 0.1 && n.r < 1e-3,
+	   "s_b = 0.1 p0: on the axis the bending relieves Hertz's peak (%.5f p0)", n.stress);
+	/* s_b = 0.62 p0: at the edge sqrt(3 t^2 + s_b^2), 6.7 % above both; just
+	 * below it the sum peaks higher (verdict.c) */
+	double sb = 0.62;
+	anvil_plate_bending_near(1, 1, nu, h, P, b, sb, 0, &n);
+	struct anvil_hertz_stress hs;
+	anvil_hertz_stress(1, 1, nu, n.r, n.z, &hs);
+	double g = hs.rr + hs.tt - 2 * hs.zz, beta = -sb * (1 - 2 * n.z / h);
+	is_rel(n.stress, sqrt(hs.vm * hs.vm + beta * g + beta * beta), 1e-6,
+	       "s_b = 0.62 p0: the peak %.5f p0 is vm^2 = vm_H^2 + beta g + beta^2 by hand", n.stress);
+	ok(n.stress > 1.14 * fmax(0.620041, sb) && n.stress > sqrt(3 * t * t + sb * sb) &&
+		   fabs(n.r - 1.046) < 0.01 && fabs(n.z - 0.079) < 0.01,
+	   "  14 %% above both (%.4f), above the edge's sqrt(3 t^2 + s_b^2) = %.4f, at r = %.3f a, "
+	   "z = %.3f a", n.stress / fmax(0.620041, sb), sqrt(3 * t * t + sb * sb), n.r, n.z);
+}
+
+/* 1 kg at 3 m/s on h = 0.12 r0: the contact alone and the far face are
+ * both below the near face's sum, which the verdict judges on. */
+static void near_governs(void)
+{
+	struct anvil_scene sc;
+	struct anvil_plan pl;
+	struct anvil_err e = {0};
+	struct anvil_verdict v;
+	struct anvil_result r;
+	char line[ANVIL_VERDICT_TEXT_MAX];
+	anvil_scene_default(&sc);
+	anvil_scene_set(&sc, "layer.thickness", "0.12r0", NULL, 0, &e);
+	anvil_scene_set(&sc, "impactor.mass", "1kg", NULL, 0, &e);
+	anvil_scene_set(&sc, "impact.velocity", "3m/s", NULL, 0, &e);
+	anvil_scene_set(&sc, "solver.accuracy", "draft", NULL, 0, &e);
+	int st = scene_plan(&sc, &pl, &e);
+	struct anvil_solver *s = anvil_solver_alloc();
+	st = st ? st : anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, ANVIL_VERDICT_NHIST, &r, &e);
+	st = st < 0 ? st : anvil_verdict_at(&pl.pb, r.Pmax.val, r.tmax.val, &v);
+	anvil_verdict_bending(&pl.pb, &r.hist, &v);
+	ok(!st && v.bend_state == 1 && v.near > 1.05 * fmax(v.stress, v.bend),
+	   "h = 0.12 r0: the near face's sum %.4g GPa above the contact alone %.4g and the far "
+	   "face %.4g", v.near * 1e-9, v.stress * 1e-9, v.bend * 1e-9);
+	/* by hand at its instant and point: Hertz at P(t) plus the bending */
+	const struct anvil_params *p = &pl.pb.p;
+	double P = anvil_history_at(&r.hist, r.hist.P, v.near_t);
+	double a = sqrt(p->r0 * pow(P / p->K, 2.0 / 3.0)), p0 = 1.5 * P / (M_PI * a * a), srr, stt;
+	double b = anvil_plate_bending_patch(p, ANVIL_PLATE_PATCH_TRUE, 0, P), sb, err;
+	anvil_plate_bending_at(p, &r.hist, ANVIL_PLATE_PATCH_TRUE, 0, v.near_t, &sb, &err);
+	struct anvil_hertz_stress hs;
+	anvil_hertz_stress(a, p0, p->nu, v.near_r, v.near_z, &hs);
+	anvil_plate_bending_near_stress(sb, P, b, p->nu, p->h, v.near_r, v.near_z, &srr, &stt);
+	double x = hs.rr + srr - hs.tt - stt, y = hs.tt + stt - hs.zz, z = hs.zz - hs.rr - srr;
+	double vm = sqrt(0.5 * (x * x + y * y + z * z) + 3 * hs.rz * hs.rz);
+	is_rel(v.near, vm, 1e-9, "  by hand at t = %.4g us, r = %.3g a, z = %.3g a: %.4g GPa",
+	       v.near_t * 1e6, v.near_r / a, v.near_z / a, vm * 1e-9);
+	is_rel(sb, v.near_sb, 1e-12, "  with the far face's s_b at that instant, %.4g GPa (s_b/p0 = %.2f)",
+	       sb * 1e-9, sb / p0);
+	pl.pb.layer.yield = 0.5 * (v.near + fmax(v.stress, v.bend));
+	anvil_verdict_at(&pl.pb, r.Pmax.val, r.tmax.val, &v);
+	anvil_verdict_bending(&pl.pb, &r.hist, &v);
+	anvil_verdict_text(&v, line, sizeof line);
+	diag("%s", line);
+	ok(v.fate == ANVIL_HERTZ_YIELDS && strstr(line, "near face's contact edge") &&
+		   strstr(line, "with the plate's bending at the same instant; the contact alone") &&
+		   !strstr(line, "judged on it"),
+	   "  Y between: yields on the sum, and the line says where");
+	anvil_result_free(&r);
+	anvil_solver_free(s);
+}
+
 int main(void)
 {
 	gsl_set_error_handler_off();
-	plan(14);
+	plan(29);
 	step_load();
 	against_field("h = 0.5 r0, 20 g at 10 m/s", "0.5r0", "20g");
 	against_field("h = 0.3 r0, 50 g at 10 m/s", "0.3r0", "50g");
 	verdict();
+	near_stress_fall();
+	near_face();
+	near_governs();
 	return done_testing();
 }

@@ -776,7 +776,7 @@ static void test_verdict_bending(void)
 	diag("%s", lay);
 	ok(fails == 1 && !strncmp(lay, "layer yields (plate bending): ", 30) &&
 		   strstr(lay, "at the far face, Y = ") &&
-		   strstr(lay, "; under the contact (quasi-static Hertz) ") && m->verdict.stress < m->verdict.limit,
+		   strstr(lay, "; under the contact (Hertz + plate bending) ") && m->verdict.stress < m->verdict.limit,
 	   "yields by the bending: contact %.3g MPa, bending %.3g MPa, Y = %.3g MPa",
 	   m->verdict.stress * 1e-6, m->verdict.bend * 1e-6, m->verdict.limit * 1e-6);
 	/* the CLI's verdict of the same plan (its row run with 400 samples, the
@@ -792,8 +792,9 @@ static void test_verdict_bending(void)
 	   "anvil run's rule: long contact (%.2g times 2h/c1), same fate", v.qs_ratio);
 	is_rel(m->verdict.bend, v.bend, 1e-2, "  the same bending stress to 1 %% (%.4g MPa)",
 	       v.bend * 1e-6);
-	ok(strstr(cli, "quasi-static Hertz at the layer's computed P_max: the contact lasts") &&
-		   strstr(lay, "; at the layer's computed P_max: the contact lasts"),
+	ok(strstr(cli, "quasi-static Hertz with the plate's bending at the same instant; the contact alone") &&
+		   strstr(cli, "at the layer's computed P_max: the contact lasts") &&
+		   strstr(lay, "us, at the layer's computed P_max: the contact lasts"),
 	   "  both say which field, and why");
 	anvil_verdict_text_screen(&v, cli, sizeof cli);
 	ok(!strcmp(words(lay), words(cli)), "  the same words (numbers aside) as the CLI's verdict on a screen");

@@ -1,7 +1,11 @@
 /* verdict.c: the one verdict on the layer (verdict.h). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 
 #include "hertz.h"
 #include "plate_bending.h"
@@ -20,12 +24,13 @@ static void criterion(const struct anvil_problem *pb, struct anvil_verdict *v)
 	v->known = v->limit > 0;
 }
 
-/* The stress the fate is judged on: the contact's, or the plate's bending
- * stress where it was checked and is larger (at the far face it is both
- * the tension and the von Mises stress). */
+/* The stress the fate is judged on: the contact's; or, where the plate's
+ * bending was checked, the larger of the far face's (there both the
+ * tension and the von Mises stress) and the near face's, the contact's
+ * field with the bending added (verdict.h). */
 static double governing(const struct anvil_verdict *v)
 {
-	return v->bend_state == 1 && v->bend > v->stress ? v->bend : v->stress;
+	return v->bend_state == 1 ? fmax(v->bend, v->near) : v->stress;
 }
 
 static void judge(struct anvil_verdict *v)
@@ -157,6 +162,183 @@ int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
 	return st ? st : impactor(pb, v);
 }
 
+/* ---- the near face: the contact and the bending at the same instant ----
+ *
+ * The contact's quasi-static Hertz field at P(t) and the plate's bending at
+ * the same t (its centre's stress s_b(t) from the history, its fall with r
+ * from Kirchhoff's equilibrium: plate_bending.c) add at the near face,
+ * which the bending compresses in r and theta by about s_b.  Adding an
+ * equi-biaxial beta (in r, theta) to any stress,
+ *   vm^2 = vm_H^2 + beta (s_rr + s_tt - 2 s_zz) + beta^2,
+ * so where the contact's own field squeezes hardest in z (s_zz the most
+ * compressive: its whole axis, and the surface inside the contact, where
+ * s_rr + s_tt - 2 s_zz = (1 - 2 nu) p) the bending's compression beta =
+ * -s_b relieves it: on the axis vm = |vm_H - s_b (1 - 2 z/h)|, below both
+ * vm_H and s_b.  At the contact's edge (r = a, z = 0) Hertz's s_rr = -s_tt
+ * = t = (1 - 2 nu) p0/3, s_zz = 0, so there the sum is
+ *   vm = sqrt(3 t^2 + s_b^2),
+ * above both (6.7 % above the larger at most, nu = 0.3, s_b = 0.62 p0),
+ * and the edge's tension is t - s_b, the bending relieving it.  Just
+ * below the surface outside the edge Hertz's s_rr + s_tt is compressive
+ * and s_zz small, so there the term in beta adds: the sum's peak, 0.709
+ * p0 at r = 1.046 a, z = 0.079 a for s_b = 0.62 p0, is 14.3 % above the
+ * larger (nu = 0.3; 25 % at nu = 0), which neither check alone sees.  So
+ * the sum is searched over r <= 3 a, z <= min(3 a, h/2)
+ * (anvil_plate_bending_near); the far half, where the bending is tension,
+ * is the far face's (its estimate, measured against the transform field
+ * there, holds the load's spreading through the thickness: adding the
+ * half-space's own field there would count it twice).  Limits: s_b -> 0
+ * gives Hertz's own stress; P -> 0 the near face's bending alone, von
+ * Mises s_b, the far face's.  The superposition checked against the
+ * transform field (`anvil field`, the r0 patch, 100 g at 3 m/s on h = 0.5
+ * r0): its near face's s_rr less Hertz's half-space s_rr at the centre
+ * was -0.96 to -1.00 times its far face's from 137 us on (-0.89 at
+ * 12 us, the bending still forming), and half that at z = h/4, linear.
+ *
+ * In time: the largest sum over the contact, at NEAR_NSCAN instants
+ * log-spaced over it, NEAR_NSCAN more between a quarter of the earlier and
+ * twice the later of the two peaks (P's and s_b's), both peaks themselves,
+ * then Brent's maximiser (GSL) between the best one's neighbours. */
+#define NEAR_NSCAN 32
+
+/* How much less the near face's compression can be than the far face's
+ * tension s_b, Pa: the centre moment's excess under Westergaard's patch b
+ * (which the far face's estimate takes) over the half-space's own load at
+ * depth h (Boussinesq's, P (1 - (1 + rho^2/h^2)^(-3/2)) inside rho), the
+ * near face's share once the half-space's field carries the contact: by
+ * the fall's rule (M(0) - M(r) = int F/(2 pi rho)) the two centres differ
+ * by P/(2 pi) (1/3 + ln(h/b)), so s_b by 3 (1 + nu)/(2 pi) (1/3 +
+ * ln(h/b)) P/h^2; against the transform field (the r0 patch c, near
+ * minus Hertz's against far) the shortfall was 0.58 P/h^2 at c = 0.25 h
+ * (this bound 0.82) and 0.074 at c = 2 h (this bound 0, whence the floor
+ * NEAR_SHORT_MIN).  The verdict takes the worse of the two ends. */
+#define NEAR_SHORT_MIN 0.1
+static double near_shortfall(const struct anvil_params *p, double P, double b)
+{
+	double k = 3 * (1 + p->nu) / (2 * M_PI) * (1.0 / 3 + log(p->h / b));
+	return fmax(k, NEAR_SHORT_MIN) * P / (p->h * p->h);
+}
+
+struct near_time {
+	const struct anvil_problem *pb;
+	const struct anvil_history *h;
+	struct anvil_plate_bender *bender;
+	int brittle, status;
+};
+
+/* The near face's largest stress at t: *n, and the far face's s_b then. */
+static int near_at(struct near_time *c, double t, struct anvil_plate_near *n, double *sb)
+{
+	const struct anvil_params *p = &c->pb->p;
+	double P = anvil_history_at(c->h, c->h->P, t), e;
+	int st = anvil_plate_bender_at(c->bender, t, sb, &e);
+	if (st)
+		return st;
+	if (!(P > 0)) { /* no contact: the bending's alone, uniform in r near the centre */
+		*n = (struct anvil_plate_near){ c->brittle ? 0 : fabs(*sb), 0, 0 };
+		return ANVIL_OK;
+	}
+	double a = sqrt(p->r0 * pow(P / p->K, 2.0 / 3.0)), p0 = 1.5 * P / (M_PI * a * a);
+	double b = anvil_plate_bending_patch(p, ANVIL_PLATE_PATCH_TRUE, 0, P);
+	double lo = fmax(0, *sb - near_shortfall(p, P, b));
+	struct anvil_plate_near n2;
+	/* the sum is convex in the compression: its worse end is the bound */
+	st = anvil_plate_bending_near(a, p0, p->nu, p->h, P, b, *sb, c->brittle, n);
+	st = st ? st : anvil_plate_bending_near(a, p0, p->nu, p->h, P, b, lo, c->brittle, &n2);
+	if (!st && n2.stress > n->stress)
+		*n = n2;
+	return st;
+}
+
+static double minus_near(double t, void *vp)
+{
+	struct near_time *c = vp;
+	struct anvil_plate_near n;
+	double sb;
+	int st = near_at(c, t, &n, &sb);
+	if (st)
+		c->status = st;
+	return st ? 0 : -n.stress;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
+}
+
+/* The scan's instants, sorted, in t[] (2 NEAR_NSCAN + 2 of them). */
+static size_t near_instants(const struct anvil_history *h, double t_pk, double t_bend, double *t)
+{
+	double te = h->t[h->n - 1], t0 = 1e-3 * te, lo = 0.25 * fmin(t_pk, t_bend),
+	       hi = fmin(te, 2 * fmax(t_pk, t_bend));
+	size_t n = 0;
+	for (int i = 0; i < NEAR_NSCAN; i++) {
+		t[n++] = t0 * pow(te / t0, i / (NEAR_NSCAN - 1.0));
+		t[n++] = lo + (hi - lo) * i / (NEAR_NSCAN - 1.0);
+	}
+	t[n++] = t_pk;
+	t[n++] = t_bend;
+	qsort(t, n, sizeof *t, cmp_double);
+	return n;
+}
+
+/* Brent between ts[j - 1] and ts[j + 1] around the scan's best j. */
+static void near_refine(struct near_time *c, const double *ts, const double *sv, size_t n,
+			size_t j, double *t)
+{
+	if (j == 0 || j + 1 >= n || !(sv[j] >= sv[j - 1] && sv[j] >= sv[j + 1]) ||
+	    !(ts[j - 1] < ts[j] && ts[j] < ts[j + 1]))
+		return;
+	gsl_function F = { minus_near, c };
+	gsl_min_fminimizer *m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+	if (!m)
+		return;
+	int gs = gsl_min_fminimizer_set_with_values(m, &F, ts[j], -sv[j], ts[j - 1], -sv[j - 1],
+						    ts[j + 1], -sv[j + 1]);
+	for (int it = 0; !gs && it < 60; it++) {
+		gs = gsl_min_fminimizer_iterate(m);
+		double lo = gsl_min_fminimizer_x_lower(m), hi = gsl_min_fminimizer_x_upper(m);
+		if (gs || gsl_min_test_interval(lo, hi, 0, 1e-4) == GSL_SUCCESS)
+			break;
+	}
+	if (!gs && !c->status && -gsl_min_fminimizer_f_minimum(m) > sv[j])
+		*t = gsl_min_fminimizer_x_minimum(m);
+	gsl_min_fminimizer_free(m);
+}
+
+static int near_face(const struct anvil_problem *pb, const struct anvil_history *h,
+		     struct anvil_verdict *v, struct anvil_err *err)
+{
+	struct near_time c = { pb, h, NULL, v->brittle, ANVIL_OK };
+	c.bender = anvil_plate_bender_new(&pb->p, h, ANVIL_PLATE_PATCH_TRUE, 0, err);
+	if (!c.bender)
+		return err->status ? err->status : ANVIL_ENOMEM;
+	double ts[2 * NEAR_NSCAN + 2], sv[2 * NEAR_NSCAN + 2], sb, t;
+	struct anvil_plate_near n;
+	size_t nt = near_instants(h, v->t, v->bend_t, ts), best = 0;
+	int st = ANVIL_OK;
+	for (size_t i = 0; i < nt && !st; i++) {
+		st = near_at(&c, ts[i], &n, &sb);
+		sv[i] = n.stress;
+		if (!st && sv[i] > sv[best])
+			best = i;
+	}
+	t = ts[best];
+	if (!st)
+		near_refine(&c, ts, sv, nt, best, &t);
+	st = st ? st : c.status ? c.status : near_at(&c, t, &n, &sb);
+	anvil_plate_bender_free(c.bender);
+	if (st)
+		return anvil_err_set(err, st, "the near face's stress under the contact and the bending failed");
+	v->near = n.stress;
+	v->near_r = n.r;
+	v->near_z = n.z;
+	v->near_t = t;
+	v->near_sb = sb;
+	return ANVIL_OK;
+}
+
 void anvil_verdict_bending(const struct anvil_problem *pb, const struct anvil_history *h,
 			   struct anvil_verdict *v)
 {
@@ -173,8 +355,13 @@ void anvil_verdict_bending(const struct anvil_problem *pb, const struct anvil_hi
 	v->bend_t = b.t;
 	v->bend_tol = b.tol;
 	snprintf(v->bend_why, sizeof v->bend_why, "%s", b.why);
-	if (b.tol > 0)
+	if (b.tol > 0) {
 		v->bend_state = 1;
+		if (near_face(pb, h, v, &e)) {
+			v->bend_state = -1;
+			snprintf(v->bend_why, sizeof v->bend_why, "%.150s", e.msg);
+		}
+	}
 	judge(v);
 }
 
@@ -192,6 +379,13 @@ static void stress_text(double s, char *buf, size_t n)
 		snprintf(buf, n, "%.3g MPa", s * 1e-6);
 }
 
+/* With the bending checked, the near face's sum (near_face) stands for
+ * the contact's own stress: the one shown under the contact. */
+static int near_shown(const struct anvil_verdict *v)
+{
+	return v->bend_state == 1;
+}
+
 /* The bending clause (a long contact's, the TUI's on any plate): the
  * plate's bending stress and its accuracy, or why it was not checked. */
 static void bending_text(const struct anvil_verdict *v, char *buf, size_t n)
@@ -205,7 +399,7 @@ static void bending_text(const struct anvil_verdict *v, char *buf, size_t n)
 	stress_text(v->bend, s, sizeof s);
 	snprintf(buf, n, "; bending stress at the far face %s at t = %.3g us (Kirchhoff plate, "
 		 "within %.0f %%)%s", s, v->bend_t * 1e6, 100 * v->bend_tol,
-		 v->known && v->bend > v->stress ? ", the larger: judged on it" : "");
+		 v->known && v->bend > v->near ? ", the larger: judged on it" : "");
 }
 
 static const char *fate_word(enum anvil_hertz_fate fate, int known)
@@ -216,16 +410,44 @@ static const char *fate_word(enum anvil_hertz_fate fate, int known)
 					    : "stays elastic";
 }
 
-/* Where the layer's stress peaks. */
+/* Where the layer's stress under the contact peaks: the contact's own, or
+ * with the bending the near face's sum. */
 static void layer_where(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	if (v->brittle)
-		snprintf(buf, n, "at the contact edge r = a = %.3g mm", v->a * 1e3);
-	else if (v->r <= 0.5 * v->a)
-		snprintf(buf, n, "at %.2g a = %.3g mm below the contact",
-			 v->a > 0 ? v->z / v->a : 0, v->z * 1e3);
+	double a = v->a, r = v->r, z = v->z;
+	if (near_shown(v)) {
+		/* the sum's contact is a(near_t), not a(t_max): its own a */
+		r = v->near_r;
+		z = v->near_z;
+		if (z <= 0.02 * a && fabs(r - a) <= 0.05 * a) {
+			snprintf(buf, n, "at the near face's contact edge r = %.3g mm", r * 1e3);
+			return;
+		}
+		if (z <= 0.02 * a) {
+			snprintf(buf, n, "on the near face at r = %.3g mm", r * 1e3);
+			return;
+		}
+		if (fabs(r - a) <= 0.25 * a && z <= 0.25 * a) {
+			snprintf(buf, n, "just below the near face's contact edge, r = %.3g mm, "
+				 "z = %.3g mm", r * 1e3, z * 1e3);
+			return;
+		}
+	} else if (v->brittle) {
+		snprintf(buf, n, "at the contact edge r = a = %.3g mm", a * 1e3);
+		return;
+	}
+	if (r <= 0.5 * a)
+		snprintf(buf, n, "at %.2g a = %.3g mm below the contact", a > 0 ? z / a : 0, z * 1e3);
 	else
-		snprintf(buf, n, "at r = %.3g mm, z = %.3g mm", v->r * 1e3, v->z * 1e3);
+		snprintf(buf, n, "at r = %.3g mm, z = %.3g mm", r * 1e3, z * 1e3);
+}
+
+/* The criterion's words for the stress under the contact. */
+static const char *layer_what(const struct anvil_verdict *v)
+{
+	if (!v->brittle)
+		return "peak von Mises";
+	return near_shown(v) ? "largest tension" : "edge tension (1-2nu) p0/3";
 }
 
 /* Which force the quasi-static Hertz field is at ("" when the row's
@@ -239,56 +461,77 @@ static void qs_force(const struct anvil_verdict *v, char *buf, size_t n)
 		snprintf(buf, n, "%s", v->at_row ? " at the layer's computed P_max" : "");
 }
 
+/* With the bending: the contact's own stress, which it no longer is, after
+ * the field's name ("" without). */
+static void alone_text(const struct anvil_verdict *v, const char *f, char *buf, size_t n)
+{
+	char s[32];
+	if (!near_shown(v)) {
+		snprintf(buf, n, "%s", f);
+		return;
+	}
+	stress_text(v->stress, s, sizeof s);
+	snprintf(buf, n, "; the contact alone %s, t = %.3g us,%s", s, v->t * 1e6,
+		 f[0] ? f : " at its peak");
+}
+
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	char s[32], l[32], where[96], f[96], qs[160] = "";
-	stress_text(v->stress, s, sizeof s);
+	char s[32], l[32], where[96], f[96], al[160], qs[320] = "";
+	int ns = near_shown(v);
+	stress_text(ns ? v->near : v->stress, s, sizeof s);
 	stress_text(v->limit, l, sizeof l);
 	layer_where(v, where, sizeof where);
 	qs_force(v, f, sizeof f);
+	alone_text(v, f, al, sizeof al);
 	if (!v->dynamic)
-		snprintf(qs, sizeof qs, " (quasi-static Hertz%s)", f);
+		snprintf(qs, sizeof qs, " (quasi-static Hertz%s%s)",
+			 ns ? " with the plate's bending at the same instant" : "", al);
 	char bend[224] = "";
 	if (v->bend_state != 0) /* tried: a long contact's (yield.c) or the TUI's */
 		bending_text(v, bend, sizeof bend);
 	snprintf(buf, n, "the %s layer %s: %s %s %s at t = %.3g us, %s%s%s%s%s", v->material,
-		 fate_word(v->fate, v->known),
-		 v->brittle ? "edge tension (1-2nu) p0/3" : "peak von Mises", s, where,
-		 v->t * 1e6, v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown", qs,
+		 fate_word(v->fate, v->known), layer_what(v), s, where,
+		 (ns ? v->near_t : v->t) * 1e6, v->brittle ? "tensile strength " : "Y = ",
+		 v->known ? l : "unknown", qs,
 		 !v->known ? (v->brittle ? ": set layer.tensile" : ": set layer.yield") : "", bend);
 }
 
 void anvil_verdict_text_screen(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	char s[32], l[32], where[96], f[96] = "";
-	stress_text(v->stress, s, sizeof s);
+	char s[32], l[32], where[96], f[96] = "", al[160] = "";
+	int ns = near_shown(v);
+	double t = ns ? v->near_t : v->t;
+	const char *field = v->dynamic ? "the dynamic field"
+			    : ns       ? "Hertz + plate bending"
+				       : "quasi-static Hertz";
+	stress_text(ns ? v->near : v->stress, s, sizeof s);
 	stress_text(v->limit, l, sizeof l);
 	layer_where(v, where, sizeof where);
 	if (!v->dynamic)
 		qs_force(v, f, sizeof f);
+	alone_text(v, f, al, sizeof al);
+	const char *what = v->brittle ? (ns ? "largest tension" : "edge tension (1-2nu) p0/3")
+				      : "von Mises";
 	char bend[224] = "";
-	if (v->bend_state == 1 && v->known && v->bend > v->stress) {
+	if (v->bend_state == 1 && v->known && v->bend > v->near) {
 		/* judged on the bending: it leads, as a screen line is cut */
 		char b[32];
 		stress_text(v->bend, b, sizeof b);
 		snprintf(buf, n, "layer %s (plate bending): %s at the far face, %s%s, t = %.3g us "
 			 "(Kirchhoff plate, within %.0f %%); under the contact (%s) %s %s %s, t = %.3g us%s%s",
 			 fate_word(v->fate, v->known), b, v->brittle ? "tensile strength " : "Y = ", l,
-			 v->bend_t * 1e6, 100 * v->bend_tol,
-			 v->dynamic ? "the dynamic field" : "quasi-static Hertz", s,
-			 v->brittle ? "edge tension (1-2nu) p0/3" : "von Mises", where, v->t * 1e6,
-			 f[0] ? ";" : "", f);
+			 v->bend_t * 1e6, 100 * v->bend_tol, field, s, what, where, t * 1e6,
+			 al[0] && al[0] != ';' ? ";" : "", al);
 		return;
 	}
 	if (v->bend_state != 0)
 		bending_text(v, bend, sizeof bend);
 	snprintf(buf, n, "layer %s (%s): %s %s, %s%s%s, %s, t = %.3g us%s%s%s",
-		 fate_word(v->fate, v->known),
-		 v->dynamic ? "the dynamic field" : "quasi-static Hertz", s,
-		 v->brittle ? "edge tension (1-2nu) p0/3" : "von Mises",
+		 fate_word(v->fate, v->known), field, s, what,
 		 v->brittle ? "tensile strength " : "Y = ", v->known ? l : "unknown",
 		 !v->known ? (v->brittle ? " (set layer.tensile)" : " (set layer.yield)") : "",
-		 where, v->t * 1e6, f[0] ? ";" : "", f, bend);
+		 where, t * 1e6, al[0] && al[0] != ';' ? ";" : "", al, bend);
 }
 
 void anvil_verdict_impactor_text(const struct anvil_verdict *v, char *buf, size_t n)

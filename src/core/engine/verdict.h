@@ -71,6 +71,15 @@ struct anvil_verdict {
 	int bend_state;
 	double bend, bend_err, bend_t, bend_tol; /* Pa, Pa, s, relative */
 	char bend_why[160];
+	/* With the bending checked (bend_state 1): the near face, where the
+	 * contact's field and the bending's compression add
+	 * (anvil_plate_bending_near), at the instant of their largest sum
+	 * (each at that same instant): the von Mises stress (brittle: the
+	 * largest principal tension, which the bending relieves) and where.
+	 * The fate is then judged on the larger of near and bend: the near
+	 * face's is the contact's own field with the plate's stresses added,
+	 * so it stands for stress (which stays the contact's alone, at P_max). */
+	double near, near_r, near_z, near_t, near_sb; /* Pa, m, m, s, the far face's Pa then */
 	struct anvil_verdict_impactor imp; /* the impactor under the same (a, p0) */
 };
 

@@ -9,7 +9,9 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_interp.h>
 #include <gsl/gsl_min.h>
+#include <gsl/gsl_multimin.h>
 
+#include "hertz_field.h"
 #include "plate_bending.h"
 
 #define QAG_LIMIT 1000
@@ -334,4 +336,199 @@ int anvil_plate_bending_peak(const struct anvil_params *p, const struct anvil_hi
 done:
 	eval_free(&x);
 	return st;
+}
+
+struct anvil_plate_bender {
+	struct eval x;
+};
+
+struct anvil_plate_bender *anvil_plate_bender_new(const struct anvil_params *p,
+						  const struct anvil_history *hist, unsigned patch,
+						  double c, struct anvil_err *err)
+{
+	int st = check(p, hist, patch, c);
+	if (st) {
+		anvil_err_set(err, st, "plate bending: needs a finite plate and a force history");
+		return NULL;
+	}
+	struct anvil_plate_bender *pb = malloc(sizeof *pb);
+	if (!pb) {
+		anvil_err_set(err, ANVIL_ENOMEM, "plate bending: %s", anvil_strerror(ANVIL_ENOMEM));
+		return NULL;
+	}
+	st = eval_init(&pb->x, p, hist, patch, c);
+	if (st) {
+		anvil_err_set(err, st, "plate bending: %s", anvil_strerror(st));
+		anvil_plate_bender_free(pb);
+		return NULL;
+	}
+	return pb;
+}
+
+int anvil_plate_bender_at(struct anvil_plate_bender *pb, double t, double *sigma, double *err)
+{
+	pb->x.b.t = t;
+	return sigma_at(&pb->x.b, pb->x.ws, sigma, err);
+}
+
+void anvil_plate_bender_free(struct anvil_plate_bender *pb)
+{
+	if (!pb)
+		return;
+	eval_free(&pb->x);
+	free(pb);
+}
+
+double anvil_plate_bending_patch(const struct anvil_params *p, unsigned patch, double c,
+				 double P)
+{
+	struct bend b = { .p = p, .patch = patch, .c = c };
+	return radius(&b, P);
+}
+
+/* ---- the near face: the contact's field and the bending's together ----
+ *
+ * The bending's fall from the centre.  Kirchhoff's axisymmetric plate: with
+ * M = (M_r + M_t)/(1 + nu) = -D lap w, D lap^2 w = q gives lap M = -q, so
+ * r M' = -F(r)/(2 pi), F(r) the net load inside r; then
+ *   M(0) - M(r) = int_0^r F(rho)/(2 pi rho) drho = Delta(r),
+ *   M_r - M_t = -(1 - nu) (Mbar(r) - M(r)) = -(1 - nu) E(r),
+ * Mbar the mean of M over the disc r (from w_r/r - w_rr = (M - Mbar)/D), so
+ *   M_r(r) = M_r(0) - [(1 + nu) Delta + (1 - nu) E] / 2,
+ *   M_t(r) = M_r(0) - [(1 + nu) Delta - (1 - nu) E] / 2:
+ * the fall is the load's inside r alone, whatever the plate does further
+ * out (its size, its dynamics).  F is the patch's (Hertz-shaped, radius b,
+ * Westergaard's as the centre's moment takes it), the plate's inertia
+ * inside r neglected: over r <= 3 a it is rho h w_tt pi r^2, against P a
+ * fraction (r / the bending's spread)^2, below 1e-4 on the plates where
+ * the centre's estimate holds.  With u = r^2/b^2 and F/P = 1 - (1 - u)^(3/2)
+ * (u < 1), 1 beyond:
+ *   Delta = P/(4 pi) I(u),  I(u) = int_0^u F/(P x) dx
+ *         = 8/3 - 2 ln 2 - (2 s^3/3 + 2 s - 2 ln(1 + s)), s = sqrt(1 - u),
+ *         = I(1) + ln u beyond;
+ *   E = P/(4 pi) (I(u) - J(u)/u), J = int_0^u I, so
+ *   I - J/u = 1 - (2/5) (1 - s^5)/u  (u <= 1),
+ *   J(u) = J(1) + I(1)(u - 1) + u ln u - u + 1 beyond, J(1) = I(1) - 3/5.
+ * Near the centre the fall is (3 + nu) q0 r^2/16 in M_r and (1 + 3 nu)
+ * q0 r^2/16 in M_t, q0 = 3P/(2 pi b^2) (a uniform load's with its central
+ * intensity, Timoshenko sec. 16).  The far face's stress s_b = 6 M_r(0)/h^2
+ * sets M_r(0); through the thickness the bending's stress is linear,
+ * -6 M/h^2 (1 - 2 z/h). */
+static double fall_I(double u)
+{
+	if (u < 1e-3) /* the closed form cancels: its series, next term u^4/128 */
+		return u * (1.5 - u * (3.0 / 16 + u / 48));
+	if (u > 1)
+		return 8.0 / 3 - 2 * M_LN2 + log(u);
+	double s = sqrt(1 - u);
+	return 8.0 / 3 - 2 * M_LN2 - (2 * s * s * s / 3 + 2 * s - 2 * log1p(s));
+}
+
+static double fall_E(double u)
+{
+	if (u < 1e-3)
+		return u * (0.75 - u / 8);
+	if (u > 1) {
+		double I1 = fall_I(1), J = I1 - 0.6 + I1 * (u - 1) + u * log(u) - u + 1;
+		return fall_I(u) - J / u;
+	}
+	return 1 - 0.4 * (1 - pow(1 - u, 2.5)) / u;
+}
+
+void anvil_plate_bending_near_stress(double sb, double P, double b, double nu, double h,
+				     double r, double z, double *srr, double *stt)
+{
+	double u = b > 0 ? r * r / (b * b) : 0, k = 6 / (h * h) * P / (4 * M_PI);
+	double D = (1 + nu) * fall_I(u), E = (1 - nu) * fall_E(u), f = 1 - 2 * z / h;
+	*srr = -f * (sb - 0.5 * k * (D + E));
+	*stt = -f * (sb - 0.5 * k * (D - E));
+}
+
+struct near_ctx {
+	double a, p0, nu, h, P, b, sb, ymax;
+	int brittle;
+};
+
+/* The largest principal stress of the (r, z) block with the hoop stress. */
+static double principal(double rr, double tt, double zz, double rz)
+{
+	double m = 0.5 * (rr + zz), d = sqrt(0.25 * (rr - zz) * (rr - zz) + rz * rz);
+	return fmax(m + d, tt);
+}
+
+/* The combined stress at x = r/a, y = z/a (clamped to the region). */
+static double near_at(const struct near_ctx *c, double x, double y)
+{
+	struct anvil_hertz_stress s;
+	x = fmin(3.0, fabs(x));
+	y = fmin(c->ymax, fabs(y));
+	anvil_hertz_stress(c->a, c->p0, c->nu, x * c->a, y * c->a, &s);
+	double br, bt;
+	anvil_plate_bending_near_stress(c->sb, c->P, c->b, c->nu, c->h, x * c->a, y * c->a, &br,
+					&bt);
+	s.rr += br;
+	s.tt += bt;
+	if (c->brittle)
+		return principal(s.rr, s.tt, s.zz, s.rz);
+	double p = s.rr - s.tt, q = s.tt - s.zz, w = s.zz - s.rr;
+	return sqrt(0.5 * (p * p + q * q + w * w) + 3 * s.rz * s.rz);
+}
+
+static double minus_near(const gsl_vector *v, void *vp)
+{
+	return -near_at(vp, gsl_vector_get(v, 0), gsl_vector_get(v, 1));
+}
+
+/* Nelder-Mead from the grid's best (x, y), step one grid cell. */
+static void near_refine(const struct near_ctx *c, double *x, double *y, double *val)
+{
+	gsl_multimin_function F = { minus_near, 2, (void *)c };
+	gsl_multimin_fminimizer *m = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2);
+	gsl_vector *v = gsl_vector_alloc(2), *step = gsl_vector_alloc(2);
+	if (m && v && step) {
+		gsl_vector_set(v, 0, *x);
+		gsl_vector_set(v, 1, *y);
+		gsl_vector_set_all(step, 0.05);
+		int gs = gsl_multimin_fminimizer_set(m, &F, v, step);
+		for (int it = 0; !gs && it < 200; it++) {
+			gs = gsl_multimin_fminimizer_iterate(m);
+			if (gs || gsl_multimin_test_size(gsl_multimin_fminimizer_size(m), 1e-7) == GSL_SUCCESS)
+				break;
+		}
+		if (-m->fval > *val) {
+			*x = fmin(3.0, fabs(gsl_vector_get(m->x, 0)));
+			*y = fmin(c->ymax, fabs(gsl_vector_get(m->x, 1)));
+			*val = -m->fval;
+		}
+	}
+	gsl_multimin_fminimizer_free(m);
+	gsl_vector_free(v);
+	gsl_vector_free(step);
+}
+
+int anvil_plate_bending_near(double a, double p0, double nu, double h, double P, double b,
+			     double sb, int brittle, struct anvil_plate_near *n)
+{
+	if (!(a > 0 && p0 > 0 && h > 0 && isfinite(a) && isfinite(h) && nu >= 0 && nu < 0.5 &&
+	      isfinite(sb) && n))
+		return ANVIL_EINVAL;
+	struct near_ctx c = { a, p0, nu, h, P, b, sb, fmin(3.0, 0.5 * h / a), brittle };
+	double bx = 0, by = 0, best = -INFINITY;
+	int ny = (int)ceil(20 * c.ymax);
+	for (int i = 0; i <= 60; i++)
+		for (int j = 0; j <= ny; j++) {
+			double x = i / 20.0, y = fmin(c.ymax, j / 20.0), s = near_at(&c, x, y);
+			if (s > best) {
+				best = s;
+				bx = x;
+				by = y;
+			}
+		}
+	/* the grid's best kept if the simplex finds no better (the brittle
+	 * peak often sits on the kink at r = a, a grid point) */
+	near_refine(&c, &bx, &by, &best);
+	n->stress = best;
+	n->r = bx * a;
+	n->z = by * a;
+	return ANVIL_OK;
 }

@@ -101,4 +101,43 @@ int anvil_plate_bending_peak(const struct anvil_params *p, const struct anvil_hi
 			     unsigned patch, double c, double t_end, struct anvil_plate_bending *b,
 			     struct anvil_err *err);
 
+/* One plate under one history, for many instants: what
+ * anvil_plate_bending_at computes, its tables made once.  NULL on failure
+ * (err says why). */
+struct anvil_plate_bender;
+struct anvil_plate_bender *anvil_plate_bender_new(const struct anvil_params *p,
+						  const struct anvil_history *hist, unsigned patch,
+						  double c, struct anvil_err *err);
+int anvil_plate_bender_at(struct anvil_plate_bender *pb, double t, double *sigma, double *err);
+void anvil_plate_bender_free(struct anvil_plate_bender *pb);
+
+/* The patch radius the plate takes under force P (N), m: c, or the Hertz
+ * contact's, Westergaard's radius of it with that bit. */
+double anvil_plate_bending_patch(const struct anvil_params *p, unsigned patch, double c,
+				 double P);
+
+/* The near face under the contact: the Hertz field of (a, p0, nu) plus the
+ * plate's bending at the same instant, the centre's far-face stress s_b
+ * (tension) from the history, its radial fall from Kirchhoff's
+ * equilibrium under the patch of radius b carrying P (plate_bending.c
+ * derives both).  Bending alone at the near face's centre is -s_b in r and
+ * theta, linear through the thickness to +s_b at the far face. */
+struct anvil_plate_near {
+	double stress; /* the largest von Mises stress, or (brittle) principal tension, Pa */
+	double r, z;   /* where, m (z from the loaded face) */
+};
+
+/* The plate's own stresses at (r, z) near the centre, z < h/2: sigma_rr
+ * and sigma_tt, Pa (compression negative). */
+void anvil_plate_bending_near_stress(double sb, double P, double b, double nu, double h,
+				     double r, double z, double *srr, double *stt);
+
+/* The largest of the combined stress over r <= 3 a, z <= min(3 a, h/2)
+ * (a grid of a/20, then Nelder-Mead, GSL), von Mises (brittle 0) or the
+ * largest principal stress (brittle 1).  s_b = 0 gives Hertz's own
+ * (0.620 p0 at 0.481 a for nu = 0.3; brittle (1 - 2nu) p0/3 at r = a).
+ * ANVIL_OK, ANVIL_EINVAL (a, p0, h not > 0, nu outside [0, 0.5)). */
+int anvil_plate_bending_near(double a, double p0, double nu, double h, double P, double b,
+			     double sb, int brittle, struct anvil_plate_near *n);
+
 #endif
