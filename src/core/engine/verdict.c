@@ -214,7 +214,8 @@ int anvil_verdict_make(const struct anvil_problem *pb, struct anvil_field *f,
  * against its far face's) the shortfall was steady in time at 0.627,
  * 0.584, 0.466 and 0.074 P/h^2 for c = 0.1, 0.25, 0.5 and 2 h (this bound
  * 0.89, 0.82, 0.63 and 0, whence the floor NEAR_SHORT_MIN).  The verdict
- * takes the worse of the two ends. */
+ * takes the worse of the two ends; before the estimate's range in time
+ * (ANVIL_PLATE_BENDING_T_MIN times 2h/c1) the lower end is no compression. */
 #define NEAR_SHORT_MIN 0.1
 static double near_shortfall(const struct anvil_params *p, double P, double b)
 {
@@ -243,7 +244,11 @@ static int near_at(struct near_time *c, double t, struct anvil_plate_near *n, do
 	}
 	double a = sqrt(p->r0 * pow(P / p->K, 2.0 / 3.0)), p0 = 1.5 * P / (M_PI * a * a);
 	double b = anvil_plate_bending_patch(p, ANVIL_PLATE_PATCH_TRUE, 0, P);
-	double lo = fmax(0, *sb - near_shortfall(p, P, b));
+	/* before the plate estimate's range in time (plate_bending.h: the
+	 * plate's dispersion still at the centre) its relief is not trusted:
+	 * the compression's range reaches down to none */
+	int early = t < ANVIL_PLATE_BENDING_T_MIN * 2 * p->h / p->c1;
+	double lo = early ? 0 : fmax(0, *sb - near_shortfall(p, P, b));
 	struct anvil_plate_near n2;
 	/* the sum is convex in the compression: its worse end is the bound */
 	st = anvil_plate_bending_near(a, p0, p->nu, p->h, P, b, *sb, c->brittle, n);
