@@ -227,6 +227,7 @@ struct near_time {
 	const struct anvil_problem *pb;
 	const struct anvil_history *h;
 	struct anvil_plate_bender *bender;
+	double tol; /* the bending estimate's stated relative accuracy */
 	int brittle, status;
 };
 
@@ -249,6 +250,10 @@ static int near_at(struct near_time *c, double t, struct anvil_plate_near *n, do
 	 * the compression's range reaches down to none */
 	int early = t < ANVIL_PLATE_BENDING_T_MIN * 2 * p->h / p->c1;
 	double lo = early ? 0 : fmax(0, *sb - near_shortfall(p, P, b));
+	/* a relief is trusted only to the estimate's own accuracy: a fate must
+	 * not turn on what the estimate cannot vouch for (the upper end stays
+	 * s_b, as the far face's, both stated within bend_tol) */
+	lo *= 1 - c->tol;
 	struct anvil_plate_near n2;
 	/* the sum is convex in the compression: its worse end is the bound */
 	st = anvil_plate_bending_near(a, p0, p->nu, p->h, P, b, *sb, c->brittle, n);
@@ -275,8 +280,11 @@ static int cmp_double(const void *x, const void *y)
 	return (a > b) - (a < b);
 }
 
-/* The scan's instants, sorted, in t[] (2 NEAR_NSCAN + 2 of them). */
-static size_t near_instants(const struct anvil_history *h, double t_pk, double t_bend, double *t)
+/* The scan's instants, sorted, in t[] (up to 2 NEAR_NSCAN + 3 of them).
+ * The last instant before the relief is trusted (t_early) is one: the sum
+ * drops there, and Brent on a step finds either side. */
+static size_t near_instants(const struct anvil_history *h, double t_pk, double t_bend,
+			    double t_early, double *t)
 {
 	double te = h->t[h->n - 1], t0 = 1e-3 * te, lo = 0.25 * fmin(t_pk, t_bend),
 	       hi = fmin(te, 2 * fmax(t_pk, t_bend));
@@ -287,6 +295,8 @@ static size_t near_instants(const struct anvil_history *h, double t_pk, double t
 	}
 	t[n++] = t_pk;
 	t[n++] = t_bend;
+	if (t_early > t0 && t_early < te)
+		t[n++] = t_early * (1 - 1e-9);
 	qsort(t, n, sizeof *t, cmp_double);
 	return n;
 }
@@ -318,13 +328,14 @@ static void near_refine(struct near_time *c, const double *ts, const double *sv,
 static int near_face(const struct anvil_problem *pb, const struct anvil_history *h,
 		     struct anvil_verdict *v, struct anvil_err *err)
 {
-	struct near_time c = { pb, h, NULL, v->brittle, ANVIL_OK };
+	struct near_time c = { pb, h, NULL, v->bend_tol, v->brittle, ANVIL_OK };
 	c.bender = anvil_plate_bender_new(&pb->p, h, ANVIL_PLATE_PATCH_TRUE, 0, err);
 	if (!c.bender)
 		return err->status ? err->status : ANVIL_ENOMEM;
-	double ts[2 * NEAR_NSCAN + 2], sv[2 * NEAR_NSCAN + 2], sb, t;
+	double ts[2 * NEAR_NSCAN + 3], sv[2 * NEAR_NSCAN + 3], sb, t;
 	struct anvil_plate_near n;
-	size_t nt = near_instants(h, v->t, v->bend_t, ts), best = 0;
+	double t_early = ANVIL_PLATE_BENDING_T_MIN * 2 * pb->p.h / pb->p.c1;
+	size_t nt = near_instants(h, v->t, v->bend_t, t_early, ts), best = 0;
 	int st = ANVIL_OK;
 	for (size_t i = 0; i < nt && !st; i++) {
 		st = near_at(&c, ts[i], &n, &sb);

@@ -16,9 +16,14 @@ static struct anvil_field *row_field(struct anvil_solver *s, const struct anvil_
 	const struct anvil_problem *pb = &pl->pb;
 	enum anvil_model m = isinf(pb->p.h) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
 	struct anvil_result r;
-	/* the field loads the layer over the paper's patch r0: the paper's
-	 * contact's P(t) (plan.h: the plan always holds that row) */
-	int st = anvil_solver_run_contact(s, pl, m, ANVIL_CONTACT_PAPER, ANVIL_FIELD_NHIST, &r, err);
+	/* The paper's patch r0 loads the layer with the paper contact's P(t)
+	 * (plan.h: the plan always holds that row).  The true contact loads it
+	 * with the force of the row the user is shown (row[m]'s contact): on a
+	 * thin plate the paper's P_max is up to 40 % above the physical one's
+	 * (a 10 mm steel ball at 1 m/s on 1 mm steel: 113 against 82 N), and a
+	 * verdict under a force no printed row has is no answer. */
+	enum anvil_contact c = true_contact ? pl->row[m].contact : ANVIL_CONTACT_PAPER;
+	int st = anvil_solver_run_contact(s, pl, m, c, ANVIL_FIELD_NHIST, &r, err);
 	*run_status = st;
 	if (st < 0) {
 		anvil_result_free(&r);
