@@ -267,9 +267,12 @@ static double physical_root(double bD, double B, double k0, double bu, double A,
 	for (int i = 0; i < 100; i++) {
 		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
 		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
-		double dx = f / df;
+		double d2 = (12.0 * bD * x + 6.0 * B) * x + 2.0 * k0, dx = f / df;
 		x -= dx;
-		if (fabs(dx) <= 1e-15 * x)
+		/* the next step, G'' dx^2 / (2 G'), below a sixteenth of an ulp:
+		 * it would not move x (the old test alone took one more step,
+		 * whose dx was the rounding of f, a fifth of the calls) */
+		if (fabs(dx) <= 1e-15 * x || fabs(d2) * dx * dx <= 0x1p-56 * x * df)
 			break;
 	}
 	return x;
@@ -312,7 +315,10 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
-	double xr = 0; /* the last root (physical_root's guess) */
+	/* the last root, and the last two steps' (their line is
+	 * physical_root's guess: 2 Newton steps a root where the last root
+	 * took 3 to 4) */
+	double xr = 0, xr1 = 0, xr2 = 0;
 	int in = 1;
 	s->v[0] = p->V0;
 	s->n = 1;
@@ -325,7 +331,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (L && (st = impact_grow_switch(c, s, L)))
 			return st;
 		if (L)
-			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0;
+			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0, xr2 = 0;
 		size_t i = n - c->seg0; /* the segment's node; n on the first */
 		if (i >= c->segcap)
 			break;
@@ -379,7 +385,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			return st;
 		double D = 0.5 * dt / p->m1 + e0;
 		if (in && !pre) {
-			xr = physical_root(b * D, B, p->k0, b * u0, Ae, xr);
+			xr = physical_root(b * D, B, p->k0, b * u0, Ae,
+					   xr1 > 0 && xr2 > 0 ? 2.0 * xr1 - xr2 : xr1);
 			P = xr * xr * xr;
 		}
 		if (in && P > 0 && (l2.cu != 0 || l2.cx != 0)) {
@@ -395,6 +402,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		/* P^(1/3): the root itself (P > 0 only from it), not the cube
 		 * root of its cube, which took a twentieth of a warm run */
 		double x = P > 0 ? xr : 0.0;
+		xr2 = xr1, xr1 = x;
 		a_prev = in ? p->k0 * x * x : Ae; /* alpha_H in contact; the gap's A out of it */
 		amax = fmax(amax, in ? a_prev : 0.0);
 		s->P[n] = P;
