@@ -335,17 +335,34 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->nk = s->nk;
 }
 
+/* FNV-1a's step on 64-bit words, n of them: a word changed anywhere
+ * changes the sum (each step is a bijection of h).  Byte by byte, the
+ * sum's chain of multiplications took 0.1 ms of a warm run's 4 (four
+ * responses of 16 kB); eight times fewer steps here. */
+static uint64_t fnv1a_words(uint64_t h, const void *data, size_t n)
+{
+	const unsigned char *p = data;
+	for (size_t i = 0; i < n; i++) {
+		uint64_t w;
+		memcpy(&w, p + 8 * i, sizeof w);
+		h ^= w;
+		h *= 1099511628211u;
+	}
+	return h;
+}
+
+_Static_assert(sizeof(struct anvil_cache_header) % 8 == 0, "the checksum sums whole words");
+
 /* Over the header, then the samples, the K table and the S table (data:
- * n + 2 nk doubles). */
+ * n + 2 nk doubles), word by word (format 26). */
 static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp, const double *k,
 			 const double *shear)
 {
 	struct anvil_cache_header h = *hd;
 	h.checksum = 0;
-	uint64_t c = fnv1a(fnv1a(FNV_SEED, &h, sizeof h), ramp, (size_t)hd->n * sizeof *ramp);
+	uint64_t c = fnv1a_words(fnv1a_words(FNV_SEED, &h, sizeof h / 8), ramp, (size_t)hd->n);
 	if (hd->nk)
-		c = fnv1a(fnv1a(c, k, (size_t)hd->nk * sizeof *k), shear,
-			  (size_t)hd->nk * sizeof *shear);
+		c = fnv1a_words(fnv1a_words(c, k, (size_t)hd->nk), shear, (size_t)hd->nk);
 	return c;
 }
 
