@@ -247,26 +247,32 @@ static int pass_implicit(struct ctx *c, struct pass *s)
  * G is convex on x > 0 with G(0) = -A < 0, so the root is unique, and
  * Newton from a point where G >= 0 decreases to it monotonically.  At
  * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0.
- * The guess xg (the last step's root) is nearer: there G >= 0 starts the
- * descent, and G < 0 with G' > 0 one Newton step first, whose tangent
- * lies below the convex G, so it lands at or past the root; else x0.
- * Newton from x0 took 8.6 iterations a root (h = 0.1 r0, 100 kg at
- * 0.1 m/s: 11 % of the run), from the guess 2.2; the root the same to
- * the stop's 1e-15. */
+ * The guess xg (pass_physical's: the line through the last two steps'
+ * roots) is nearer: there G >= 0 starts the descent, and G < 0 with G' > 0
+ * one Newton step first, whose tangent lies below the convex G, so it
+ * lands at or past the root; else x0.  Newton from x0 took 8.6 iterations
+ * a root (h = 0.1 r0, 100 kg at 0.1 m/s: 11 % of the run), from the last
+ * root 2.2; on the warm row of h = r0 at 9.5 m/s 2.82 from the last root
+ * with the stop |dx| <= 1e-15 x alone, 1.99 from the line with the
+ * predicted stop below; the root the same to the last place or two. */
 static double physical_root(double bD, double B, double k0, double bu, double A, double xg)
 {
-	double x = fabs(bu) / k0 + sqrt(A / k0);
+	double x = fabs(bu) / k0 + sqrt(A / k0), f = 0, df = 0;
+	int known = 0; /* f and df at x are the guess's: not formed again
+			* (half the first roots of a step start there) */
 	if (xg > 0 && xg < x) {
-		double f = (((bD * xg + B) * xg + k0) * xg - bu) * xg - A;
-		double df = ((4.0 * bD * xg + 3.0 * B) * xg + 2.0 * k0) * xg - bu;
+		f = (((bD * xg + B) * xg + k0) * xg - bu) * xg - A;
+		df = ((4.0 * bD * xg + 3.0 * B) * xg + 2.0 * k0) * xg - bu;
 		if (f >= 0)
-			x = xg;
+			x = xg, known = 1;
 		else if (df > 0 && xg - f / df < x)
 			x = xg - f / df;
 	}
-	for (int i = 0; i < 100; i++) {
-		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
-		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
+	for (int i = 0; i < 100; i++, known = 0) {
+		if (!known) {
+			f = (((bD * x + B) * x + k0) * x - bu) * x - A;
+			df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
+		}
 		double d2 = (12.0 * bD * x + 6.0 * B) * x + 2.0 * k0, dx = f / df;
 		x -= dx;
 		/* the next step, G'' dx^2 / (2 G'), below a sixteenth of an ulp:
