@@ -38,8 +38,8 @@
  * an FNV-1a 64-bit checksum of header, samples and nodes (on 64-bit
  * words, format 26), and the
  * key's widest patch of the row, format 21), then the
- * ramp samples and the K table (green.h anvil_green_samples) as native
- * doubles.  A file is only read on a machine with the same byte order and
+ * ramp samples, the K and S tables and the samples' spline's c_i (format
+ * 26; green.h anvil_green_samples) as native doubles.  A file is only read on a machine with the same byte order and
  * double format.
  *
  * One cache is used from one thread at a time (the solver's). */
@@ -99,7 +99,9 @@ struct anvil_halfspace; /* halfspace.h */
 				 starting piece, kernel.h anvil_kband_poles; 25:
 				 the lifted band's sin and cos by angle sums,
 				 green_spectrum.c lifted_piece: other bits; 26:
-				 the checksum's FNV-1a on 64-bit words, cache.c) */
+				 the checksum's FNV-1a on 64-bit words, cache.c,
+				 and the spline's c_i after the tables, green.h
+				 curv) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -197,8 +199,8 @@ void anvil_cache_release(struct anvil_cache *c, const void *resp);
 int anvil_cache_held(const struct anvil_cache *c);
 
 /* The disk format, for the cache itself and for tests (the fuzzer builds
- * files with it): the header, then n ramp samples and nk K-table nodes as
- * native doubles. */
+ * files with it): the header, then n ramp samples, nk K-table and nk
+ * S-table nodes, and n spline c_i, as native doubles. */
 #include <stdint.h>
 struct anvil_cache_header {
 	char magic[8];
