@@ -1,4 +1,5 @@
 /* main.c: picks the face of anvil from the first argument. */
+#include <malloc.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -155,6 +156,12 @@ static int complete_keys(void)
 int main(int argc, char **argv)
 {
 	static char *run_argv[] = {"run", NULL}, *tui_argv[] = {"tui", NULL};
+	/* The heap grows and gives back 16 MB at a time: a warm physical row
+	 * frees and allocates its impacts' arrays (a few 100 kB) five times,
+	 * and the default 128 kB pad gave each back to the kernel, to be
+	 * faulted in again: 30 brk calls, the kernel a sixth of the row's
+	 * time, an eighth with the pad.  At most 16 MB more stay resident. */
+	mallopt(M_TOP_PAD, 16 << 20);
 	cli_init();
 	argc = take_strict(argc, argv);
 	if (argc < 2) {

@@ -352,6 +352,29 @@ static void test_import_filtered(void)
 		ok(0, "  and evaluates to the bit");
 	}
 	anvil_green_free(h);
+	/* the spline's c_i solved for on import (curv NULL) or taken as
+	 * exported (the disk cache's): the same interpolant, to the bit */
+	x = s;
+	x.curv = NULL;
+	h = anvil_green_import(&x, &e);
+	int same = h != NULL && s.curv != NULL;
+	for (size_t j = 0; same && j + 1 < s.n; j += 7) {
+		double tau = ((double)j + 0.37) * s.dtau, a = 0, b = 1, sa = 0, sb = 1;
+		anvil_green_ramp(h, tau, &a);
+		anvil_green_ramp(g, tau, &b);
+		anvil_green_step(h, tau, &sa);
+		anvil_green_step(g, tau, &sb);
+		same = a == b && sa == sb;
+	}
+	ok(same, "  without the exported spline (curv NULL): solved again, the same bits");
+	anvil_green_free(h);
+	double *cv = malloc(s.n * sizeof *cv);
+	memcpy(cv, s.curv, s.n * sizeof *cv);
+	cv[s.n - 1] = 1e-3;
+	x = s;
+	x.curv = cv;
+	ok(!anvil_green_import(&x, &e), "  a spline not natural at its end: refused");
+	free(cv);
 	x = s;
 	x.filtered = 0;
 	ok(!anvil_green_import(&x, &e), "  the same samples unfiltered: refused (the plain series' bound)");

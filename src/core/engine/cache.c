@@ -335,28 +335,46 @@ static void header_fill(struct anvil_cache_header *hd, const struct anvil_cache_
 	hd->nk = s->nk;
 }
 
-/* Over the header, then the samples, the K table and the S table (data:
- * n + 2 nk doubles). */
+/* FNV-1a's step on 64-bit words, n of them: a word changed anywhere
+ * changes the sum (each step is a bijection of h).  Byte by byte, the
+ * sum's chain of multiplications took 0.1 ms of a warm run's 4 (four
+ * responses of 16 kB); eight times fewer steps here. */
+static uint64_t fnv1a_words(uint64_t h, const void *data, size_t n)
+{
+	const unsigned char *p = data;
+	for (size_t i = 0; i < n; i++) {
+		uint64_t w;
+		memcpy(&w, p + 8 * i, sizeof w);
+		h ^= w;
+		h *= 1099511628211u;
+	}
+	return h;
+}
+
+_Static_assert(sizeof(struct anvil_cache_header) % 8 == 0, "the checksum sums whole words");
+
+/* Over the header, then the samples, the K table, the S table and the
+ * spline's c_i (data: 2 n + 2 nk doubles), word by word (format 26). */
 static uint64_t checksum(const struct anvil_cache_header *hd, const double *ramp, const double *k,
-			 const double *shear)
+			 const double *shear, const double *curv)
 {
 	struct anvil_cache_header h = *hd;
 	h.checksum = 0;
-	uint64_t c = fnv1a(fnv1a(FNV_SEED, &h, sizeof h), ramp, (size_t)hd->n * sizeof *ramp);
+	uint64_t c = fnv1a_words(fnv1a_words(FNV_SEED, &h, sizeof h / 8), ramp, (size_t)hd->n);
 	if (hd->nk)
-		c = fnv1a(fnv1a(c, k, (size_t)hd->nk * sizeof *k), shear,
-			  (size_t)hd->nk * sizeof *shear);
-	return c;
+		c = fnv1a_words(fnv1a_words(c, k, (size_t)hd->nk), shear, (size_t)hd->nk);
+	return fnv1a_words(c, curv, (size_t)hd->n);
 }
 
 /* ---- disk: write ---- */
 
 static int write_all(FILE *f, const struct anvil_cache_header *hd, const double *ramp,
-		     const double *k, const double *shear)
+		     const double *k, const double *shear, const double *curv)
 {
 	if (fwrite(hd, sizeof *hd, 1, f) != 1 || fwrite(ramp, sizeof *ramp, hd->n, f) != hd->n ||
 	    (hd->nk && (fwrite(k, sizeof *k, hd->nk, f) != hd->nk ||
-			fwrite(shear, sizeof *shear, hd->nk, f) != hd->nk)) || fflush(f) != 0)
+			fwrite(shear, sizeof *shear, hd->nk, f) != hd->nk)) ||
+	    fwrite(curv, sizeof *curv, hd->n, f) != hd->n || fflush(f) != 0)
 		return -1;
 	/* on disk before the rename makes it visible: no empty file after a crash */
 	return fsync(fileno(f));
@@ -370,14 +388,16 @@ int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 	char tmp[3200];
 	anvil_green_export(g, &s);
 	header_fill(&hd, key, &s);
-	hd.checksum = checksum(&hd, s.ramp, s.k, s.shear);
+	if (!s.curv)
+		return anvil_err_set(err, ANVIL_EINVAL, "%s: a response without its spline", path);
+	hd.checksum = checksum(&hd, s.ramp, s.k, s.shear, s.curv);
 	if (snprintf(tmp, sizeof tmp, "%s.XXXXXX", path) >= (int)sizeof tmp)
 		return anvil_err_set(err, ANVIL_EIO, "%s: name too long", path);
 	int fd = mkstemp(tmp);
 	if (fd < 0)
 		return anvil_err_set(err, ANVIL_EIO, "%s: cannot create: %s", tmp, strerror(errno));
 	FILE *f = fdopen(fd, "wb");
-	int bad = !f || write_all(f, &hd, s.ramp, s.k, s.shear) != 0;
+	int bad = !f || write_all(f, &hd, s.ramp, s.k, s.shear, s.curv) != 0;
 	int saved = errno;
 	if (f ? fclose(f) != 0 : close(fd) != 0)
 		bad = 1;
@@ -432,7 +452,7 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 	struct stat sb;
 	double *ramp = NULL;
 	struct anvil_green *g = NULL;
-	size_t nd = (size_t)(hd->n + 2 * hd->nk); /* both bounded by header_read */
+	size_t nd = (size_t)(2 * hd->n + 2 * hd->nk); /* both bounded by header_read */
 	if (fstat(fileno(f), &sb) != 0 || (uint64_t)sb.st_size != sizeof *hd + nd * sizeof(double)) {
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (size)", path);
 		return NULL;
@@ -441,10 +461,10 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 		anvil_err_set(err, ANVIL_ENOMEM, "cache: out of memory");
 		return NULL;
 	}
-	const double *k = ramp + hd->n, *shear = k + hd->nk;
+	const double *k = ramp + hd->n, *shear = k + hd->nk, *curv = shear + hd->nk;
 	if (fread(ramp, sizeof *ramp, nd, f) != nd)
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (short)", path);
-	else if (checksum(hd, ramp, k, shear) != hd->checksum)
+	else if (checksum(hd, ramp, k, shear, curv) != hd->checksum)
 		anvil_err_set(err, ANVIL_EIO, "%s: corrupt (bad checksum)", path);
 	else {
 		struct anvil_green_samples s = { .mode = ANVIL_GREEN_LAYER_CORRECTION,
@@ -456,7 +476,7 @@ static struct anvil_green *samples_read(FILE *f, const char *path, const struct 
 						 .n = (size_t)hd->n, .ramp = ramp,
 						 .t1 = hd->t1, .tail_v = hd->tail_v,
 						 .nk = (size_t)hd->nk, .k = hd->nk ? k : NULL,
-						 .shear = hd->nk ? shear : NULL };
+						 .shear = hd->nk ? shear : NULL, .curv = curv };
 		memcpy(s.tail_c, hd->tail_c, sizeof s.tail_c);
 		struct anvil_err in;
 		if (!(g = anvil_green_import(&s, &in)))

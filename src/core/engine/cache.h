@@ -35,10 +35,11 @@
  * is ignored quietly and replaced), the window tau_end, the sample step, the error
  * estimate, the plate's tail (format 8: its T1, the fit's error unit and
  * coefficients; 0 without), the sample count, the tail's K-table node count
- * an FNV-1a 64-bit checksum of header, samples and nodes, and the
+ * an FNV-1a 64-bit checksum of header, samples and nodes (on 64-bit
+ * words, format 26), and the
  * key's widest patch of the row, format 21), then the
- * ramp samples and the K table (green.h anvil_green_samples) as native
- * doubles.  A file is only read on a machine with the same byte order and
+ * ramp samples, the K and S tables and the samples' spline's c_i (format
+ * 26; green.h anvil_green_samples) as native doubles.  A file is only read on a machine with the same byte order and
  * double format.
  *
  * One cache is used from one thread at a time (the solver's). */
@@ -55,7 +56,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 25 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 26 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -97,7 +98,10 @@ struct anvil_halfspace; /* halfspace.h */
 				 a thick layer's band past its poles in one
 				 starting piece, kernel.h anvil_kband_poles; 25:
 				 the lifted band's sin and cos by angle sums,
-				 green_spectrum.c lifted_piece: other bits) */
+				 green_spectrum.c lifted_piece: other bits; 26:
+				 the checksum's FNV-1a on 64-bit words, cache.c,
+				 and the spline's c_i after the tables, green.h
+				 curv) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
@@ -195,8 +199,8 @@ void anvil_cache_release(struct anvil_cache *c, const void *resp);
 int anvil_cache_held(const struct anvil_cache *c);
 
 /* The disk format, for the cache itself and for tests (the fuzzer builds
- * files with it): the header, then n ramp samples and nk K-table nodes as
- * native doubles. */
+ * files with it): the header, then n ramp samples, nk K-table and nk
+ * S-table nodes, and n spline c_i, as native doubles. */
 #include <stdint.h>
 struct anvil_cache_header {
 	char magic[8];

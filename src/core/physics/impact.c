@@ -247,29 +247,38 @@ static int pass_implicit(struct ctx *c, struct pass *s)
  * G is convex on x > 0 with G(0) = -A < 0, so the root is unique, and
  * Newton from a point where G >= 0 decreases to it monotonically.  At
  * x0 = |bu|/k0 + sqrt(A/k0), k0 x0^2 - bu x0 - A >= 0, so G(x0) >= 0.
- * The guess xg (the last step's root) is nearer: there G >= 0 starts the
- * descent, and G < 0 with G' > 0 one Newton step first, whose tangent
- * lies below the convex G, so it lands at or past the root; else x0.
- * Newton from x0 took 8.6 iterations a root (h = 0.1 r0, 100 kg at
- * 0.1 m/s: 11 % of the run), from the guess 2.2; the root the same to
- * the stop's 1e-15. */
+ * The guess xg (pass_physical's: the line through the last two steps'
+ * roots) is nearer: there G >= 0 starts the descent, and G < 0 with G' > 0
+ * one Newton step first, whose tangent lies below the convex G, so it
+ * lands at or past the root; else x0.  Newton from x0 took 8.6 iterations
+ * a root (h = 0.1 r0, 100 kg at 0.1 m/s: 11 % of the run), from the last
+ * root 2.2; on the warm row of h = r0 at 9.5 m/s 2.82 from the last root
+ * with the stop |dx| <= 1e-15 x alone, 1.99 from the line with the
+ * predicted stop below; the root the same to the last place or two. */
 static double physical_root(double bD, double B, double k0, double bu, double A, double xg)
 {
-	double x = fabs(bu) / k0 + sqrt(A / k0);
+	double x = fabs(bu) / k0 + sqrt(A / k0), f = 0, df = 0;
+	int known = 0; /* f and df at x are the guess's: not formed again
+			* (half the first roots of a step start there) */
 	if (xg > 0 && xg < x) {
-		double f = (((bD * xg + B) * xg + k0) * xg - bu) * xg - A;
-		double df = ((4.0 * bD * xg + 3.0 * B) * xg + 2.0 * k0) * xg - bu;
+		f = (((bD * xg + B) * xg + k0) * xg - bu) * xg - A;
+		df = ((4.0 * bD * xg + 3.0 * B) * xg + 2.0 * k0) * xg - bu;
 		if (f >= 0)
-			x = xg;
+			x = xg, known = 1;
 		else if (df > 0 && xg - f / df < x)
 			x = xg - f / df;
 	}
-	for (int i = 0; i < 100; i++) {
-		double f = (((bD * x + B) * x + k0) * x - bu) * x - A;
-		double df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
-		double dx = f / df;
+	for (int i = 0; i < 100; i++, known = 0) {
+		if (!known) {
+			f = (((bD * x + B) * x + k0) * x - bu) * x - A;
+			df = ((4.0 * bD * x + 3.0 * B) * x + 2.0 * k0) * x - bu;
+		}
+		double d2 = (12.0 * bD * x + 6.0 * B) * x + 2.0 * k0, dx = f / df;
 		x -= dx;
-		if (fabs(dx) <= 1e-15 * x)
+		/* the next step, G'' dx^2 / (2 G'), below a sixteenth of an ulp:
+		 * it would not move x (the old test alone took one more step,
+		 * whose dx was the rounding of f, a fifth of the calls) */
+		if (fabs(dx) <= 1e-15 * x || fabs(d2) * dx * dx <= 0x1p-56 * x * df)
 			break;
 	}
 	return x;
@@ -312,7 +321,10 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 	double udp = 0, z2 = 0; /* dw_c/dt's last node; the second stage */
 	double S0 = 0, S1 = 0, impulse = 0;
 	double ioff = 0, a_prev = 0, amax = 0;
-	double xr = 0; /* the last root (physical_root's guess) */
+	/* the last root, and the last two steps' (their line is
+	 * physical_root's guess: 2 Newton steps a root where the last root
+	 * took 3 to 4) */
+	double xr = 0, xr1 = 0, xr2 = 0;
 	int in = 1;
 	s->v[0] = p->V0;
 	s->n = 1;
@@ -325,7 +337,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		if (L && (st = impact_grow_switch(c, s, L)))
 			return st;
 		if (L)
-			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0;
+			dt = s->dt, rl = 0.5 * dt / tl, S0 = S1 = 0, xr2 = 0;
 		size_t i = n - c->seg0; /* the segment's node; n on the first */
 		if (i >= c->segcap)
 			break;
@@ -379,7 +391,8 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 			return st;
 		double D = 0.5 * dt / p->m1 + e0;
 		if (in && !pre) {
-			xr = physical_root(b * D, B, p->k0, b * u0, Ae, xr);
+			xr = physical_root(b * D, B, p->k0, b * u0, Ae,
+					   xr1 > 0 && xr2 > 0 ? 2.0 * xr1 - xr2 : xr1);
 			P = xr * xr * xr;
 		}
 		if (in && P > 0 && (l2.cu != 0 || l2.cx != 0)) {
@@ -395,6 +408,7 @@ static int pass_physical(struct ctx *c, struct pass *s, double beta)
 		/* P^(1/3): the root itself (P > 0 only from it), not the cube
 		 * root of its cube, which took a twentieth of a warm run */
 		double x = P > 0 ? xr : 0.0;
+		xr2 = xr1, xr1 = x;
 		a_prev = in ? p->k0 * x * x : Ae; /* alpha_H in contact; the gap's A out of it */
 		amax = fmax(amax, in ? a_prev : 0.0);
 		s->P[n] = P;

@@ -39,6 +39,7 @@ struct anvil_green {
 	size_t n;             /* samples at tau_j = j dtau, j < n */
 	double *tau, *ramp;   /* one block, owned */
 	double *coef;         /* per interval: its y, b, c, d (green_spline), owned */
+	double *curv;         /* the spline's c_i (spline_cs), n of them, owned */
 	int tailed;           /* 1: beyond tail.t1 the plate's closed form (plate.h) */
 	struct anvil_plate_tail tail; /* its arrays owned */
 	double abserr;        /* over [0, T1] when tailed (the tail's misfit included) */
@@ -63,6 +64,7 @@ void anvil_green_free(struct anvil_green *g)
 	if (!g)
 		return;
 	free(g->coef);
+	free(g->curv);
 	anvil_plate_tail_free(&g->tail);
 	free(g->tau);
 	free(g);
@@ -108,21 +110,23 @@ static int spline_cs(const double *x, const double *y, size_t n, double *c)
  * ramp ~10^4 times per impact.  The c_i from spline_cs, not from a
  * gsl_interp: its init solves the same system again (a sixth of a warm
  * run's reading of a response), and nothing else was asked of it once
- * slopes came from these coefficients too (anvil_green_step).
+ * slopes came from these coefficients too (anvil_green_step).  The c_i
+ * are kept (g->curv, exported): curv, when given, holds them as spline_cs
+ * made them for these samples, and the system is not solved again.
  * ANVIL_ENOMEM, ANVIL_ENUM. */
-static int green_spline(struct anvil_green *g)
+static int green_spline(struct anvil_green *g, const double *curv)
 {
 	size_t n = g->n;
 	g->coef = malloc(4 * (n - 1) * sizeof *g->coef);
-	double *c = malloc(n * sizeof *c);
-	if (!g->coef || !c) {
-		free(c);
+	double *c = g->curv = malloc(n * sizeof *c);
+	if (!g->coef || !c)
 		return ANVIL_ENOMEM;
-	}
-	if (n < 3 || spline_cs(g->tau, g->ramp, n, c)) { /* n < 3: GSL's cspline's minimum */
-		free(c);
+	if (n < 3) /* GSL's cspline's minimum */
 		return ANVIL_ENUM;
-	}
+	if (curv) /* spline_cs's, kept by the exporter (the disk cache) */
+		memcpy(c, curv, n * sizeof *c);
+	else if (spline_cs(g->tau, g->ramp, n, c))
+		return ANVIL_ENUM;
 	for (size_t i = 0; i + 1 < n; i++) {
 		double dx = g->tau[i + 1] - g->tau[i], dy = g->ramp[i + 1] - g->ramp[i];
 		double *cf = g->coef + 4 * i;
@@ -131,7 +135,6 @@ static int green_spline(struct anvil_green *g)
 		cf[2] = c[i];
 		cf[3] = (c[i + 1] - c[i]) / (3.0 * dx);
 	}
-	free(c);
 	return ANVIL_OK;
 }
 
@@ -181,7 +184,7 @@ static int green_finish(struct anvil_green *g, const struct anvil_durbin *dl, co
 	g->abserr = amp * qsum + amp * tail + (tailed ? g->tail.misfit : 0.0);
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau;
-	return green_spline(g);
+	return green_spline(g, NULL);
 }
 
 /* The band's edge.  The series cut at term M is the response convolved
@@ -469,12 +472,14 @@ static struct anvil_green *green_make(enum anvil_green_mode mode, double hh, dou
  * settles it.  The samples are uniform (tau_j = j dtau): the interval is
  * known from tau / dtau without GSL's bisection (a third of a warm run's
  * time went there), up to the quotient's rounding, which the walk to the
- * neighbour settles. */
+ * neighbour settles.  The quotient is positive and below n here: a
+ * signed truncation is its floor, one instruction where floor and the
+ * unsigned conversion took 35 (a twentieth of a warm run's). */
 static size_t spline_interval(const struct anvil_green *g, double tau)
 {
-	double j = floor(tau / g->dtau);
+	double j = tau / g->dtau;
 	size_t last = g->n - 2;
-	size_t i = j < 0 ? 0 : j > (double)last ? last : (size_t)j;
+	size_t i = j < (double)last ? (size_t)(long)j : last;
 	while (i > 0 && tau < g->tau[i])
 		i--;
 	while (i < last && tau >= g->tau[i + 1])
@@ -570,7 +575,8 @@ void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples 
 	*s = (struct anvil_green_samples){ .mode = g->mode, .filtered = g->filtered,
 					   .hh = g->hh, .nu = g->nu, .patch = g->patch,
 					   .tau_end = g->tau_end, .dtau = g->dtau,
-					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp };
+					   .abserr = g->abserr, .n = g->n, .ramp = g->ramp,
+					   .curv = g->curv };
 	if (g->tailed) {
 		s->t1 = g->tail.t1;
 		memcpy(s->tail_c, g->tail.c, sizeof s->tail_c);
@@ -638,16 +644,22 @@ static int samples_plausible(const struct anvil_green_samples *s)
 	for (size_t j = 0; j < s->n; j++)
 		if (!isfinite(s->ramp[j]))
 			return 0;
+	/* the natural spline's: finite, 0 at both ends */
+	if (s->curv && (s->curv[0] != 0.0 || s->curv[s->n - 1] != 0.0))
+		return 0;
+	for (size_t j = 0; s->curv && j < s->n; j++)
+		if (!isfinite(s->curv[j]))
+			return 0;
 	if (s->mode == ANVIL_GREEN_HALFSPACE)
 		return s->ramp[s->n - 1] > 0;
 	double trefl = 2.0 * s->hh * sqrt(anvil_kappa2(s->nu)), after = 0, pre = 0, peak = 0;
-	for (size_t j = 0; j < s->n; j++) {
+	for (size_t j = 0; j < s->n; j++) { /* finite: no fmax, a libm call */
 		double tau = (double)j * s->dtau, v = fabs(s->ramp[j]);
-		if (tau < trefl)
-			pre = fmax(pre, v);
-		if (tau >= 2.0 * trefl && tau <= s->tau_end)
-			after = fmax(after, v);
-		peak = fmax(peak, v);
+		if (tau < trefl && v > pre)
+			pre = v;
+		if (tau >= 2.0 * trefl && tau <= s->tau_end && v > after)
+			after = v;
+		peak = v > peak ? v : peak;
 	}
 	if (pre > (s->filtered ? FILTER_PRECURSOR * peak : s->abserr))
 		return 0;
@@ -681,7 +693,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 	}
 	if (!samples_plausible(s)) {
 		anvil_err_set(err, ANVIL_EINVAL, "layer response: implausible samples "
-			      "(ramp[0], finiteness or causality)");
+			      "(ramp[0], finiteness, causality or the spline's ends)");
 		return NULL;
 	}
 	struct anvil_green *g = calloc(1, sizeof *g);
@@ -700,7 +712,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 	for (size_t j = 0; j < g->n; j++)
 		g->tau[j] = (double)j * g->dtau; /* as green_compute: the same bits */
 	memcpy(g->ramp, s->ramp, g->n * sizeof *g->ramp);
-	int sst = green_spline(g);
+	int sst = green_spline(g, s->curv);
 	if (sst) {
 		anvil_err_set(err, sst, "layer response: cannot rebuild the interpolant");
 		anvil_green_free(g);

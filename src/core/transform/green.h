@@ -192,18 +192,26 @@ struct anvil_green_samples {
 	size_t nk;        /* the K(t)/t^2 table, k[0..nk-1] */
 	const double *k;
 	const double *shear; /* the S(t)/t table (Mindlin's term), shear[0..nk-1] */
+	/* the natural spline's c_i = y''(tau_i)/2 through the samples, curv[0..n-1]
+	 * (GSL's cspline system, green.c spline_cs), as made; NULL: import
+	 * solves for them (the disk cache keeps them: a warm run's import then
+	 * skips the tridiagonal solve, whose chain of divisions took a tenth
+	 * of a warm physical row) */
+	const double *curv;
 };
 
 /* Fill s from g; s->ramp, s->k and s->shear are borrowed from g (valid
  * while g lives). */
 void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples *s);
-/* A response from samples (copied; the spline is rebuilt from them, so it
- * evaluates to the bit as the exported one did).  Its evals count is 0.
+/* A response from samples (copied; the spline is rebuilt from them and
+ * curv, or from them alone when curv is NULL: either way it evaluates to
+ * the bit as the exported one did).  Its evals count is 0.
  * NULL with ANVIL_EINVAL for inconsistent sizes or window (checked before
  * any cast or allocation: at most 2^21 + 2 samples) or implausible samples
  * (ramp[0] != 0, non-finite, abserr <= 0, a layer correction that breaks
- * causality: see green.c; a tail whose table is implausible or which does
- * not give the samples beyond t1 to the bit), ANVIL_ENOMEM, ANVIL_ENUM. */
+ * causality: see green.c; curv not finite or not 0 at the ends; a tail
+ * whose table is implausible or which does not give the samples beyond t1
+ * to the bit), ANVIL_ENOMEM, ANVIL_ENUM. */
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err);
 
