@@ -122,6 +122,15 @@ check 'a corrupt cache file' "$ANVIL" run -m layer -f tsv -s effects.contact=pap
 assert '  is a warning on stderr' grep -q '^anvil: warning: cache: .*corrupt' "$tmp/err"
 cut -f1-16 "$tmp/out" >"$tmp/b"
 assert '  and the numbers do not change' cmp -s "$tmp/a" "$tmp/b"
+# a short window's response that the reader would refuse (its filter
+# precursor above 1e-3 of its peak) is not written: no warm run calls it corrupt
+short='-m layer -f tsv -s solver.accuracy=draft -s layer.thickness=5r0 -s impactor.mass=0.1g'
+check_exit 1 'a short window, cold (its accuracy not reached: exit 1)' "$ANVIL" run $short -s impact.velocity=100m/s
+cut -f1-16 "$tmp/out" >"$tmp/a"
+check_exit 1 'the same scene warm' "$ANVIL" run $short -s impact.velocity=100m/s
+assert '  no cache file called corrupt' sh -c "! grep -q corrupt '$tmp/err'"
+cut -f1-16 "$tmp/out" >"$tmp/b"
+assert '  the same bits' cmp -s "$tmp/a" "$tmp/b"
 rm -rf "$XDG_CACHE_HOME"
 ANVIL_NO_CACHE=1 "$ANVIL" run -m layer -f tsv >/dev/null 2>&1
 assert 'ANVIL_NO_CACHE=1 writes nothing' [ ! -e "$XDG_CACHE_HOME/anvil" ]

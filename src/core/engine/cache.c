@@ -390,6 +390,11 @@ int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 	header_fill(&hd, key, &s);
 	if (!s.curv)
 		return anvil_err_set(err, ANVIL_EINVAL, "%s: a response without its spline", path);
+	/* A response the reader would refuse (a short window's filter
+	 * precursor above 1e-3 of its peak: h = 5 r0, 0.1 g at 100 m/s) is
+	 * not written: every warm run would call its own file corrupt. */
+	if (!anvil_green_samples_plausible(&s))
+		return ANVIL_CACHE_UNFIT;
 	hd.checksum = checksum(&hd, s.ramp, s.k, s.shear, s.curv);
 	if (snprintf(tmp, sizeof tmp, "%s.XXXXXX", path) >= (int)sizeof tmp)
 		return anvil_err_set(err, ANVIL_EIO, "%s: name too long", path);
@@ -595,6 +600,8 @@ static void disk_store(struct anvil_cache *c, const struct anvil_cache_key *key,
 		c->st.disk_writes++;
 		return;
 	}
+	if (st == ANVIL_CACHE_UNFIT)
+		return; /* kept in memory only: cold on disk, the same bits */
 	c->st.disk_failures++;
 	/* A read-only or full disk stays so for a while: say it once. */
 	if (!c->dir_warned++)

@@ -224,7 +224,10 @@ _Static_assert(sizeof(struct anvil_cache_header) == 184, "cache header has paddi
  * when it does not fit. */
 int anvil_cache_path(const char *dir, const struct anvil_cache_key *key, char *buf, size_t n);
 /* Write g for key to path atomically (a temporary file beside it, flushed
- * and synced, renamed over path).  ANVIL_EIO with the reason in err. */
+ * and synced, renamed over path).  ANVIL_EIO with the reason in err;
+ * ANVIL_CACHE_UNFIT (> 0, nothing written, err untouched) for a response
+ * the reader would refuse (anvil_green_samples_plausible). */
+#define ANVIL_CACHE_UNFIT 1
 int anvil_cache_write(const char *path, const struct anvil_cache_key *key,
 		      const struct anvil_green *g, struct anvil_err *err);
 /* Read the response stored at path for key.  NULL with err:

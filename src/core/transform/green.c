@@ -637,7 +637,7 @@ static int sizes_ok(const struct anvil_green_samples *s)
  * response's peak; the filtered responses of the tests reach 7.3e-5. */
 #define FILTER_PRECURSOR 1e-3
 
-static int samples_plausible(const struct anvil_green_samples *s)
+int anvil_green_samples_plausible(const struct anvil_green_samples *s)
 {
 	if (s->ramp[0] != 0.0)
 		return 0;
@@ -691,7 +691,7 @@ struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 		anvil_err_set(err, ANVIL_EINVAL, "layer response: inconsistent sizes or window");
 		return NULL;
 	}
-	if (!samples_plausible(s)) {
+	if (!anvil_green_samples_plausible(s)) {
 		anvil_err_set(err, ANVIL_EINVAL, "layer response: implausible samples "
 			      "(ramp[0], finiteness, causality or the spline's ends)");
 		return NULL;

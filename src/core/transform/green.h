@@ -214,5 +214,8 @@ void anvil_green_export(const struct anvil_green *g, struct anvil_green_samples 
  * to the bit), ANVIL_ENOMEM, ANVIL_ENUM. */
 struct anvil_green *anvil_green_import(const struct anvil_green_samples *s,
 				       struct anvil_err *err);
+/* 1 if import would take s's samples as plausible (the checks above, not
+ * the sizes): the cache writes only what its reader will take back. */
+int anvil_green_samples_plausible(const struct anvil_green_samples *s);
 
 #endif
