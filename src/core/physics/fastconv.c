@@ -340,6 +340,14 @@ double anvil_fastconv_next(const struct anvil_fastconv *f)
 	return f->n < f->hi ? f->acc[f->n] : 0.0; /* beyond hi: no square has reached it */
 }
 
+int anvil_fastconv_at(const struct anvil_fastconv *f, size_t t, double *c)
+{
+	if (t > f->n)
+		return -1;
+	*c = t < f->hi ? f->acc[t] : 0.0; /* beyond hi: no square has reached it */
+	return 0;
+}
+
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }
 
 /* Sources [L-B, L) into targets [L, min(L+B, cap)), directly: eight

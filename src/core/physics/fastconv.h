@@ -88,6 +88,11 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x);
  * memory, -3 when a lazy kernel's fill fails. */
 int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
 
+/* c_t for a target t already complete (t <= the count pushed) into *c:
+ * 0, or -1 when t is not (yet) complete.  The sums are final once their
+ * sources are pushed: a late reader sees the value next() gave. */
+int anvil_fastconv_at(const struct anvil_fastconv *f, size_t t, double *c);
+
 /* The number of values pushed. */
 size_t anvil_fastconv_count(const struct anvil_fastconv *f);
 
