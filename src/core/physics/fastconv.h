@@ -37,7 +37,9 @@ void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
  * of capacity up to cap with squares summed directly up to direct_max
  * (as anvil_fastconv_alloc's; or fewer), each level's made when a
  * convolution first needs it (the same bits whenever made): shared by any
- * number of convolutions of one thread, which must not outlive them.
+ * number of convolutions of one thread, which must not outlive them.  The
+ * tables themselves are the process's, made once for every such handle
+ * (fastconv.c, tabs); a handle holds its thread's view of them.
  * NULL when out of memory. */
 struct anvil_fastconv_fft;
 struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max);
