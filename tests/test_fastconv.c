@@ -212,6 +212,37 @@ static void test_lazy(size_t N, size_t direct_max)
 	free(lh);
 }
 
+/* A late read (anvil_fastconv_at) of a complete target gives the bits
+ * next() gave when it was the next, also with free flights (zero runs)
+ * whose squares are skipped; a target not yet complete is refused. */
+static void test_at(size_t N)
+{
+	unsigned long long s = 99991ULL + N;
+	double *x = malloc(N * sizeof *x), *g = malloc(N * sizeof *g), *c = malloc(N * sizeof *c);
+	for (size_t i = 0; i < N; i++) {
+		x[i] = (i / 300) % 3 == 2 ? 0.0 : urand(&s);
+		g[i] = urand(&s) / (1.0 + 0.01 * (double)i);
+	}
+	struct anvil_fastconv *f = anvil_fastconv_alloc(g, N, 0);
+	int same = 1, refused = 1;
+	double v = 0;
+	for (size_t n = 0; n < N; n++) {
+		c[n] = anvil_fastconv_next(f);
+		refused &= anvil_fastconv_at(f, n + 1, &v) == -1;
+		anvil_fastconv_push(f, x[n]);
+		for (size_t t = n > 40 ? n - 40 : 0; t <= n; t++) /* the ends' reads: just behind */
+			same &= anvil_fastconv_at(f, t, &v) == 0 && v == c[t];
+	}
+	for (size_t t = 0; t < N; t++)
+		same &= anvil_fastconv_at(f, t, &v) == 0 && v == c[t];
+	ok(same, "a late read of a complete target, N = %zu: next()'s bits", N);
+	ok(refused, "a target not yet complete is refused");
+	anvil_fastconv_free(f);
+	free(x);
+	free(g);
+	free(c);
+}
+
 int main(void)
 {
 	/* the bound: eps log2(N) times a small constant (rounding of the FFT) */
@@ -224,6 +255,7 @@ int main(void)
 	test_pair(1000, (size_t)-1, 1e-15);
 	test_lazy(3000, 0);
 	test_lazy(1000, (size_t)-1);
+	test_at(5000);
 	ok(anvil_fastconv_alloc(NULL, 0, 0) == NULL, "capacity 0 is refused");
 	anvil_fastconv_free(NULL);
 	plan(tap_n);

@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include <math.h>
+#include <pthread.h>
 
 #include <gsl/gsl_fft_complex.h>
 #include <gsl/gsl_fft_halfcomplex.h>
@@ -18,6 +19,7 @@
 struct anvil_fastconv_fft {
 	int nlev;
 	size_t direct_max;
+	/* the process's (tabs, below), borrowed */
 	gsl_fft_real_wavetable **fw;       /* fw[k], NULL: not made yet (or level k direct or packed) */
 	gsl_fft_halfcomplex_wavetable **bw;
 	gsl_fft_complex_wavetable **cw;    /* a packed level's (FASTCONV_PACK): size B */
@@ -42,6 +44,9 @@ static int packed(size_t B)
 {
 	return 2 * B >= FASTCONV_PACK;
 }
+
+/* Levels at most: squares of side up to 2^62. */
+#define FASTCONV_LEVELS 63
 
 /* One FFT level of a convolution. */
 struct level {
@@ -84,20 +89,26 @@ static size_t direct_of(size_t direct_max)
 	return direct_max ? direct_max : ANVIL_FASTCONV_DIRECT;
 }
 
+/* Every level's tables, kept for the process: a pure function of the
+ * size, made once whoever asks first (the same bits), and each impact
+ * (anvil_impact_run) made them all again: the paper contact's rows run
+ * five or six impacts of the same steps (its bands and twin), and the
+ * sines of their largest levels took 4-6 % of h = 0.2 r0, 100 g at
+ * 1000 m/s.  Guarded by a lock (impacts run on threads side by side);
+ * GSL only reads them.  Never freed: at most twice the largest size
+ * asked for, still reachable at exit. */
+static struct {
+	pthread_mutex_t lock;
+	gsl_fft_real_wavetable *fw[FASTCONV_LEVELS];
+	gsl_fft_halfcomplex_wavetable *bw[FASTCONV_LEVELS];
+	gsl_fft_complex_wavetable *cw[FASTCONV_LEVELS];
+	double *tw[FASTCONV_LEVELS];
+} tabs = { .lock = PTHREAD_MUTEX_INITIALIZER };
+
 void anvil_fastconv_fft_free(struct anvil_fastconv_fft *t)
 {
 	if (!t)
 		return;
-	for (int k = 0; k < t->nlev; k++) {
-		if (t->fw)
-			gsl_fft_real_wavetable_free(t->fw[k]);
-		if (t->bw)
-			gsl_fft_halfcomplex_wavetable_free(t->bw[k]);
-		if (t->cw)
-			gsl_fft_complex_wavetable_free(t->cw[k]);
-		if (t->tw)
-			free(t->tw[k]);
-	}
 	free(t->fw);
 	free(t->bw);
 	free(t->cw);
@@ -116,7 +127,7 @@ struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_ma
 	t->bw = calloc((size_t)t->nlev + 1, sizeof *t->bw);
 	t->cw = calloc((size_t)t->nlev + 1, sizeof *t->cw);
 	t->tw = calloc((size_t)t->nlev + 1, sizeof *t->tw);
-	if (!t->fw || !t->bw || !t->cw || !t->tw) {
+	if (!t->fw || !t->bw || !t->cw || !t->tw || t->nlev >= FASTCONV_LEVELS) {
 		anvil_fastconv_fft_free(t);
 		return NULL;
 	}
@@ -126,15 +137,15 @@ struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_ma
 	return t;
 }
 
-/* Level k's tables, made on first use: the same bits whenever made.
- * -1 when out of memory. */
-static int fft_level(struct anvil_fastconv_fft *t, int k)
+/* Level k's tables into tabs, made on first use: the same bits whenever
+ * made.  -1 when out of memory.  Under tabs.lock. */
+static int tabs_level(int k)
 {
 	size_t N = (size_t)2 << k, B = N / 2;
 	if (packed(B)) {
-		if (!t->cw[k] && !(t->cw[k] = gsl_fft_complex_wavetable_alloc(B)))
+		if (!tabs.cw[k] && !(tabs.cw[k] = gsl_fft_complex_wavetable_alloc(B)))
 			return -1;
-		if (!t->tw[k]) {
+		if (!tabs.tw[k]) {
 			double *tw = malloc((B + 2) * sizeof *tw);
 			if (!tw)
 				return -1;
@@ -142,15 +153,28 @@ static int fft_level(struct anvil_fastconv_fft *t, int k)
 				tw[2 * j] = cos(2.0 * M_PI * (double)j / (double)N);
 				tw[2 * j + 1] = sin(2.0 * M_PI * (double)j / (double)N);
 			}
-			t->tw[k] = tw;
+			tabs.tw[k] = tw;
 		}
 		return 0;
 	}
-	if (!t->fw[k] && !(t->fw[k] = gsl_fft_real_wavetable_alloc(N)))
+	if (!tabs.fw[k] && !(tabs.fw[k] = gsl_fft_real_wavetable_alloc(N)))
 		return -1;
-	if (!t->bw[k] && !(t->bw[k] = gsl_fft_halfcomplex_wavetable_alloc(N)))
+	if (!tabs.bw[k] && !(tabs.bw[k] = gsl_fft_halfcomplex_wavetable_alloc(N)))
 		return -1;
 	return 0;
+}
+
+/* Level k's tables in t (the process's, tabs): -1 when out of memory. */
+static int fft_level(struct anvil_fastconv_fft *t, int k)
+{
+	if (packed((size_t)1 << k) ? t->cw[k] && t->tw[k] : t->fw[k] && t->bw[k])
+		return 0;
+	pthread_mutex_lock(&tabs.lock);
+	int st = tabs_level(k);
+	t->fw[k] = tabs.fw[k], t->bw[k] = tabs.bw[k];
+	t->cw[k] = tabs.cw[k], t->tw[k] = tabs.tw[k];
+	pthread_mutex_unlock(&tabs.lock);
+	return st;
 }
 
 void anvil_fastconv_free(struct anvil_fastconv *f)
@@ -338,6 +362,14 @@ void anvil_fastconv_reset(struct anvil_fastconv *f)
 double anvil_fastconv_next(const struct anvil_fastconv *f)
 {
 	return f->n < f->hi ? f->acc[f->n] : 0.0; /* beyond hi: no square has reached it */
+}
+
+int anvil_fastconv_at(const struct anvil_fastconv *f, size_t t, double *c)
+{
+	if (t > f->n)
+		return -1;
+	*c = t < f->hi ? f->acc[t] : 0.0; /* beyond hi: no square has reached it */
+	return 0;
 }
 
 size_t anvil_fastconv_count(const struct anvil_fastconv *f) { return f->n; }

@@ -37,7 +37,9 @@ void anvil_fastconv_free(struct anvil_fastconv *f); /* NULL is a no-op */
  * of capacity up to cap with squares summed directly up to direct_max
  * (as anvil_fastconv_alloc's; or fewer), each level's made when a
  * convolution first needs it (the same bits whenever made): shared by any
- * number of convolutions of one thread, which must not outlive them.
+ * number of convolutions of one thread, which must not outlive them.  The
+ * tables themselves are the process's, made once for every such handle
+ * (fastconv.c, tabs); a handle holds its thread's view of them.
  * NULL when out of memory. */
 struct anvil_fastconv_fft;
 struct anvil_fastconv_fft *anvil_fastconv_fft_alloc(size_t cap, size_t direct_max);
@@ -87,6 +89,11 @@ int anvil_fastconv_push(struct anvil_fastconv *f, double x);
  * returns 0, -1 when full or y_n != 0 on a single one, -2 when out of
  * memory, -3 when a lazy kernel's fill fails. */
 int anvil_fastconv_push_pair(struct anvil_fastconv *f, double x, double y);
+
+/* c_t for a target t already complete (t <= the count pushed) into *c:
+ * 0, or -1 when t is not (yet) complete.  The sums are final once their
+ * sources are pushed: a late reader sees the value next() gave. */
+int anvil_fastconv_at(const struct anvil_fastconv *f, size_t t, double *c);
 
 /* The number of values pushed. */
 size_t anvil_fastconv_count(const struct anvil_fastconv *f);

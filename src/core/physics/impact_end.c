@@ -72,6 +72,34 @@ static double far_of(const struct end_ctx *e, const double *F, const double *R)
 	return w;
 }
 
+/* The paper contact's far past at both off-grid offsets, d = dt/3 (R1)
+ * and 2 dt/3 (R2), in one sweep, each sum's dt taken out: far_of divided
+ * every term by dt, a division a term that bounded the sweep (a chattering
+ * thin plate's ends sum up to 5.5e5 nodes each, 374 ends a pass at h =
+ * 0.02 r0, 0.1 g at 10 m/s), and read P once for each table.  Two chains
+ * a sum (even and odd m) keep the adder busy.  The rounding is another
+ * one of the same size (a sum of k terms, relative k eps at worst). */
+static void far_of12(const struct end_ctx *e, const double *F, const double *R1,
+		     const double *R2, double *w1, double *w2)
+{
+	size_t k = e->k, m = 1;
+	double a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+	for (; m + 1 < e->m0; m += 2) {
+		size_t j = k - m; /* m's lag; m + 1's is j - 1 */
+		a0 += F[m] * (R1[j + 1] - 2.0 * R1[j] + R1[j - 1]);
+		b0 += F[m] * (R2[j + 1] - 2.0 * R2[j] + R2[j - 1]);
+		a1 += F[m + 1] * (R1[j] - 2.0 * R1[j - 1] + R1[j - 2]);
+		b1 += F[m + 1] * (R2[j] - 2.0 * R2[j - 1] + R2[j - 2]);
+	}
+	if (m < e->m0) {
+		size_t j = k - m;
+		a0 += F[m] * (R1[j + 1] - 2.0 * R1[j] + R1[j - 1]);
+		b0 += F[m] * (R2[j + 1] - 2.0 * R2[j] + R2[j - 1]);
+	}
+	*w1 = (a0 + a1) / e->s->dt;
+	*w2 = (b0 + b1) / e->s->dt;
+}
+
 /* far_of(P, R) + (far_of(Q, R2) - far_of(Q, R)) in one sweep (each sum in
  * far_of's order: the same bits, a third of the memory traffic). */
 static double far_of2(const struct end_ctx *e, const double *P, const double *Q,
@@ -101,6 +129,20 @@ static int far_exact(const struct end_ctx *e, int i, double *val)
 	if (d == 0.0 || d == dt) { /* on the grid: the weights */
 		double w = 0;
 		size_t sh = d == 0.0 ? 0 : 1;
+		if (!c->physical && !anvil_fastconv_at(c->fc, k + sh, &w)) {
+			/* the march's convolution at node k + sh less its near past
+			 * (m >= m0): O(IMPACT_END_NEAR), where the sum over the whole
+			 * past took O(k) and, on a chattering thin plate, a quarter of
+			 * the run (h = 0.02 r0, 0.1 g at 10 m/s: 374 ends of up to
+			 * 5.5e5 nodes each).  The convolution's rounding (eps log2 k
+			 * of sum |P g|, fastconv.h) stands for the direct sum's. */
+			if (impact_g_need(c, k + sh - e->m0 + 1))
+				return ANVIL_ENUM;
+			for (size_t m = e->m0; m < k + sh; m++)
+				w -= P[m] * c->g[k + sh - m];
+			*val = w;
+			return ANVIL_OK;
+		}
 		if (impact_g_need(c, k + sh))
 			return ANVIL_ENUM;
 		for (size_t m = 1; m < e->m0; m++)
@@ -193,7 +235,15 @@ static int end_ctx_init(struct end_ctx *e, const struct ctx *c, const struct pas
 	}
 	int st = ANVIL_OK;
 	for (int i = 0; i < 4 && e->m0 > 1 && !st; i++)
-		st = far_exact(e, i, &e->far[i]);
+		if (c->physical || i == 0 || i == 3)
+			st = far_exact(e, i, &e->far[i]);
+	if (!c->physical && e->m0 > 1 && !st) { /* the paper contact's off-grid pair */
+		const double *R1 = end_tab_get(c, s, 0, 1, s->dt / 3.0, k),
+			     *R2 = R1 ? end_tab_get(c, s, 0, 2, s->dt * 2 / 3.0, k) : NULL;
+		if (!R2)
+			return ANVIL_ENOMEM;
+		far_of12(e, s->P, R1, R2, &e->far[1], &e->far[2]);
+	}
 	/* a grown step: the frozen past (impact_grow.c), in the same cubic in
 	 * d, on the grid from hist, off it by its direct sums */
 	for (int i = 0; i < 4 && c->nfz && !st; i++) {
