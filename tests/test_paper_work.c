@@ -32,7 +32,9 @@
  * solves Zener's ODE and integrates the quasi-static anvil once a plan) to
  * the standalone ones, bit for bit: the layer row's work and price
  * (anvil_plan_paper_work, which integrates its own) and the bending
- * figure (anvil_plan_bending, which solves its own). */
+ * figure (anvil_plan_bending, which solves its own).
+ * Last, the runs the plan prices as ended by a budget (test_budgets,
+ * below): on thin plates of every material pair, they end on one. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -132,6 +134,113 @@ static int shared_estimates_hold(const struct anvil_plan *pl, const struct anvil
 	return ok_bend && ok_cost;
 }
 
+/* ---- the runs a budget ends (plan_paper.c, budget_tau, nodes_budget) ----
+ * Thin plates (h 0.02-0.3 r0, the material pairs, V0 and m as above,
+ * normal): the rows the plan prices as ended by a budget are run, and at
+ * least BUDGET_HELD of them must end on one (the solver's error says
+ * which), each in time: where the plan expects the contacts' budget, that
+ * one, within 2x of the plan's time; where it expects the steps' (long
+ * mode), either, within the first window (the contacts' budget often
+ * comes first there).  Counts and the march's simulated time, not seconds.
+ * Rows the plan prices as full runs are not run here: the chattering ones
+ * take seconds.  (3000 scenes: 36 and 68 rows so priced, 33 and 62 ended
+ * so, the contacts' at 0.95-1.06 times the plan's time.) */
+#define BUDGET_SCENES (getenv("ANVIL_TEST_NB") ? atoi(getenv("ANVIL_TEST_NB")) : 400)
+#define BUDGET_HELD 0.85
+static int thin_scene(unsigned long long *seed, struct anvil_scene *sc, char *what, size_t n)
+{
+	char h[32], v[32], m[32];
+	struct anvil_err e;
+	double hh = exp(log(0.02) + uniform(seed) * log(15.0));
+	double v0 = exp(log(1e-3) + uniform(seed) * log(1e6));
+	double m1 = exp(log(1e-4) + uniform(seed) * log(1e6));
+	const char *mi = materials[(int)(uniform(seed) * 7)], *ml = materials[(int)(uniform(seed) * 7)];
+	snprintf(h, sizeof h, "%.4gr0", hh);
+	snprintf(v, sizeof v, "%.4g m/s", v0);
+	snprintf(m, sizeof m, "%.4g kg", m1);
+	snprintf(what, n, "%s on %s, h %s, V0 %s, m %s", mi, ml, h, v, m);
+	anvil_scene_default(sc);
+	const char *kv[] = { "layer.thickness", h, "impact.velocity", v, "impactor.mass", m,
+			     "impactor.material", mi, "layer.material", ml, "effects.contact", "paper",
+			     NULL };
+	for (int i = 0; kv[i]; i += 2)
+		if (anvil_scene_set(sc, kv[i], kv[i + 1], "test", 0, &e))
+			return -1;
+	return 0;
+}
+
+/* The budget the solver's error names (ANVIL_BUDGET_*, 0: none) and the
+ * time it names, in r0/c2. */
+static int budget_ended(const struct anvil_err *e, const struct anvil_params *p, double *tau)
+{
+	const char *c = strstr(e->msg, "touch again more than"), *n = strstr(e->msg, "needs more than");
+	const char *t = c ? strstr(c, "by t = ") : n ? strstr(n, "near t = ") : NULL;
+	double us = NAN;
+	if (!t || sscanf(strchr(t, '=') + 1, "%lf", &us) != 1)
+		return 0;
+	*tau = us * 1e-6 * p->c2 / p->r0;
+	return c ? ANVIL_BUDGET_CONTACTS : ANVIL_BUDGET_STEPS;
+}
+
+/* Whether a run the plan expected budget w to end ended so in time. */
+static int budget_in_time(const struct anvil_paper_work *w, int got, double tau, double *q)
+{
+	if (w->budget == ANVIL_BUDGET_CONTACTS) {
+		*q = w->budget_tau / tau;
+		return got == ANVIL_BUDGET_CONTACTS && *q >= 0.5 && *q <= 2.0;
+	}
+	return got && tau <= w->budget_tau;
+}
+
+static void test_budgets(void)
+{
+	unsigned long long seed = 31;
+	int planned = 0, predicted[3] = { 0 }, ended[3] = { 0 }, in_time = 0;
+	double lo = INFINITY, hi = 0;
+	for (int i = 0; i < BUDGET_SCENES; i++) {
+		struct anvil_scene sc;
+		struct anvil_plan pl;
+		struct anvil_err e = { 0 };
+		char what[200];
+		if (thin_scene(&seed, &sc, what, sizeof what) || scene_plan(&sc, &pl, &e))
+			continue;
+		const struct anvil_plan_row *r = &pl.row[ANVIL_MODEL_LAYER];
+		planned++;
+		if (r->status || !r->run || r->method != ANVIL_METHOD_LAYER)
+			continue;
+		struct anvil_paper_work w;
+		anvil_plan_paper_work(&pl.pb, r, NULL, &w);
+		if (!w.budget)
+			continue;
+		predicted[w.budget]++;
+		struct anvil_solver *s = anvil_solver_alloc();
+		struct anvil_result res;
+		anvil_solver_set_cache_dir(s, NULL, NULL);
+		int st = anvil_solver_run(s, &pl, ANVIL_MODEL_LAYER, 0, &res, &e);
+		anvil_solver_free(s);
+		double tau = NAN, q = NAN;
+		int got = st < 0 ? budget_ended(&e, &pl.pb.p, &tau) : 0;
+		ended[w.budget] += got != 0;
+		int timely = budget_in_time(&w, got, tau, &q);
+		in_time += timely;
+		if (w.budget == ANVIL_BUDGET_CONTACTS && got == ANVIL_BUDGET_CONTACTS) {
+			lo = fmin(lo, q);
+			hi = fmax(hi, q);
+		}
+		if (!timely || getenv("ANVIL_TEST_DUMP"))
+			diag("budget %d expected by tau %.4g: %s: %s (%zu contacts)", w.budget,
+			     w.budget_tau, what, st < 0 ? e.msg : "ran", res.ncontacts);
+		anvil_result_free(&res);
+	}
+	int n = predicted[1] + predicted[2], got = ended[1] + ended[2];
+	diag("budgets: of %d thin-plate scenes, %d and %d rows priced as ended by the contacts' and the steps' budget, %d and %d ended on one; the contacts' time / the plan's %.2f-%.2f",
+	     planned, predicted[1], predicted[2], ended[1], ended[2], lo, hi);
+	ok(planned >= BUDGET_SCENES / 2 && predicted[1] >= 3 && predicted[2] >= 3 &&
+		   got >= BUDGET_HELD * n && in_time == got,
+	   "the runs the plan prices as ended by a budget end on one (%d of %d, %d in time; %d scenes planned)",
+	   got, n, in_time, planned);
+}
+
 int main(void)
 {
 	unsigned long long seed = 2024;
@@ -140,7 +249,7 @@ int main(void)
 								 { .name = "thin: responses" },
 								 { .name = "thin: evaluations" } };
 	int dump = getenv("ANVIL_TEST_DUMP") != NULL, ran = 0, corr = 0, planned = 0, same = 0;
-	plan(5);
+	plan(6);
 	for (int i = 0; i < NSCENES; i++) {
 		struct anvil_scene sc;
 		struct anvil_plan pl;
@@ -200,5 +309,6 @@ int main(void)
 	for (int i = 0; i < 3; i++)
 		ok(t[i]->within == t[i]->n, "the plan's %s within 2x of the solver's on %d of %d rows",
 		   t[i]->name, t[i]->within, t[i]->n);
+	test_budgets();
 	return done_testing();
 }

@@ -423,7 +423,14 @@ struct anvil_paper_work {
 	double responses; /* layer corrections computed (each with its twin) */
 	double evals;     /* their kernel evaluations */
 	double seconds;
+	/* a run the solver is expected to end on a budget (plan_paper.c): 0,
+	 * or ANVIL_BUDGET_CONTACTS (more than ANVIL_MAX_RUN_CONTACTS contacts,
+	 * about budget_tau, in r0/c2) or ANVIL_BUDGET_STEPS (long mode's
+	 * ANVIL_MAX_STEPS, in its first window) */
+	int budget;
+	double budget_tau;
 };
+enum { ANVIL_BUDGET_CONTACTS = 1, ANVIL_BUDGET_STEPS = 2 };
 void anvil_plan_paper_work(const struct anvil_problem *pb, const struct anvil_plan_row *r,
 			   const struct anvil_cache *cache, struct anvil_paper_work *w);
 /* The same with the quasi-static anvil's contact time ts_static (s,

@@ -92,10 +92,11 @@ static double paper_rounds(const struct anvil_wave_job *j, double n0)
  * rows at X = 2-28 ran 2-8 times the law (2-64 contacts; the old onset X
  * = 35 missed them: 0.02 r0, 1 g at 1 mm/s ran 1.37 s, priced 0.29); with
  * it 21 of the 27 that chattered are within 2x (0.20-2.07) and 14 of the
- * 20 with one contact at X >= 3 (0.33-3.8).  Not foreseen: runs the
- * solver ends early (its budget of 64 contacts, X = 28-440, or of 10^6
- * steps in long mode, X = 18-70) after 0.03-0.64 s, 9 grid rows priced
- * 3.9-50 times what they ran.  All of it times PAPER_MARCH_SCALE, fitted
+ * 20 with one contact at X >= 3 (0.33-3.8).  Runs the solver ends early
+ * (its budget of 64 contacts, or of 10^6 steps in long mode) after
+ * 0.03-0.64 s, 9 grid rows priced 3.9-50 times what they ran, are priced
+ * as what runs where foreseen (budget_tau, nodes_budget below: 8 of the
+ * 9, now 0.71-3.6).  All of it times PAPER_MARCH_SCALE, fitted
  * with the corrections' unit costs of plan.h: 0.45 (0.4 or 0.5 move the
  * counts within 2x by a row). */
 #define PAPER_MARCH_SCALE 0.45
@@ -179,6 +180,94 @@ static double corr_needed(const struct anvil_params *p, const struct anvil_probl
 	return anvil_plan_corr_evals(j->hh, p->nu, om, tq, pb->accuracy);
 }
 
+/* The run the contact's budget ends (solver: more than
+ * ANVIL_MAX_RUN_CONTACTS contacts).  Where the paper's contact chatters on
+ * a thin plate it comes back about once per PAPER_CHATTER_PERIOD r0/h (in
+ * units of r0/c2: the plate's bending time over the patch, r0^2/(h c2)):
+ * the grid's five rows that ended so (h = 0.02-0.1 r0, X = 28-440) failed
+ * at 0.71-0.88 times 64 such periods (0.63-3.5 ms).  They do so on the
+ * main's first round, before a twin, a second round or a later window is
+ * tried: what ran was the round's responses up to then and one impact
+ * marched to that time, where the plan had priced the whole band's rounds
+ * over the window that Zener's time gave (3.9-50 times their CPU).
+ * Which rows chatter that long is empirical, by Z = X E* / E (the Hertz
+ * contact's stiffness against the plate's: a soft impactor, pmma, makes a
+ * copper one's X with far fewer contacts): of the grid's rows (copper on
+ * steel, E* / E = 0.41) whose window outlasts the 64 periods, every one at
+ * Z >= PAPER_BUDGET_Z (X >= 97) ended on the budget (4 of 4); below it, at
+ * X = 28-70, 1 of 7 did (0.05 r0, 10 g at 1 m/s), the others ran on with
+ * 3-64 contacts and keep the full price.  On tests/test_paper_work.c's
+ * thin plates of every material pair (3000 scenes) 3 of the 36 rows so
+ * chosen ran on (45-60 contacts); at Z = 18-40 13 of 15 ended on it, but
+ * of the copper-on-steel grid's rows there only 1 of 6 did (so not
+ * lower); below Z = 13 none of 23 did (pmma impactors, 1-59 contacts;
+ * by X alone, X >= 100, they were chosen and ran on).  At Z >=
+ * PAPER_BUDGET_Z the contacts last about the job's contact time (Zener's
+ * on these plates) at one per PAPER_CONTACT_EVERY periods: the grid's two
+ * rows there that ran made 63 contacts in 56.5 periods and 19 in 17.9
+ * (0.90, 0.94); the five that failed had 62-2500 periods. */
+#define PAPER_CHATTER_PERIOD 0.8
+#define PAPER_CONTACT_EVERY 0.92
+#define PAPER_BUDGET_Z 40.0
+static double budget_tau(const struct anvil_params *p, double x, double ts)
+{
+	if (!(x * p->Estar / p->E >= PAPER_BUDGET_Z) || !isfinite(p->h))
+		return INFINITY;
+	double period = p->r0 / p->h, tau_s = ts * p->c2 / p->r0;
+	if (!(tau_s > ANVIL_MAX_RUN_CONTACTS * PAPER_CONTACT_EVERY * period))
+		return INFINITY;
+	return ANVIL_MAX_RUN_CONTACTS * PAPER_CHATTER_PERIOD * period;
+}
+
+/* The run the step's budget ends (solver: a long-mode contact whose force
+ * stays rough, so the step cannot grow and the nodes run out): on the
+ * grid, of the long-mode paper rows the refusal lets through (Y <
+ * PAPER_REFUSE_Y), every one at Y >= PAPER_NODES_Y whose Hertz time T is
+ * short against the plate's period over the patch, T c2 h / r0^2 <
+ * PAPER_NODES_T (2.5-6.3 there: 4 of 4), ended so after 0.03 s, priced
+ * 5.3-6.9 times that as a full run; the four there at 25-63 ran (0.29-0.40
+ * s), as did all 26 long-mode rows at Y = 100-223.  The first round's main
+ * then fails in its first window: budget_work over that window. */
+#define PAPER_NODES_Y 250.0
+#define PAPER_NODES_T 12.0
+static int nodes_budget(const struct anvil_params *p, const struct anvil_wave_job *j,
+			double n0, double x)
+{
+	return j->grows && n0 > ANVIL_MAX_STEPS && isfinite(p->h) &&
+	       x * p->r0 / p->h >= PAPER_NODES_Y && p->T * p->c2 * p->h / (p->r0 * p->r0) < PAPER_NODES_T;
+}
+
+/* The work of a run the contact's budget ends at tau_b (budget_tau, in
+ * r0/c2) added to w: the first round's main over the windows it reaches
+ * (all of them marched but the last, marched to tau_b) and the responses
+ * those windows need. */
+static void budget_work(const struct anvil_params *p, const struct anvil_problem *pb,
+			const struct anvil_wave_job *j, int layer_resp,
+			const struct anvil_cache *cache, double chat, double tau_b,
+			struct anvil_paper_work *w)
+{
+	double sec = 0;
+	int k = 0;
+	for (;; k++) {
+		double tau_end = anvil_wave_window(j, k), fixed;
+		int last = k + 1 >= j->attempts || tau_end >= tau_b;
+		sec += paper_impact(fmin(tau_end, tau_b) * p->r0 / p->c2, j, chat);
+		if (layer_resp && anvil_wave_needs_corr(p, j, tau_end)) {
+			double ev = corr_needed(p, pb, j, j->omega_idx, tau_end, cache, &fixed);
+			if (ev > 0 || fixed > 0)
+				w->responses += 1;
+			w->evals += ev;
+			sec += ev * PAPER_COST_EVAL + fixed;
+		}
+		if (last)
+			break;
+	}
+	w->windows = k + 1;
+	w->rounds = 1;
+	w->impacts += 1;
+	w->seconds += sec + PAPER_COST_HALFSPACE;
+}
+
 /* The work of job j (a wave run of the paper's contact) added to w. */
 static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job *j,
 		     int layer_resp, const struct anvil_cache *cache, double ts_static,
@@ -191,6 +280,18 @@ static void job_work(const struct anvil_problem *pb, const struct anvil_wave_job
 	double chat = x > PAPER_CHATTER_X && n0 <= ANVIL_MAX_STEPS
 			      ? fmin(PAPER_CHATTER_MAX, pow(x / PAPER_CHATTER_X, PAPER_CHATTER_P))
 			      : 1.0;
+	double tau_b = n0 <= ANVIL_MAX_STEPS ? budget_tau(p, x, fmax(j->ts, ts_static)) : INFINITY;
+	int budget = ANVIL_BUDGET_CONTACTS;
+	if (nodes_budget(p, j, n0, x)) {
+		tau_b = anvil_wave_window(j, 0);
+		budget = ANVIL_BUDGET_STEPS;
+	}
+	if (anvil_wave_window(j, nw - 1) >= tau_b) {
+		budget_work(p, pb, j, layer_resp, cache, chat, tau_b, w);
+		w->budget = budget;
+		w->budget_tau = tau_b;
+		return;
+	}
 	int corr = 0;
 	for (int k = 0; k < nw; k++)
 		corr |= layer_resp && anvil_wave_needs_corr(p, j, anvil_wave_window(j, k));
@@ -246,7 +347,7 @@ void anvil_plan_paper_work_ts(const struct anvil_problem *pb, const struct anvil
 	job_work(pb, &r->job, r->method == ANVIL_METHOD_LAYER, cache, ts_static, w);
 	/* the fallback (a late reflection: the half-space's contact outlasting
 	 * 2h/c1) when the contact the windows were chosen for reaches it */
-	if (r->fallback && fmax(r->job.ts, ts_static) >= 2.0 * pb->p.h / pb->p.c1) {
+	if (r->fallback && !w->budget && fmax(r->job.ts, ts_static) >= 2.0 * pb->p.h / pb->p.c1) {
 		struct anvil_paper_work f;
 		anvil_plan_paper_work_ts(pb, &(struct anvil_plan_row){ .method = ANVIL_METHOD_LAYER,
 								      .job = r->fallback_job },

@@ -324,10 +324,19 @@ double anvil_plan_marched(double window_s, double dt, double nsteps, int grows)
  * window there, Zener's estimate of a thin plate's contact being 2-3.7
  * times long: the table stops where the march does).  Rows of 0.02 s or
  * more within 2x of their CPU: 308 of 405 before, 403 after (0.1 s or
- * more: 185 of 207, 205). */
+ * more: 185 of 207, 205).  The far field's (IMPACT_PHYS_SCALE_FAR, plan31)
+ * then 0.5, not 1: the long-mode rows (first window over 10^6 steps)
+ * were priced at a median 1.3-2.1 times their CPU per half decade of
+ * steps against 0.8-0.9 at 10^4.5-10^5.5, up to 2.64 on h = 0.02 r0,
+ * 100 kg (lambda* 5.6e4, 5e8 steps: the far sums' levels grow with the
+ * window's log, the Clenshaw sums did not as fast); with 0.5 the grid's
+ * rows within 2x: 174 -> 177 of 181 (0.1 s or more), 327 -> 330 of 334
+ * (0.02 s), the highest 2.64 -> 2.15 (the rows at 6e5 steps, whose
+ * table the contact's early end stops: above); 0.25 gained a row more
+ * but took two long-mode rows to 0.56-0.60. */
 #define IMPACT_PHYS_SCALE_NODE 0.73
 #define IMPACT_PHYS_SCALE_HIST 0.51
-#define IMPACT_PHYS_SCALE_FAR 1.0
+#define IMPACT_PHYS_SCALE_FAR 0.5
 #define IMPACT_PHYS_SCALE_TAB 0.55
 double anvil_plan_impact_cost(double window_s, double dt, int layer, double nsteps)
 {
