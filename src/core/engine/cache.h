@@ -55,7 +55,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 25 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 26 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -97,7 +97,10 @@ struct anvil_halfspace; /* halfspace.h */
 				 a thick layer's band past its poles in one
 				 starting piece, kernel.h anvil_kband_poles; 25:
 				 the lifted band's sin and cos by angle sums,
-				 green_spectrum.c lifted_piece: other bits) */
+				 green_spectrum.c lifted_piece: other bits; 26:
+				 E2 from E1 (kernel.h anvil_kernel_exp2) and
+				 the tail's exponentials from its pieces'
+				 centres: other bits) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */
