@@ -410,6 +410,10 @@ static cplx integrand(double x, void *vq)
 			q->seg[KM_VALS * (q->seg_at - 1) + 2] = dk;
 		}
 	}
+	/* a point's real 1/(2 pi) as a real factor: the complex product with
+	 * it (imaginary part 0) rounds the same */
+	if (!(q->patch > 0))
+		return w * ZHAT_POINT * k * dk;
 	return w * load_c(q, k, n) * k * dk;
 }
 

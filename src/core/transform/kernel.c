@@ -46,16 +46,6 @@ cplx anvil_kernel_zhat_c_sc(cplx k, double sx, double cx)
 	return 3.0 * (sk - k * ck) * anvil_kernel_recip(2.0 * M_PI * a * k);
 }
 
-cplx anvil_kernel_cmplx(double re, double im)
-{
-	/* a complex has the representation of double[2] (C11 6.2.5p13) */
-	cplx z;
-	double *p = (double *)&z;
-	p[0] = re;
-	p[1] = im;
-	return z;
-}
-
 cplx anvil_kernel_expm1(cplx z)
 {
 	double x = creal(z), y = cimag(z), s = sin(0.5 * y);

@@ -22,8 +22,17 @@ double complex anvil_kernel_zhat_c_sc(double complex k, double sx, double cx);
 
 /* re + i im with the sign of a zero im kept (C11's CMPLX, which not every
  * C library offers, e.g. glibc 2.36 to clang 14): the static field's branch
- * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it. */
-double complex anvil_kernel_cmplx(double re, double im);
+ * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it.  Inline:
+ * the lifted band's integrand makes two a node (green_spectrum.c). */
+static inline double complex anvil_kernel_cmplx(double re, double im)
+{
+	/* a complex has the representation of double[2] (C11 6.2.5p13) */
+	double complex z;
+	double *p = (double *)&z;
+	p[0] = re;
+	p[1] = im;
+	return z;
+}
 
 /* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
 double complex anvil_kernel_expm1(double complex z);
