@@ -56,7 +56,7 @@ struct anvil_halfspace; /* halfspace.h */
 
 #define ANVIL_CACHE_STEPS 4  /* grid points per octave */
 #define ANVIL_CACHE_SLOTS 24 /* responses kept in memory */
-#define ANVIL_CACHE_FORMAT 26 /* disk format version (2: the window index in the key;
+#define ANVIL_CACHE_FORMAT 27 /* disk format version (2: the window index in the key;
 				 3: the twin flag; 4: the load and patch radius; 5: the
 				 plate's blended join at T1, plate.c: a response from
 				 before holds the stepped join and other bits; 6: the
@@ -101,7 +101,9 @@ struct anvil_halfspace; /* halfspace.h */
 				 green_spectrum.c lifted_piece: other bits; 26:
 				 the checksum's FNV-1a on 64-bit words, cache.c,
 				 and the spline's c_i after the tables, green.h
-				 curv) */
+				 curv; 27: E2 from E1 (kernel.h
+				 anvil_kernel_exp2) and the tail's exponentials
+				 from its pieces' centres: other bits) */
 
 /* The grid: 2^(idx / ANVIL_CACHE_STEPS), and the smallest idx whose grid
  * value is >= x > 0. */

@@ -201,18 +201,27 @@ int anvil_field_kgrid_init(struct anvil_field_kgrid *g, const struct anvil_field
 	g->wt = fmin(2.0, 8.0 / (1.0 + rmax));
 	g->ktail = lv->ktail;
 	g->L = lv->L;
-	double nbd = ceil(g->kb / wb), ntd = ceil(g->ktail / g->wt);
+	/* the poles' part of the band in pole-distance panels; past it (the
+	 * band's + 3 is 3/hh or less where hh > 1: kernel.h
+	 * anvil_kband_poles) the kernel has no pole and the panels are the
+	 * tail's: on h = 100 r0 the band's last 3 wide held 5 of 33 panels */
+	double kp = anvil_kband_poles(om, om, nu, f->hh, f->cr);
+	double nbd = ceil(kp / wb), npd = kp < g->kb ? ceil((g->kb - kp) / g->wt) : 0,
+	       ntd = ceil(g->ktail / g->wt);
 	/* compared as doubles before the casts: a radius of 1e6 r0 asks for
 	 * more panels than size_t holds */
-	if (!(nbd + ntd <= KGRID_NP_MAX))
+	if (!(nbd + npd + ntd <= KGRID_NP_MAX))
 		return ANVIL_EINVAL;
-	size_t nb = (size_t)nbd, nt = (size_t)ntd;
-	g->np = nb + nt;
+	size_t nb = (size_t)nbd, npl = (size_t)npd, nt = (size_t)ntd;
+	g->np = nb + npl + nt;
 	g->a = malloc((g->np + 1) * sizeof *g->a);
 	if (!g->a)
 		return ANVIL_ENOMEM;
 	for (size_t i = 0; i <= nb; i++)
-		g->a[i] = g->kb * (double)i / (double)nb;
+		g->a[i] = kp * (double)i / (double)nb;
+	for (size_t i = 1; i <= npl; i++)
+		g->a[nb + i] = i == npl ? g->kb : kp + (g->kb - kp) * (double)i / (double)npl;
+	nb += npl;
 	g->wt = g->ktail / (double)nt;
 	for (size_t i = 1; i <= nt; i++)
 		g->a[nb + i] = g->kb + g->wt * (double)i;

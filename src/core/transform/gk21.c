@@ -39,16 +39,6 @@ void anvil_gk21_node(double a, double b, int j, double *x, double *wk, double *w
 	*wgauss = i % 2 == 1 ? h * wg[i / 2] : 0.0;
 }
 
-/* anvil_gk21_complex_floor's order: the centre, the Gauss nodes' pairs
- * (c - h xgk[i], c + h xgk[i], i odd), then the Kronrod-only ones (i even) */
-int anvil_gk21_called(int n)
-{
-	if (n == 0)
-		return 10;
-	int pair = (n - 1) / 2, i = pair < 5 ? 2 * pair + 1 : 2 * (pair - 5);
-	return (n - 1) % 2 == 0 ? i : 20 - i;
-}
-
 void anvil_gk21_called_nodes(double a, double b, double *x)
 {
 	double c = 0.5 * (a + b), h = 0.5 * (b - a);

@@ -22,8 +22,15 @@ void anvil_gk21_node(double a, double b, int j, double *x, double *wk, double *w
 /* The node (anvil_gk21_node's j) that anvil_gk21_complex_floor evaluates
  * at its call n (0..20): always the same order, so that a caller can
  * prepare per-node factors of a panel before the rule asks for them
- * (green_spectrum.c). */
-int anvil_gk21_called(int n);
+ * (green_spectrum.c).  Inline: its callers ask at every node of a piece
+ * (a call a node was 1 % of a thin plate's instructions). */
+static inline int anvil_gk21_called(int n)
+{
+	if (n == 0)
+		return 10;
+	int pair = (n - 1) / 2, i = pair < 5 ? 2 * pair + 1 : 2 * (pair - 5);
+	return (n - 1) % 2 == 0 ? i : 20 - i;
+}
 
 /* The 21 abscissae of [a, b] in that order, x[n] = anvil_gk21_node's x
  * for j = anvil_gk21_called(n) (the same bits, without a call a node). */

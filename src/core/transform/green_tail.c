@@ -222,7 +222,8 @@ cplx green_tail_w(const struct green_tail *t, double k)
  * above N0 to zeros first, which leaves them exactly zero (the same bits
  * as its own recurrence). */
 #define TAIL_LANES 3
-static void tail_w_lanes(const struct green_tail *t, const double *k, int n, cplx *out)
+static void tail_w_lanes(const struct green_tail *t, const double *k, const double *e, int n,
+			 cplx *out)
 {
 	const cplx *c[TAIL_LANES];
 	double x[TAIL_LANES], q[TAIL_LANES], kk[TAIL_LANES];
@@ -249,11 +250,13 @@ static void tail_w_lanes(const struct green_tail *t, const double *k, int n, cpl
 	cplx s[TAIL_LANES] = { x[0] * b1a - b2a + c[0][0], x[1] * b1b - b2b + c[1][0],
 			       x[2] * b1c - b2c + c[2][0] };
 	for (int i = 0; i < n; i++)
-		out[i] = s[i] * (q[i] * q[i] * exp(-2.0 * t->hh * kk[i]) / kk[i]);
+		out[i] = s[i] * (q[i] * q[i] * (e ? e[i] : exp(-2.0 * t->hh * kk[i])) / kk[i]);
 }
 
-void green_tail_w_n(const struct green_tail *t, const double *k, int n, cplx *out)
+void green_tail_w_n(const struct green_tail *t, const double *k, const double *e, int n,
+		    cplx *out)
 {
 	for (int i = 0; i < n; i += TAIL_LANES)
-		tail_w_lanes(t, k + i, n - i < TAIL_LANES ? n - i : TAIL_LANES, out + i);
+		tail_w_lanes(t, k + i, e ? e + i : NULL, n - i < TAIL_LANES ? n - i : TAIL_LANES,
+			     out + i);
 }

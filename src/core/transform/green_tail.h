@@ -82,7 +82,10 @@ int green_tail_count(double hh, double kb, double kend);
  * fitted). */
 double complex green_tail_w(const struct green_tail *t, double k);
 
-/* green_tail_w at k[0..n-1] into out (the same bits, faster). */
-void green_tail_w_n(const struct green_tail *t, const double *k, int n, double complex *out);
+/* green_tail_w at k[0..n-1] into out (the same bits, faster); e[i], when
+ * not NULL, is exp(-2 hh k[i]) as the caller made it (green_spectrum.c:
+ * from a piece's centre and its offsets), else exp is taken here. */
+void green_tail_w_n(const struct green_tail *t, const double *k, const double *e, int n,
+		    double complex *out);
 
 #endif

@@ -46,16 +46,6 @@ cplx anvil_kernel_zhat_c_sc(cplx k, double sx, double cx)
 	return 3.0 * (sk - k * ck) * anvil_kernel_recip(2.0 * M_PI * a * k);
 }
 
-cplx anvil_kernel_cmplx(double re, double im)
-{
-	/* a complex has the representation of double[2] (C11 6.2.5p13) */
-	cplx z;
-	double *p = (double *)&z;
-	p[0] = re;
-	p[1] = im;
-	return z;
-}
-
 cplx anvil_kernel_expm1(cplx z)
 {
 	double x = creal(z), y = cimag(z), s = sin(0.5 * y);
@@ -119,16 +109,22 @@ cplx anvil_kernel_rayleigh_c(cplx a, cplx b, double kap2, cplx gam, cplx X)
 	return b * Q * anvil_kernel_recip(g2X);
 }
 
-cplx anvil_kernel_tdiff(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx E1, cplx E2,
-			cplx ip12)
+void anvil_kernel_exp2(cplx al1, cplx al2, cplx b, double kap2, double hh, cplx E1, cplx m1,
+		       cplx *E2, cplx *m2, cplx *diff)
 {
 	/* alpha2 - alpha1 = (1 - kappa^2) s^2 / (alpha1 + alpha2): no cancellation */
 	cplx dal = (1.0 - kap2) * b * anvil_kernel_recip(al1 + al2), E, m;
 	if (norm2(hh * dal) < 1.0) {
 		anvil_kernel_exp_1m(-hh * dal, &E, &m);
-		return 2.0 * E1 * m * ip12;
+		*diff = E1 * m;
+		*E2 = E1 * E;
+		/* 1 - E1 E = (1 - E1) + E1 (1 - E), both parts O(hh alpha) where
+		 * E2 is near 1: no cancellation unless |alpha2| << |alpha1| */
+		*m2 = m1 + *diff;
+		return;
 	}
-	return 2.0 * (E1 - E2) * ip12;
+	anvil_kernel_exp_1m(-hh * al2, E2, m2);
+	*diff = E1 - *E2;
 }
 
 /* 1.6 max(omega/c_R, k_flex): where the Lamb-mode poles end (kernel.h) */

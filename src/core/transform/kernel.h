@@ -22,8 +22,17 @@ double complex anvil_kernel_zhat_c_sc(double complex k, double sx, double cx);
 
 /* re + i im with the sign of a zero im kept (C11's CMPLX, which not every
  * C library offers, e.g. glibc 2.36 to clang 14): the static field's branch
- * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it. */
-double complex anvil_kernel_cmplx(double re, double im);
+ * cuts rely on -0.0 (field_kernel.c); x + I * y need not keep it.  Inline:
+ * the lifted band's integrand makes two a node (green_spectrum.c). */
+static inline double complex anvil_kernel_cmplx(double re, double im)
+{
+	/* a complex has the representation of double[2] (C11 6.2.5p13) */
+	double complex z;
+	double *p = (double *)&z;
+	p[0] = re;
+	p[1] = im;
+	return z;
+}
 
 /* exp(z) - 1 without cancellation for small |z| (C11 has no cexpm1). */
 double complex anvil_kernel_expm1(double complex z);
@@ -58,13 +67,15 @@ double complex anvil_kernel_rayleigh(double a, double complex b, double kap2,
 double complex anvil_kernel_rayleigh_c(double complex a, double complex b, double kap2,
 				       double complex gam, double complex X);
 
-/* t2 - t1, t_j = (1 - E_j)/(1 + E_j), E_j = exp(-hh alpha_j), ip12 = 1/(p1 p2), p_j = 1 + E_j:
- * through exp(-hh (alpha2 - alpha1)) - 1 where E1 and E2 are close (their
- * difference would cancel), directly where they are not (there the ratio
- * can overflow while E1 underflows: 0 * inf). */
-double complex anvil_kernel_tdiff(double complex al1, double complex al2, double complex b,
-				  double kap2, double hh, double complex E1, double complex E2,
-				  double complex ip12);
+/* E2 = exp(-hh alpha2), m2 = 1 - E2 and diff = E1 - E2 (d = t2 - t1 = 2 diff/(p1 p2),
+ * p_j = 2 - m_j) from E1 = exp(-hh alpha1) and m1 = 1 - E1: where E1 and E2
+ * are close (|hh (alpha2 - alpha1)| < 1, their difference would cancel)
+ * through E = exp(-hh (alpha2 - alpha1)), E2 = E1 E, diff = E1 (1 - E),
+ * m2 = m1 + diff, one exponential where there were two; directly
+ * elsewhere (there exp(-hh alpha2)/E1 can overflow while E1 underflows). */
+void anvil_kernel_exp2(double complex al1, double complex al2, double complex b, double kap2,
+		       double hh, double complex E1, double complex m1, double complex *E2,
+		       double complex *m2, double complex *diff);
 
 /* The band of wavenumbers that holds the Lamb-mode poles at angular
  * frequency omega (units c2 = r0 = 1): 1.6 max(omega/c_R, k_flex) + 3, with

@@ -11,19 +11,19 @@ typedef double complex cplx;
 /* The layer's part of the solve, from alpha_j, gamma, X and R. */
 static void layer_solve(struct anvil_layer_bc *bc)
 {
-	cplx m1, m2; /* 1 - E_j */
+	cplx m1, m2, diff; /* 1 - E_j, E1 - E2 */
 	double hh = bc->hh;
 	/* E_j itself, not 1 - m_j: that would leave rounding noise (1e-16)
 	 * where E1 is 1e-23, later multiplied by a large exp(-hh (alpha2 - alpha1)) */
 	anvil_kernel_exp_1m(-hh * bc->al1, &bc->E1, &m1);
-	anvil_kernel_exp_1m(-hh * bc->al2, &bc->E2, &m2);
+	anvil_kernel_exp2(bc->al1, bc->al2, bc->b, bc->kap2, hh, bc->E1, m1, &bc->E2, &m2, &diff);
 	bc->p1 = 2.0 - m1;
 	bc->p2 = 2.0 - m2;
 	cplx ip1 = anvil_kernel_recip(bc->p1), ip2 = anvil_kernel_recip(bc->p2);
 	bc->t1 = m1 * ip1;
 	bc->t2 = m2 * ip2;
 	bc->u1 = 2.0 * bc->E1 * ip1;
-	bc->d = anvil_kernel_tdiff(bc->al1, bc->al2, bc->b, bc->kap2, hh, bc->E1, bc->E2, ip1 * ip2);
+	bc->d = 2.0 * diff * (ip1 * ip2);
 	bc->Xd = bc->X * bc->d;
 	bc->den1 = bc->t2 * bc->R + bc->Xd;
 	bc->den2 = bc->t1 * bc->R - bc->Xd;
@@ -31,7 +31,10 @@ static void layer_solve(struct anvil_layer_bc *bc)
 
 /* Every quotient through one reciprocal (kernel.h: anvil_kernel_recip) and
  * each E_j with its 1 - E_j from one exponential (anvil_kernel_exp_1m):
- * that halved the cost of an evaluation (scripts/bench). */
+ * that halved the cost of an evaluation (scripts/bench); E2 from E1 where
+ * the difference's exponential is taken anyway (anvil_kernel_exp2): on
+ * h = 0.02 r0, 100 kg at 10 m/s the kernel's instructions fell by 8.6 %,
+ * the run's by 3.5 %. */
 void anvil_layer_bc_solve(double k, cplx s, double kap2, double hh, struct anvil_layer_bc *bc)
 {
 	double a = k * k;

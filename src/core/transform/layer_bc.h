@@ -19,7 +19,7 @@
  *   den1 = t2 R + X d (symmetric),  den2 = t1 R - X d (antisymmetric),
  * t_j = (1 - E_j)/(1 + E_j) = tanh(alpha_j hh/2), d = t2 - t1.  Everything is
  * written with E_j (|E_j| <= 1), expm1 for 1 - E_j and d from
- * anvil_kernel_tdiff, so nothing overflows and nothing cancels whatever
+ * anvil_kernel_exp2, so nothing overflows and nothing cancels whatever
  * hh |alpha| is; B1, B2 and the layer's difference from the half-space
  * are O(E) and formed from u1 = 1 - t1 and d without cancellation. */
 #ifndef ANVIL_LAYER_BC_H
