@@ -131,10 +131,12 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 	fprintf(f, "  %-*s %-10s %-18s ~%s", w, nm, anvil_method_name(r->method),
 		r->exact ? "exact" : (snprintf(e, sizeof e, "within ~%.2g %%", 100 * r->model_err), e),
 		cost_text(c, sizeof c, r->cost));
-	if (r->cost_full > 1.5 * r->cost)
+	if (r->cost_full > 1.5 * r->cost && r->cost > 0) /* a refusal costs 0: no "infx" */
 		fprintf(f, "  (%s model: ~%s, %.0fx)", anvil_model_name(m),
 			cost_text(full, sizeof full, r->cost_full), r->cost_full / r->cost);
-	if (r->method == ANVIL_METHOD_LAYER && m == ANVIL_MODEL_LAYER && r->cost_full > 0)
+	/* a refused row computes no response: no tag saying it will */
+	if (r->method == ANVIL_METHOD_LAYER && m == ANVIL_MODEL_LAYER && r->cost_full > 0 &&
+	    r->status >= 0)
 		fprintf(f, "  [layer response %s]", cached_text(r->cached));
 	fprintf(f, "\n      %s\n", anvil_plan_why_text(r->why));
 	fig_list(f, pl, r->fig, r->nfig);
