@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fastconv.h"
 #include "tap.h"
@@ -243,6 +244,57 @@ static void test_at(size_t N)
 	free(c);
 }
 
+/* c_0 .. c_{N-1} of a pair (FFT squares, packed levels too) into c. */
+static void pair_run(const double *x, const double *g, size_t N, double *c)
+{
+	struct anvil_fastconv *f = anvil_fastconv_alloc_pair(g, g, N, 0, NULL);
+	for (size_t n = 0; n < N; n++) {
+		c[n] = anvil_fastconv_next(f);
+		anvil_fastconv_push_pair(f, x[n], 0.5 * x[n]);
+	}
+	anvil_fastconv_free(f);
+}
+
+/* The thread's pool of blocks (fastconv.c): a freed block comes back to
+ * the next request that fits, and a convolution on blocks left full of
+ * NaN by another user gives the bits of one on fresh memory. */
+static void test_pool(void)
+{
+	size_t N = 20000, nb = 0;
+	double *x = malloc(N * sizeof *x), *g = malloc(N * sizeof *g);
+	double *c1 = malloc(N * sizeof *c1), *c2 = malloc(N * sizeof *c2);
+	unsigned long long s = 7;
+	for (size_t i = 0; i < N; i++) {
+		x[i] = urand(&s);
+		g[i] = urand(&s) / (1.0 + 0.01 * (double)i);
+	}
+	void *b = anvil_fastconv_block(300000);
+	anvil_fastconv_block_free(b, 300000);
+	void *b2 = anvil_fastconv_block(270000);
+	ok(b2 == b, "a freed block serves the next request that fits");
+	anvil_fastconv_block_free(b2, 270000);
+	pair_run(x, g, N, c1);
+	/* every block of the pool taken, poisoned and given back */
+	double *blk[64];
+	size_t sz[64];
+	for (size_t bytes = (size_t)1 << 16; bytes <= ((size_t)1 << 20); bytes *= 2)
+		for (int k = 0; k < 6 && nb < 64; k++) {
+			sz[nb] = bytes;
+			blk[nb] = anvil_fastconv_block(bytes);
+			for (size_t i = 0; i < bytes / sizeof(double); i++)
+				blk[nb][i] = NAN;
+			nb++;
+		}
+	for (size_t i = 0; i < nb; i++)
+		anvil_fastconv_block_free(blk[i], sz[i]);
+	pair_run(x, g, N, c2);
+	size_t same = 0;
+	for (size_t n = 0; n < N; n++)
+		same += memcmp(&c1[n], &c2[n], sizeof c1[n]) == 0;
+	ok(same == N, "a convolution on poisoned pool blocks: the same bits (%zu of %zu)", same, N);
+	free(x), free(g), free(c1), free(c2);
+}
+
 int main(void)
 {
 	/* the bound: eps log2(N) times a small constant (rounding of the FFT) */
@@ -256,6 +308,7 @@ int main(void)
 	test_lazy(3000, 0);
 	test_lazy(1000, (size_t)-1);
 	test_at(5000);
+	test_pool();
 	ok(anvil_fastconv_alloc(NULL, 0, 0) == NULL, "capacity 0 is refused");
 	anvil_fastconv_free(NULL);
 	plan(tap_n);

@@ -35,7 +35,10 @@ struct anvil_fastconv_fft {
  * and a little less from 2048 or 8192, and N = 386000 (the paper's
  * chattering rows) about 1.5 times.  Another rounding than the real
  * transform's, of the same size (eps log2(2B) sum |x g|:
- * tests/test_fastconv.c). */
+ * tests/test_fastconv.c).  GSL's radix-2 transforms stay slower at every
+ * packed size (bench_conv fft: 2B = 4096 .. 2^20, complex radix-2 1.5-4.7
+ * times, real radix-2 1.8-7.5 times the packed mixed-radix one), and a
+ * Stockham radix-4 written out gave its bits at its speed (-O2). */
 #ifndef FASTCONV_PACK
 #define FASTCONV_PACK 4096
 #endif
@@ -45,6 +48,103 @@ static int packed(size_t B)
 	return 2 * B >= FASTCONV_PACK;
 }
 
+/* The thread's pool of big blocks: a chattering row runs five or six
+ * impacts of two passes each, every pass a new convolution of up to a
+ * million steps, and each fresh block from the OS cost a page fault (and
+ * a memory-cgroup charge) per 4 kB page it touched: 16 % of 0.02 r0,
+ * 1 g at 0.1 m/s, user + system (measured).  A block freed here is kept
+ * for the thread's next request that fits, its pages already mapped.
+ * Sizes rounded up to a power of two (the passes' capacities differ by
+ * their steps; malloc maps the rounding's pages only when touched), the
+ * smallest block that fits is taken, and the pool holds at most
+ * POOL_BLOCKS blocks and POOL_BYTES bytes (the oldest go first).  Per
+ * thread (impacts run side by side), freed with it.  The contents are
+ * whatever the last user left: callers zero what they read. */
+#define POOL_MIN ((size_t)1 << 16)
+#define POOL_BLOCKS 32
+#define POOL_BYTES ((size_t)1 << 29)
+
+struct pool {
+	size_t n, bytes;
+	void *p[POOL_BLOCKS];
+	size_t sz[POOL_BLOCKS];
+};
+
+static pthread_key_t pool_key;
+static pthread_once_t pool_once = PTHREAD_ONCE_INIT;
+static int pool_ok;
+
+static void pool_free(void *arg)
+{
+	struct pool *q = arg;
+	for (size_t i = 0; i < q->n; i++)
+		free(q->p[i]);
+	free(q);
+}
+
+static void pool_init(void) { pool_ok = !pthread_key_create(&pool_key, pool_free); }
+
+static struct pool *pool_of(void)
+{
+	pthread_once(&pool_once, pool_init);
+	if (!pool_ok)
+		return NULL;
+	struct pool *q = pthread_getspecific(pool_key);
+	if (!q && (q = calloc(1, sizeof *q)) && pthread_setspecific(pool_key, q)) {
+		free(q);
+		q = NULL;
+	}
+	return q;
+}
+
+static size_t block_size(size_t bytes)
+{
+	size_t sz = POOL_MIN;
+	while (sz < bytes)
+		sz *= 2;
+	return sz;
+}
+
+void *anvil_fastconv_block(size_t bytes)
+{
+	if (bytes < POOL_MIN || bytes > POOL_BYTES)
+		return malloc(bytes);
+	size_t sz = block_size(bytes);
+	struct pool *q = pool_of();
+	size_t best = q ? q->n : 0;
+	for (size_t i = 0; q && i < q->n; i++)
+		if (q->sz[i] >= sz && (best == q->n || q->sz[i] < q->sz[best]))
+			best = i;
+	if (!q || best == q->n)
+		return malloc(sz);
+	void *b = q->p[best];
+	q->bytes -= q->sz[best];
+	q->n--;
+	memmove(q->p + best, q->p + best + 1, (q->n - best) * sizeof *q->p);
+	memmove(q->sz + best, q->sz + best + 1, (q->n - best) * sizeof *q->sz);
+	return b;
+}
+
+void anvil_fastconv_block_free(void *b, size_t bytes)
+{
+	struct pool *q = b && bytes >= POOL_MIN && bytes <= POOL_BYTES ? pool_of() : NULL;
+	if (!q) {
+		free(b);
+		return;
+	}
+	size_t sz = block_size(bytes);
+	while (q->n && (q->n == POOL_BLOCKS || q->bytes + sz > POOL_BYTES)) {
+		free(q->p[0]); /* the oldest */
+		q->bytes -= q->sz[0];
+		q->n--;
+		memmove(q->p, q->p + 1, q->n * sizeof *q->p);
+		memmove(q->sz, q->sz + 1, q->n * sizeof *q->sz);
+	}
+	q->p[q->n] = b, q->sz[q->n] = sz;
+	q->bytes += sz;
+	q->n++;
+}
+
 /* Levels at most: squares of side up to 2^62. */
 #define FASTCONV_LEVELS 63
 
@@ -52,8 +152,10 @@ static int packed(size_t B)
 struct level {
 	double *spec[2]; /* FFT of g_0..g_{2B-1}, per kernel: halfcomplex (mixed-radix
 			  * packing), or on a packed level X_0 .. X_B complex */
-	gsl_fft_real_workspace *ws; /* GSL wants one of the transform's own size */
-	gsl_fft_complex_workspace *cws; /* a packed level's, size B */
+	/* GSL wants one of the transform's own size: the convolution's
+	 * scratch (one level at a time), n set to it */
+	gsl_fft_real_workspace ws;
+	gsl_fft_complex_workspace cws; /* a packed level's, size B */
 };
 
 struct anvil_fastconv {
@@ -68,7 +170,8 @@ struct anvil_fastconv {
 	size_t have;  /* a lazy kernel's entries made */
 	double *x[2]; /* pushed values, cap */
 	double *acc;  /* partial sums c_n, cap */
-	double *buf[2]; /* scratch, 2 B_max */
+	double *buf[2]; /* scratch, 2 B_max + 2 */
+	double *scr;    /* the FFT's scratch, 2 B_max */
 	struct level *lev; /* lev[k].spec[0] NULL: level k is summed directly */
 	int nlev;
 	struct anvil_fastconv_fft *fft; /* the tables: shared, or own */
@@ -177,24 +280,26 @@ static int fft_level(struct anvil_fastconv_fft *t, int k)
 	return st;
 }
 
+/* Level k's spectrum, 2B + 2 values; the buffers, 2 B_max + 2. */
+static size_t spec_bytes(int k) { return ((size_t)2 << k) * sizeof(double) + 2 * sizeof(double); }
+static size_t buf_bytes(int nlev) { return spec_bytes(nlev); }
+
 void anvil_fastconv_free(struct anvil_fastconv *f)
 {
 	if (!f)
 		return;
-	for (int k = 0; f->lev && k < f->nlev; k++) {
-		free(f->lev[k].spec[0]);
-		free(f->lev[k].spec[1]);
-		gsl_fft_real_workspace_free(f->lev[k].ws);
-		gsl_fft_complex_workspace_free(f->lev[k].cws);
-	}
+	for (int k = 0; f->lev && k < f->nlev; k++)
+		for (int i = 0; i < 2; i++)
+			anvil_fastconv_block_free(f->lev[k].spec[i], spec_bytes(k));
 	free(f->lev);
 	anvil_fastconv_fft_free(f->own);
 	for (int i = 0; i < 2; i++) {
-		free(f->own_g[i]);
-		free(f->x[i]);
-		free(f->buf[i]);
+		anvil_fastconv_block_free(f->own_g[i], f->cap * sizeof *f->own_g[i]);
+		anvil_fastconv_block_free(f->x[i], f->cap * sizeof *f->x[i]);
+		anvil_fastconv_block_free(f->buf[i], buf_bytes(f->nlev));
 	}
-	free(f->acc);
+	anvil_fastconv_block_free(f->scr, buf_bytes(f->nlev));
+	anvil_fastconv_block_free(f->acc, f->cap * sizeof *f->acc);
 	free(f);
 }
 
@@ -250,17 +355,18 @@ static int level_init(struct anvil_fastconv *f, int k)
 	struct level *l = &f->lev[k];
 	if (fft_level(f->fft, k))
 		return -1;
-	if (packed(B) ? !(l->cws = gsl_fft_complex_workspace_alloc(B))
-		      : !(l->ws = gsl_fft_real_workspace_alloc(2 * B)))
-		return -1;
+	l->cws = (gsl_fft_complex_workspace){ .n = B, .scratch = f->scr };
+	l->ws = (gsl_fft_real_workspace){ .n = 2 * B, .scratch = f->scr };
 	for (int i = 0; i < f->nk; i++) {
-		double *sp = l->spec[i] = calloc(2 * B + 2, sizeof *sp);
+		double *sp = l->spec[i] = anvil_fastconv_block(spec_bytes(k));
 		if (!sp)
 			return -1;
-		memcpy(sp, f->g[i], (2 * B < f->cap ? 2 * B : f->cap) * sizeof *sp);
+		size_t ng = 2 * B < f->cap ? 2 * B : f->cap;
+		memcpy(sp, f->g[i], ng * sizeof *sp);
+		memset(sp + ng, 0, (2 * B + 2 - ng) * sizeof *sp);
 		if (packed(B))
-			pack_forward(sp, B, f->fft->cw[k], l->cws, f->fft->tw[k]);
-		else if (gsl_fft_real_transform(sp, 1, 2 * B, f->fft->fw[k], l->ws))
+			pack_forward(sp, B, f->fft->cw[k], &l->cws, f->fft->tw[k]);
+		else if (gsl_fft_real_transform(sp, 1, 2 * B, f->fft->fw[k], &l->ws))
 			return -1;
 	}
 	return 0;
@@ -327,17 +433,18 @@ static struct anvil_fastconv *alloc_kernels(const double *const *g, int nk, size
 		/* never zeroed: x_m is read only once pushed (m < n); malloc's
 		 * pages a march never reaches are never touched (calloc's can be
 		 * memset whole: glibc serves a freed large block from the heap) */
-		f->x[i] = malloc(cap * sizeof *f->x[i]);
-		f->buf[i] = malloc((2 * ((size_t)1 << f->nlev) + 2) * sizeof *f->buf[i]);
+		f->x[i] = anvil_fastconv_block(cap * sizeof *f->x[i]);
+		f->buf[i] = anvil_fastconv_block(buf_bytes(f->nlev));
 		if (fill)
 			f->g[i] = g[i];
-		else if ((f->g[i] = f->own_g[i] = malloc(cap * sizeof *f->own_g[i])))
+		else if ((f->g[i] = f->own_g[i] = anvil_fastconv_block(cap * sizeof *f->own_g[i])))
 			memcpy(f->own_g[i], g[i], cap * sizeof *g[i]);
 		bad = !f->g[i] || !f->x[i] || !f->buf[i];
 	}
-	f->acc = malloc(cap * sizeof *f->acc); /* zeroed as the squares reach it (hi) */
+	f->acc = anvil_fastconv_block(cap * sizeof *f->acc); /* zeroed as the squares reach it (hi) */
+	f->scr = anvil_fastconv_block(buf_bytes(f->nlev));
 	f->lev = calloc((size_t)f->nlev + 1, sizeof *f->lev);
-	if (bad || !f->acc || !f->lev) {
+	if (bad || !f->acc || !f->scr || !f->lev) {
 		anvil_fastconv_free(f);
 		return NULL;
 	}
@@ -452,7 +559,7 @@ static void square_packed(struct anvil_fastconv *f, size_t L, size_t B, int k);
 
 static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 {
-	const struct level *l = &f->lev[k];
+	struct level *l = &f->lev[k];
 	size_t N = 2 * B, end = L + B < f->cap ? L + B : f->cap;
 	if (packed(B)) {
 		square_packed(f, L, B, k);
@@ -461,7 +568,7 @@ static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 	for (int i = 0; i < f->nk; i++) {
 		memcpy(f->buf[i], f->x[i] + (L - B), B * sizeof *f->buf[i]);
 		memset(f->buf[i] + B, 0, B * sizeof *f->buf[i]);
-		gsl_fft_real_transform(f->buf[i], 1, N, f->fft->fw[k], l->ws);
+		gsl_fft_real_transform(f->buf[i], 1, N, f->fft->fw[k], &l->ws);
 	}
 	/* mixed-radix halfcomplex product: b[0], b[N-1] real (frequencies 0
 	 * and N/2); (b[2j-1], b[2j]) = (re, im) of frequency j, 0 < j < N/2 */
@@ -487,7 +594,7 @@ static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
 			b[j + 1] = im;
 		}
 	}
-	gsl_fft_halfcomplex_inverse(b, 1, N, f->fft->bw[k], l->ws);
+	gsl_fft_halfcomplex_inverse(b, 1, N, f->fft->bw[k], &l->ws);
 	for (size_t t = L; t < end; t++)
 		f->acc[t] += b[B + (t - L)];
 }
@@ -496,14 +603,14 @@ static void square_fft(struct anvil_fastconv *f, size_t L, size_t B, int k)
  * numbers (pack_forward), the pair's products added there. */
 static void square_packed(struct anvil_fastconv *f, size_t L, size_t B, int k)
 {
-	const struct level *l = &f->lev[k];
+	struct level *l = &f->lev[k];
 	const gsl_fft_complex_wavetable *cw = f->fft->cw[k];
 	const double *tw = f->fft->tw[k];
 	size_t end = L + B < f->cap ? L + B : f->cap;
 	for (int i = 0; i < f->nk; i++) {
 		memcpy(f->buf[i], f->x[i] + (L - B), B * sizeof *f->buf[i]);
 		memset(f->buf[i] + B, 0, (B + 2) * sizeof *f->buf[i]);
-		pack_forward(f->buf[i], B, cw, l->cws, tw);
+		pack_forward(f->buf[i], B, cw, &l->cws, tw);
 	}
 	double *b = f->buf[0];
 	const double *G = l->spec[0];
@@ -523,7 +630,7 @@ static void square_packed(struct anvil_fastconv *f, size_t L, size_t B, int k)
 			b[j + 1] = im;
 		}
 	}
-	pack_inverse(b, B, cw, l->cws, tw);
+	pack_inverse(b, B, cw, &l->cws, tw);
 	for (size_t t = L; t < end; t++)
 		f->acc[t] += b[B + (t - L)];
 }

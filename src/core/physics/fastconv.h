@@ -98,4 +98,12 @@ int anvil_fastconv_at(const struct anvil_fastconv *f, size_t t, double *c);
 /* The number of values pushed. */
 size_t anvil_fastconv_count(const struct anvil_fastconv *f);
 
+/* A block of at least bytes from the thread's pool (fastconv.c, pool):
+ * its contents undefined (what the last user left), NULL when out of
+ * memory.  Give it back with anvil_fastconv_block_free and the same
+ * bytes; the next request of the thread that fits gets it again, its
+ * pages already mapped.  Small and huge blocks are malloc's. */
+void *anvil_fastconv_block(size_t bytes);
+void anvil_fastconv_block_free(void *b, size_t bytes); /* NULL is a no-op */
+
 #endif
