@@ -437,6 +437,15 @@ static double halfspace_cost(const struct est *e, const struct anvil_wave_job *j
  * (anvil_plan_phys_seconds, plan_work.c) and three runs' worth of impact
  * steps (measured against warm runs, impacts alone). */
 #define PHYS_RUNS 3.0
+/* The whole physical price times PHYS_SPEED: stop 31's kernel, cache and
+ * march speed-ups (one exponential fewer a kernel evaluation, the spline's
+ * coefficients read from the cache, the Newton root's stop, the
+ * convolution's blocks kept) made every row faster alike: the grid's CPU
+ * 44.1 -> 35.7 s (0.81), the median price/CPU of each h/r0 group rose from
+ * 1.05-1.32 to 1.25-1.61.  With 0.82 the rows >= 0.1 s within 2x: 134 ->
+ * 144 of 144 (0.78: 142; 0.86: 144, its top 1.98), >= 0.02 s 279 -> 299 of
+ * 300. */
+#define PHYS_SPEED 0.82
 static double physical_cost(const struct est *e, const struct anvil_wave_job *job,
 			    const struct anvil_cache *cache, double patch,
 			    enum anvil_cache_where *where)
@@ -444,7 +453,8 @@ static double physical_cost(const struct est *e, const struct anvil_wave_job *jo
 	struct anvil_wave_job j = *job;
 	j.patch = patch;
 	double corr = anvil_plan_phys_seconds(&j, e->p.nu, e->pb->accuracy, cache, where);
-	return COST_HALFSPACE + corr + PHYS_RUNS * anvil_plan_impact_cost(e->window_lay, j.dt, 2, j.nsteps);
+	return PHYS_SPEED * (COST_HALFSPACE + corr +
+			     PHYS_RUNS * anvil_plan_impact_cost(e->window_lay, j.dt, 2, j.nsteps));
 }
 
 /* The physical row's band: the Hertz pulse's, as the paper's contact has
