@@ -4,9 +4,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
 
+#include "maxscan.h"
 #include "plate_bending.h"
 #include "verdict_near.h"
 
@@ -157,20 +156,10 @@ static void near_refine(struct near_time *c, const double *ts, const double *sv,
 	    !(ts[j - 1] < ts[j] && ts[j] < ts[j + 1]))
 		return;
 	gsl_function F = { minus_near, c };
-	gsl_min_fminimizer *m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
-	if (!m)
-		return;
-	int gs = gsl_min_fminimizer_set_with_values(m, &F, ts[j], -sv[j], ts[j - 1], -sv[j - 1],
-						    ts[j + 1], -sv[j + 1]);
-	for (int it = 0; !gs && it < 60; it++) {
-		gs = gsl_min_fminimizer_iterate(m);
-		double lo = gsl_min_fminimizer_x_lower(m), hi = gsl_min_fminimizer_x_upper(m);
-		if (gs || gsl_min_test_interval(lo, hi, 0, 1e-4) == GSL_SUCCESS)
-			break;
-	}
-	if (!gs && !c->status && -gsl_min_fminimizer_f_minimum(m) > sv[j])
-		*t = gsl_min_fminimizer_x_minimum(m);
-	gsl_min_fminimizer_free(m);
+	double tm = *t, sm = sv[j];
+	anvil_max_refine(&F, ts + j - 1, sv + j - 1, &tm, &sm); /* out of memory: the scan's */
+	if (!c->status)
+		*t = tm;
 }
 
 int verdict_near_face(const struct anvil_problem *pb, const struct anvil_history *h,

@@ -8,10 +8,10 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_interp.h>
-#include <gsl/gsl_min.h>
 #include <gsl/gsl_multimin.h>
 
 #include "hertz_field.h"
+#include "maxscan.h"
 #include "plate_bending.h"
 
 #define QAG_LIMIT 1000
@@ -242,22 +242,8 @@ static int refine(struct peak_ctx *x, const double *ts, const double *sv, int j,
 	if (j == 0 || j == NSCAN - 1)
 		return ANVIL_OK; /* at an end of the range: no bracket */
 	gsl_function F = { minus_sigma, x };
-	gsl_min_fminimizer *m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
-	if (!m)
+	if (anvil_max_refine(&F, ts + j - 1, sv + j - 1, t, s))
 		return ANVIL_ENOMEM;
-	int gs = gsl_min_fminimizer_set_with_values(m, &F, ts[j], -sv[j], ts[j - 1], -sv[j - 1],
-						    ts[j + 1], -sv[j + 1]);
-	for (int it = 0; !gs && it < 60; it++) {
-		gs = gsl_min_fminimizer_iterate(m);
-		double a = gsl_min_fminimizer_x_lower(m), bb = gsl_min_fminimizer_x_upper(m);
-		if (gs || gsl_min_test_interval(a, bb, 0, 1e-4) == GSL_SUCCESS)
-			break;
-	}
-	if (!gs && -gsl_min_fminimizer_f_minimum(m) > *s) {
-		*t = gsl_min_fminimizer_x_minimum(m);
-		*s = -gsl_min_fminimizer_f_minimum(m);
-	}
-	gsl_min_fminimizer_free(m);
 	return x->status;
 }
 
