@@ -12,7 +12,7 @@
 #define VM_ZGUESS 0.5
 #define VM_ZHI 3.0
 
-static double von_mises(const struct anvil_hertz_stress *s)
+double anvil_hertz_von_mises(const struct anvil_hertz_stress *s)
 {
 	double a = s->rr - s->tt, b = s->tt - s->zz, c = s->zz - s->rr;
 	return sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * s->rz * s->rz);
@@ -82,7 +82,7 @@ int anvil_hertz_stress(double a, double p0, double nu, double r, double z,
 	else
 		interior(nu, x, y, s);
 	s->rr *= p0, s->tt *= p0, s->zz *= p0, s->rz *= p0;
-	s->vm = von_mises(s);
+	s->vm = anvil_hertz_von_mises(s);
 	return ANVIL_OK;
 }
 

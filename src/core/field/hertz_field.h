@@ -37,6 +37,11 @@ struct anvil_hertz_stress {
 int anvil_hertz_stress(double a, double p0, double nu, double r, double z,
 		       struct anvil_hertz_stress *s);
 
+/* s's von Mises stress from its components (rr, tt, zz, rz): what
+ * anvil_hertz_stress puts in s->vm, for a state other stresses were added
+ * to (plate_bending.c: the plate's bending on the near face). */
+double anvil_hertz_von_mises(const struct anvil_hertz_stress *s);
+
 /* The largest von Mises stress, which for nu in [0, 0.5) lies on the axis
  * below the surface: its value *vm (Pa) and depth *z (m), by GSL's Brent
  * minimiser to relative tolerance 1e-12 in z.  ANVIL_EINVAL for bad

@@ -456,8 +456,7 @@ static double near_at(const struct near_ctx *c, double x, double y)
 	s.tt += bt;
 	if (c->brittle)
 		return principal(s.rr, s.tt, s.zz, s.rz);
-	double p = s.rr - s.tt, q = s.tt - s.zz, w = s.zz - s.rr;
-	return sqrt(0.5 * (p * p + q * q + w * w) + 3 * s.rz * s.rz);
+	return anvil_hertz_von_mises(&s);
 }
 
 static double minus_near(const gsl_vector *v, void *vp)
