@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "scene.h"
+#include "suggest.h"
 
 /* Sections, in the order anvil_scene_write prints them. */
 enum anvil_section {
@@ -89,15 +90,5 @@ int anvil_scene_custom_check(const struct anvil_material *m, struct anvil_err *e
  * unknown or incomplete material (with a suggestion). */
 int anvil_scene_resolve(struct anvil_scene *sc, struct anvil_body *b,
 			struct anvil_err *err);
-
-/* The closest candidate to word: edit distance <= 2, or word a prefix of
- * it.  Feed candidates with _try; best is "" when none fits. */
-struct anvil_suggest {
-	const char *word;
-	char best[96];
-	int dist;
-};
-void anvil_suggest_init(struct anvil_suggest *s, const char *word);
-void anvil_suggest_try(struct anvil_suggest *s, const char *candidate);
 
 #endif
