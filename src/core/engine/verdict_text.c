@@ -90,9 +90,19 @@ static const char *layer_what(const struct anvil_verdict *v)
  * own): after "quasi-static Hertz". */
 static void qs_force(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	if (v->qs_ratio > 0)
+	if (v->qs_why == ANVIL_VERDICT_QS_LONG)
 		snprintf(buf, n, " at the layer's computed P_max: the contact lasts %.2g times 2h/c1",
 			 v->qs_ratio);
+	else if (v->qs_why == ANVIL_VERDICT_QS_GENTLE)
+		snprintf(buf, n, " at the layer's computed P_max: the waves would carry off %.2g %% of "
+			 "the impact energy", 100 * v->qs_radiated);
+	else if (v->qs_why == ANVIL_VERDICT_QS_BLOCK && v->qs_bending > 0)
+		snprintf(buf, n, " at the layer's computed P_max: the plate's bending changes the impact "
+			 "by %.2g %%, the waves would carry off %.2g %% of its energy",
+			 100 * v->qs_bending, 100 * v->qs_radiated);
+	else if (v->qs_why == ANVIL_VERDICT_QS_BLOCK)
+		snprintf(buf, n, " at the half-space's computed P_max: it does not bend, the waves "
+			 "would carry off %.2g %% of the impact energy", 100 * v->qs_radiated);
 	else
 		snprintf(buf, n, "%s", v->at_row ? " at the layer's computed P_max" : "");
 }
@@ -113,7 +123,7 @@ static void alone_text(const struct anvil_verdict *v, const char *f, char *buf, 
 
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	char s[32], l[32], where[96], f[96], al[160], qs[320] = "";
+	char s[32], l[32], where[96], f[192], al[256], qs[320 + 64] = "";
 	int ns = near_shown(v);
 	stress_text(ns ? v->near : v->stress, s, sizeof s);
 	stress_text(v->limit, l, sizeof l);
@@ -135,7 +145,7 @@ void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 
 void anvil_verdict_text_screen(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	char s[32], l[32], where[96], f[96] = "", al[160] = "";
+	char s[32], l[32], where[96], f[192] = "", al[256] = "";
 	int ns = near_shown(v);
 	double t = ns ? v->near_t : v->t;
 	const char *field = v->dynamic ? "the dynamic field"

@@ -6,6 +6,7 @@
 
 #include "field.h"
 #include "solver.h"
+#include "solver_impl.h"
 #include "verdict.h"
 
 /* The field of plan pl's layer (or half-space) row, the true contact on
@@ -39,6 +40,8 @@ static struct anvil_field *row_field(struct anvil_solver *s, const struct anvil_
 		return NULL;
 	}
 	anvil_field_set_contact(f, true_contact);
+	/* the search can take seconds: the solver's progress shows it */
+	anvil_field_set_progress(f, s->progress, s->progress_ctx);
 	return f;
 }
 
@@ -62,37 +65,64 @@ int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
 	return st;
 }
 
-/* A long contact's verdict (verdict.h, ANVIL_VERDICT_QS_RATIO): quasi-static
- * Hertz at the layer row's own P_max (the row as the plan runs it, its
- * responses from the solver's cache), and the plate's bending stress
- * under its history (ANVIL_VERDICT_NHIST samples: the given row's when it
- * has them, else the row run again with them, so the numbers do not
- * depend on what the caller kept). */
-static int long_contact_verdict(struct anvil_solver *s, const struct anvil_plan *pl, double ratio,
-				const struct anvil_result *given, struct anvil_verdict *v,
-				struct anvil_err *err)
+enum anvil_verdict_qs anvil_verdict_quasi_static(const struct anvil_plan *pl)
+{
+	double tr = pl->fig[ANVIL_FIG_T_REFLECT];
+	if (isfinite(pl->pb.p.h) && pl->row[ANVIL_MODEL_LAYER].job.ts > ANVIL_VERDICT_QS_RATIO * tr)
+		return ANVIL_VERDICT_QS_LONG;
+	double rad = pl->fig[ANVIL_FIG_RADIATED], bend = pl->fig[ANVIL_FIG_BENDING];
+	if (rad < ANVIL_VERDICT_QS_RADIATED)
+		return ANVIL_VERDICT_QS_GENTLE;
+	if (rad < ANVIL_VERDICT_QS_RADIATED_BLOCK && (!isfinite(pl->pb.p.h) || bend < ANVIL_VERDICT_QS_BENDING))
+		return ANVIL_VERDICT_QS_BLOCK;
+	return ANVIL_VERDICT_QS_NO;
+}
+
+void anvil_verdict_qs_mark(const struct anvil_plan *pl, enum anvil_verdict_qs why,
+			   const struct anvil_result *row, struct anvil_verdict *v)
+{
+	double tr = pl->fig[ANVIL_FIG_T_REFLECT];
+	v->qs_why = why;
+	v->qs_radiated = pl->fig[ANVIL_FIG_RADIATED];
+	v->qs_bending = isfinite(pl->pb.p.h) ? pl->fig[ANVIL_FIG_BENDING] : 0;
+	if (why == ANVIL_VERDICT_QS_LONG)
+		/* the row's own contact time, once it is known, not the plan's
+		 * estimate (3e9 for 5.5e8 where a 1 kg mass comes to rest on
+		 * h = 0.02 r0) */
+		v->qs_ratio = row->ts.val > 0 && tr > 0 ? row->ts.val / tr
+						       : pl->row[ANVIL_MODEL_LAYER].job.ts / tr;
+}
+
+/* A quasi-static verdict (anvil_verdict_quasi_static): Hertz at the row's
+ * own P_max (the row as the plan runs it, its responses from the solver's
+ * cache), and on a finite layer the plate's bending stress under its
+ * history (ANVIL_VERDICT_NHIST samples: the given row's when it has
+ * them, else the row run again with them, so the numbers do not depend on
+ * what the caller kept). */
+static int quasi_static_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
+				enum anvil_verdict_qs why, const struct anvil_result *given,
+				struct anvil_verdict *v, struct anvil_err *err)
 {
 	struct anvil_result r;
+	int finite = isfinite(pl->pb.p.h);
+	enum anvil_model m = finite ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+	if (given && given->model != m)
+		given = NULL;
 	const struct anvil_result *row = given;
 	int own = !given || given->hist.n != ANVIL_VERDICT_NHIST;
 	if (given && given->status < 0)
 		return anvil_err_set(err, given->status, "%s",
 				     given->why[0] ? given->why : anvil_strerror(given->status));
-	int st = own ? anvil_solver_run(s, pl, ANVIL_MODEL_LAYER, ANVIL_VERDICT_NHIST, &r, err)
-		     : given->status;
+	int st = own ? anvil_solver_run(s, pl, m, ANVIL_VERDICT_NHIST, &r, err) : given->status;
 	if (own)
 		row = &r;
 	if (st >= 0) {
 		int vs = anvil_verdict_at(&pl->pb, row->Pmax.val, row->tmax.val, v);
-		/* the row's own contact time, once it is known, not the plan's
-		 * estimate (3e9 for 5.5e8 where a 1 kg mass comes to rest on
-		 * h = 0.02 r0) */
-		double tr = pl->fig[ANVIL_FIG_T_REFLECT];
-		v->qs_ratio = row->ts.val > 0 && tr > 0 ? row->ts.val / tr : ratio;
+		anvil_verdict_qs_mark(pl, why, row, v);
 		if (vs)
-			st = anvil_err_set(err, vs, "the layer row's P_max (%g N) gives no Hertz contact",
-					   row->Pmax.val);
-		else
+			st = anvil_err_set(err, vs, "the %s row's P_max (%g N) gives no Hertz contact",
+					   anvil_model_name(m), row->Pmax.val);
+		else if (finite)
 			anvil_verdict_bending(&pl->pb, &row->hist, v);
 	}
 	if (own)
@@ -112,9 +142,9 @@ int anvil_solver_verdict_with(struct anvil_solver *s, const struct anvil_plan *p
 {
 	int st;
 	struct anvil_err e2 = {0};
-	double ratio = pl->row[ANVIL_MODEL_LAYER].job.ts / pl->fig[ANVIL_FIG_T_REFLECT];
-	if (isfinite(pl->pb.p.h) && ratio > ANVIL_VERDICT_QS_RATIO)
-		return long_contact_verdict(s, pl, ratio, layer, v, err);
+	enum anvil_verdict_qs why = anvil_verdict_quasi_static(pl);
+	if (why != ANVIL_VERDICT_QS_NO)
+		return quasi_static_verdict(s, pl, why, layer, v, err);
 	struct anvil_field *f = row_field(s, pl, 1, &st, err);
 	if (!f)
 		return st;

@@ -147,15 +147,32 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 		fprintf(f, "      fallback: the layer, if the computed contact outlasts 2h/c1\n");
 }
 
+/* What `anvil run`'s verdict will do (verdict.h's rules): a searched
+ * field costs seconds where a quasi-static one costs nothing. */
+static const char *const run_verdict_words[] = {
+	[ANVIL_VERDICT_QS_NO] = "searches the transform field around the contact (a plate whose "
+				"bending matters, or a fast impact: it can take seconds)",
+	[ANVIL_VERDICT_QS_LONG] = "quasi-static Hertz at the row's computed P_max (the contact "
+				  "lasts over 2000 times 2h/c1)",
+	[ANVIL_VERDICT_QS_GENTLE] = "quasi-static Hertz at the row's computed P_max (the waves "
+				    "carry off under 0.1 % of the energy)",
+	[ANVIL_VERDICT_QS_BLOCK] = "quasi-static Hertz at the row's computed P_max (the layer "
+				   "bends too little to matter, the waves carry off under 15 %)",
+};
+
 /* The one verdict (verdict.h): the layer, then the impactor under the
- * same contact, each on its own line. */
-static void print_verdict(FILE *f, const struct anvil_verdict *v)
+ * same contact, each on its own line; then how the run will judge. */
+static void print_verdict(FILE *f, const struct anvil_plan *pl)
 {
 	char line[ANVIL_VERDICT_TEXT_MAX];
+	const struct anvil_verdict *v = &pl->verdict;
 	anvil_verdict_text(v, line, sizeof line);
 	fprintf(f, "\nverdict\n  %s\n", line);
 	anvil_verdict_impactor_text(v, line, sizeof line);
 	fprintf(f, "  %s\n", line);
+	unsigned waves = (1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE);
+	if (pl->pb.run & waves) /* else the run's verdict is this one (cmd_run.c) */
+		fprintf(f, "  anvil run: %s\n", run_verdict_words[anvil_verdict_quasi_static(pl)]);
 }
 
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
@@ -184,7 +201,7 @@ void anvil_plan_print(FILE *f, const struct anvil_plan *pl)
 		fprintf(f, "  %s\n", anvil_plan_warn_text(w->kind));
 		fig_list(f, pl, w->fig, w->nfig);
 	}
-	print_verdict(f, &pl->verdict);
+	print_verdict(f, pl);
 }
 
 void anvil_plan_warnings_line(FILE *f, const struct anvil_plan *pl, const char *prefix)

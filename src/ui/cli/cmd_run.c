@@ -164,6 +164,12 @@ static void run_failed_row(struct anvil_result *r)
 		 cli_model_reason(r->model, r->why[0] ? r->why : "failed"));
 }
 
+/* The row the verdict reads: the layer's, the half-space's when h = inf. */
+static enum anvil_model run_verdict_model(const struct anvil_plan *pl)
+{
+	return isfinite(pl->pb.p.h) ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+}
+
 static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		      const struct anvil_scene *sc, const struct run_opts *o,
 		      struct anvil_result *res, int *n, int *tol, int *failed)
@@ -182,13 +188,10 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 			continue;
 		memset(&prog.shown, 0, sizeof prog.shown);
 		/* no row's values depend on its history (the error runs keep
-		 * their passes' nodes, impact.h hist_nodes): the physical layer
-		 * row carries the verdict's, which then needs no second run
-		 * (yield.c long_contact_verdict) */
-		size_t nh = !paper && !o->quiet && m == ANVIL_MODEL_LAYER &&
-				    pl->row[m].contact == ANVIL_CONTACT_PHYSICAL
-			    ? RUN_NHIST
-			    : nhist;
+		 * their passes' nodes, impact.h hist_nodes): the row the verdict
+		 * reads carries its samples, and a quasi-static verdict then
+		 * needs no second run (yield.c quasi_static_verdict) */
+		size_t nh = !paper && !o->quiet && m == (int)run_verdict_model(pl) ? RUN_NHIST : nhist;
 		int st = anvil_solver_run_contact(s, pl, (enum anvil_model)m,
 						  paper ? ANVIL_CONTACT_PAPER : ANVIL_CONTACT_AUTO,
 						  nh, &res[*n], &err);
@@ -299,17 +302,24 @@ static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 	struct anvil_verdict v;
 	struct anvil_err err = {0};
 	char line[ANVIL_VERDICT_TEXT_MAX];
+	struct run_progress prog = {.quiet = o->quiet};
 	if (o->quiet)
 		return;
-	/* the layer row as the plan runs it, already computed (a long
-	 * contact's verdict is at its P_max: no second run) */
+	/* the layer (half-space) row as the plan runs it, already computed
+	 * (a quasi-static verdict is at its P_max: no second run) */
 	const struct anvil_result *layer = NULL;
+	enum anvil_model vm = run_verdict_model(pl);
 	for (int i = 0; i < n && !layer; i++)
-		if (res[i].model == ANVIL_MODEL_LAYER && res[i].contact == pl->row[ANVIL_MODEL_LAYER].contact)
+		if (res[i].model == vm && res[i].contact == pl->row[vm].contact)
 			layer = &res[i];
 	unsigned waves = (1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE);
+	/* a searched field takes seconds on a plate at speed: shown as the
+	 * rows' work is (prog dies with this frame: unset after) */
+	anvil_solver_set_progress(s, run_progress_cb, &prog);
 	int st = pl->pb.run & waves ? anvil_solver_verdict_with(s, pl, layer, &v, &err)
 				    : anvil_verdict_make(&pl->pb, NULL, &v, &err);
+	cli_progress_done(&prog.shown);
+	anvil_solver_set_progress(s, NULL, NULL);
 	if (st < 0) {
 		cli_error("warning: no verdict on the layer: %s",
 			  err.msg[0] ? err.msg : anvil_strerror(st));

@@ -265,9 +265,10 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
  * current generation are both in: quasi-static Hertz at the row's own
  * computed peak force (on a thin plate a fraction of the rigid anvil's
  * the plan judges), and on a finite layer the plate's bending stress
- * under the row's history, as `anvil run` judges a long contact
- * (yield.c): the fate takes the larger stress.  A short contact's `anvil
- * run` searches the transform field instead (seconds: not for a knob). */
+ * under the row's history, as `anvil run` judges a quasi-static one
+ * (yield.c): the fate takes the larger stress.  Where neither of
+ * verdict.h's quasi-static rules holds (a fast impact), `anvil run`
+ * searches the transform field instead (seconds: not for a knob). */
 static void verdict_update(struct tui_model *m)
 {
 	const struct anvil_problem *pb = &m->plan.pb;
@@ -279,13 +280,10 @@ static void verdict_update(struct tui_model *m)
 	struct anvil_verdict v;
 	if (anvil_verdict_at(pb, r->res.Pmax.val, r->res.tmax.val, &v) != ANVIL_OK)
 		return; /* the plan's verdict stays */
-	if (finite) {
-		double tr = m->plan.fig[ANVIL_FIG_T_REFLECT];
-		double ratio = m->plan.row[ANVIL_MODEL_LAYER].job.ts / tr;
-		if (ratio > ANVIL_VERDICT_QS_RATIO) /* as anvil run: the plan decides, the row's t_s says */
-			v.qs_ratio = r->res.ts.val > 0 ? r->res.ts.val / tr : ratio;
+	/* as anvil run: the plan decides, the row's t_s says */
+	anvil_verdict_qs_mark(&m->plan, anvil_verdict_quasi_static(&m->plan), &r->res, &v);
+	if (finite)
 		anvil_verdict_bending(pb, &r->res.hist, &v);
-	}
 	m->verdict = v;
 	m->verdict_gen = m->gen;
 	m->have_verdict = 1;
