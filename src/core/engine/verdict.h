@@ -128,10 +128,10 @@ int anvil_solver_verdict_with(struct anvil_solver *s, const struct anvil_plan *p
 /* Where the searched field and quasi-static Hertz at the row's own P_max
  * (plus, on a finite layer, the plate's bending under the row's history:
  * anvil_verdict_bending) agree, anvil_solver_verdict takes the second
- * (v->qs_ratio or v->qs_radiated set): the field's search costs seconds
- * to a minute where the load is long against the field's time scales (62 s
- * for 100 kg at 1 mm/s on h = 5 r0, 45 s on the half-space; it grows with
- * the load's length), the quasi-static verdict microseconds.  Two rules:
+ * (v->qs_why says which rule): the field's search costs seconds to a
+ * minute where the load is long against the field's time scales (62 s for
+ * 100 kg at 1 mm/s on h = 5 r0, 45 s on the half-space; it grows with the
+ * load's length), the quasi-static verdict microseconds.  Three rules:
  *  - LONG: a finite layer's contact longer than ANVIL_VERDICT_QS_RATIO
  *    times 2h/c1 (the plan's estimate) is quasi-static near the contact
  *    (the paper's own case is 35 times 2h/c1, a copper rod on 0.35 r0
