@@ -123,7 +123,7 @@ static void alone_text(const struct anvil_verdict *v, const char *f, char *buf, 
 
 void anvil_verdict_text(const struct anvil_verdict *v, char *buf, size_t n)
 {
-	char s[32], l[32], where[96], f[192], al[256], qs[320 + 64] = "";
+	char s[32], l[32], where[96], f[192], al[256], qs[384] = "";
 	int ns = near_shown(v);
 	stress_text(ns ? v->near : v->stress, s, sizeof s);
 	stress_text(v->limit, l, sizeof l);

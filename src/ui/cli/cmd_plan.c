@@ -149,16 +149,27 @@ static void print_row(FILE *f, enum anvil_model m, const struct anvil_plan_row *
 
 /* What `anvil run`'s verdict will do (verdict.h's rules): a searched
  * field costs seconds where a quasi-static one costs nothing. */
-static const char *const run_verdict_words[] = {
-	[ANVIL_VERDICT_QS_NO] = "searches the transform field around the contact (a plate whose "
-				"bending matters, or a fast impact: it can take seconds)",
-	[ANVIL_VERDICT_QS_LONG] = "quasi-static Hertz at the row's computed P_max (the contact "
-				  "lasts over 2000 times 2h/c1)",
-	[ANVIL_VERDICT_QS_GENTLE] = "quasi-static Hertz at the row's computed P_max (the waves "
-				    "carry off under 0.1 % of the energy)",
-	[ANVIL_VERDICT_QS_BLOCK] = "quasi-static Hertz at the row's computed P_max (the layer "
-				   "bends too little to matter, the waves carry off under 15 %)",
-};
+static void run_verdict_line(FILE *f, const struct anvil_plan *pl)
+{
+	static const char qs[] = "quasi-static Hertz at the row's computed P_max";
+	switch (anvil_verdict_quasi_static(pl)) {
+	case ANVIL_VERDICT_QS_LONG:
+		fprintf(f, "  anvil run: %s (the contact lasts over %g times 2h/c1)\n", qs,
+			ANVIL_VERDICT_QS_RATIO);
+		break;
+	case ANVIL_VERDICT_QS_GENTLE:
+		fprintf(f, "  anvil run: %s (the waves carry off under %g %% of the energy)\n", qs,
+			100 * ANVIL_VERDICT_QS_RADIATED);
+		break;
+	case ANVIL_VERDICT_QS_BLOCK:
+		fprintf(f, "  anvil run: %s (the layer bends too little to matter, the waves carry "
+			"off under %g %%)\n", qs, 100 * ANVIL_VERDICT_QS_RADIATED_BLOCK);
+		break;
+	default:
+		fputs("  anvil run: searches the transform field around the contact (a plate whose "
+		      "bending matters, or a fast impact: it can take seconds)\n", f);
+	}
+}
 
 /* The one verdict (verdict.h): the layer, then the impactor under the
  * same contact, each on its own line; then how the run will judge. */
@@ -172,7 +183,7 @@ static void print_verdict(FILE *f, const struct anvil_plan *pl)
 	fprintf(f, "  %s\n", line);
 	unsigned waves = (1u << ANVIL_MODEL_LAYER) | (1u << ANVIL_MODEL_HALFSPACE);
 	if (pl->pb.run & waves) /* else the run's verdict is this one (cmd_run.c) */
-		fprintf(f, "  anvil run: %s\n", run_verdict_words[anvil_verdict_quasi_static(pl)]);
+		run_verdict_line(f, pl);
 }
 
 void anvil_plan_print(FILE *f, const struct anvil_plan *pl)

@@ -266,9 +266,10 @@ int tui_model_verdict(const struct tui_model *m, char *layer, char *imp, size_t 
  * computed peak force (on a thin plate a fraction of the rigid anvil's
  * the plan judges), and on a finite layer the plate's bending stress
  * under the row's history, as `anvil run` judges a quasi-static one
- * (yield.c): the fate takes the larger stress.  Where neither of
- * verdict.h's quasi-static rules holds (a fast impact), `anvil run`
- * searches the transform field instead (seconds: not for a knob). */
+ * (yield.c): the fate takes the larger stress.  Where none of verdict.h's
+ * quasi-static rules holds (a plate whose bending matters, a fast impact),
+ * `anvil run` searches the transform field instead (seconds: not for a
+ * knob). */
 static void verdict_update(struct tui_model *m)
 {
 	const struct anvil_problem *pb = &m->plan.pb;
