@@ -1,7 +1,8 @@
 /* scene_keys.h: internal to scene.c and scene_keys.c, not part of the API.
  *
  * The table of scene keys (section, key, how to parse, check and print it),
- * the resolution of a body's material, and "did you mean" suggestions.
+ * the resolution of a body's material (scene_materials.c), and "did you
+ * mean" suggestions (suggest.h).
  * Messages written here carry no location: the callers prefix
  * "FILE:LINE: SECTION.KEY: ". */
 #ifndef ANVIL_SCENE_KEYS_H
@@ -79,6 +80,12 @@ int anvil_utf8_valid(const char *s, size_t n);
 void anvil_scene_keys_write(const struct anvil_scene *sc, int sec, int custom,
 			    FILE *out);
 
+/* scene_materials.c.  value as a body's material: *name its canonical
+ * spelling (a built-in or defined material's, or value itself when
+ * deferred and not yet defined); ANVIL_EPARSE for a bad name or, not
+ * deferred, an unknown one (with a suggestion). */
+int anvil_scene_material_name(const struct anvil_scene *sc, const char *value, int deferred,
+			      const char **name, struct anvil_err *err);
 /* Define (or find) the custom material NAME; ANVIL_EPARSE for a bad or
  * built-in name or too many materials. */
 int anvil_scene_custom_define(struct anvil_scene *sc, const char *name,
