@@ -27,7 +27,7 @@ static int field_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 			 struct anvil_verdict *d, struct anvil_err *e)
 {
 	struct anvil_result r;
-	enum anvil_model m = isfinite(pl->pb.p.h) ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+	enum anvil_model m = anvil_verdict_model(pl);
 	int st = anvil_solver_run_contact(s, pl, m, pl->row[m].contact, ANVIL_FIELD_NHIST, &r, e);
 	struct anvil_field *f = st >= 0 ? anvil_field_from_result(&pl->pb.p, pl->pb.accuracy, &r, e)
 					: NULL;

@@ -164,6 +164,8 @@ enum anvil_verdict_qs {
 	ANVIL_VERDICT_QS_BLOCK
 };
 enum anvil_verdict_qs anvil_verdict_quasi_static(const struct anvil_plan *pl);
+/* The row the verdict reads: the layer's, the half-space's when h = inf. */
+enum anvil_model anvil_verdict_model(const struct anvil_plan *pl);
 /* Mark v (from anvil_verdict_at at row's P_max) with why it is
  * quasi-static: qs_why, qs_ratio from row's own t_s (LONG), the plan's
  * figures (GENTLE, BLOCK). */

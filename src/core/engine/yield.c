@@ -15,7 +15,7 @@ static struct anvil_field *row_field(struct anvil_solver *s, const struct anvil_
 				     int true_contact, int *run_status, struct anvil_err *err)
 {
 	const struct anvil_problem *pb = &pl->pb;
-	enum anvil_model m = isinf(pb->p.h) ? ANVIL_MODEL_HALFSPACE : ANVIL_MODEL_LAYER;
+	enum anvil_model m = anvil_verdict_model(pl);
 	struct anvil_result r;
 	/* The paper's patch r0 loads the layer with the paper contact's P(t)
 	 * (plan.h: the plan always holds that row).  The true contact loads it
@@ -65,6 +65,11 @@ int anvil_solver_yield(struct anvil_solver *s, const struct anvil_plan *pl,
 	return st;
 }
 
+enum anvil_model anvil_verdict_model(const struct anvil_plan *pl)
+{
+	return isfinite(pl->pb.p.h) ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+}
+
 enum anvil_verdict_qs anvil_verdict_quasi_static(const struct anvil_plan *pl)
 {
 	double tr = pl->fig[ANVIL_FIG_T_REFLECT];
@@ -104,8 +109,7 @@ static int quasi_static_verdict(struct anvil_solver *s, const struct anvil_plan 
 				struct anvil_verdict *v, struct anvil_err *err)
 {
 	struct anvil_result r;
-	int finite = isfinite(pl->pb.p.h);
-	enum anvil_model m = finite ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
+	enum anvil_model m = anvil_verdict_model(pl);
 	if (given && given->model != m)
 		given = NULL;
 	const struct anvil_result *row = given;
@@ -122,7 +126,7 @@ static int quasi_static_verdict(struct anvil_solver *s, const struct anvil_plan 
 		if (vs)
 			st = anvil_err_set(err, vs, "the %s row's P_max (%g N) gives no Hertz contact",
 					   anvil_model_name(m), row->Pmax.val);
-		else if (finite)
+		else if (m == ANVIL_MODEL_LAYER)
 			anvil_verdict_bending(&pl->pb, &row->hist, v);
 	}
 	if (own)

@@ -164,12 +164,6 @@ static void run_failed_row(struct anvil_result *r)
 		 cli_model_reason(r->model, r->why[0] ? r->why : "failed"));
 }
 
-/* The row the verdict reads: the layer's, the half-space's when h = inf. */
-static enum anvil_model run_verdict_model(const struct anvil_plan *pl)
-{
-	return isfinite(pl->pb.p.h) ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE;
-}
-
 static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		      const struct anvil_scene *sc, const struct run_opts *o,
 		      struct anvil_result *res, int *n, int *tol, int *failed)
@@ -191,7 +185,7 @@ static int run_models(struct anvil_solver *s, const struct anvil_plan *pl,
 		 * their passes' nodes, impact.h hist_nodes): the row the verdict
 		 * reads carries its samples, and a quasi-static verdict then
 		 * needs no second run (yield.c quasi_static_verdict) */
-		size_t nh = !paper && !o->quiet && m == (int)run_verdict_model(pl) ? RUN_NHIST : nhist;
+		size_t nh = !paper && !o->quiet && m == (int)anvil_verdict_model(pl) ? RUN_NHIST : nhist;
 		int st = anvil_solver_run_contact(s, pl, (enum anvil_model)m,
 						  paper ? ANVIL_CONTACT_PAPER : ANVIL_CONTACT_AUTO,
 						  nh, &res[*n], &err);
@@ -308,7 +302,7 @@ static void run_verdict(struct anvil_solver *s, const struct anvil_plan *pl,
 	/* the layer (half-space) row as the plan runs it, already computed
 	 * (a quasi-static verdict is at its P_max: no second run) */
 	const struct anvil_result *layer = NULL;
-	enum anvil_model vm = run_verdict_model(pl);
+	enum anvil_model vm = anvil_verdict_model(pl);
 	for (int i = 0; i < n && !layer; i++)
 		if (res[i].model == vm && res[i].contact == pl->row[vm].contact)
 			layer = &res[i];

@@ -274,7 +274,7 @@ static void verdict_update(struct tui_model *m)
 {
 	const struct anvil_problem *pb = &m->plan.pb;
 	int finite = isfinite(pb->p.h);
-	const struct tui_row *r = &m->rows[finite ? ANVIL_MODEL_LAYER : ANVIL_MODEL_HALFSPACE];
+	const struct tui_row *r = &m->rows[anvil_verdict_model(&m->plan)];
 	if (!m->have_plan || m->plan_gen != m->gen || r->state != TUI_ROW_DONE || !r->have ||
 	    (m->have_verdict && m->verdict_gen == m->gen))
 		return;
